@@ -1,0 +1,29 @@
+#pragma once
+// ydscope-cli subcommands register themselves here, one file each (cmd_*.cpp), so adding a
+// command never touches main or another command.
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ydscope::cli {
+
+// Exit codes of every subcommand (DESIGN.md): 0 success, 1 device or I/O failure, 2 usage error.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+struct CliCommand {
+  std::string_view name;
+  std::string_view summary;  // one line for the command list
+  std::string_view help;     // full --help text of the subcommand
+  int (*run)(std::span<const std::string> args);  // args exclude the subcommand name
+};
+
+std::span<const CliCommand> registered_commands();
+
+struct RegisterCliCommand {
+  explicit RegisterCliCommand(const CliCommand& command);
+};
+
+}  // namespace ydscope::cli

@@ -1,0 +1,48 @@
+#pragma once
+// One full revolution of the lidar: from a zero packet (inclusive) to the next (exclusive).
+// Laps live preallocated in the LapQueue, so the point storage keeps its capacity between uses.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace ydscope {
+
+// G1 interference flag (S & 3): 2 specular reflection, 3 ambient light. Always 0 on G6/TG.
+enum class PointFlag : std::uint8_t { None = 0, Reserved = 1, Specular = 2, AmbientLight = 3 };
+
+struct LapPoint {
+  float angle_deg;  // corrected, in [0, 360)
+  float range_mm;   // 0 means no return
+  PointFlag flag;
+};
+
+// Verdict of G1's CRC8 over the lap's CT bytes, compared with the LastCRC byte that closes it.
+enum class CrcVerdict : std::uint8_t { NotApplicable, Ok, Mismatch };
+
+struct FirmwareVersion {
+  std::uint8_t major = 0;
+  std::uint8_t minor = 0;
+};
+
+struct Lap {
+  // Enough for the slowest scan at the fastest ranging rate (18 kHz at 1 Hz) with headroom.
+  static constexpr std::size_t kMaxPoints = 24000;
+
+  std::uint64_t index = 0;         // 0 for the first complete lap of a stream
+  std::vector<LapPoint> points;    // in received order
+  // G1 CT information; empty on other models or when the packet carrying it was not seen.
+  std::optional<double> scan_hz;
+  std::optional<std::uint8_t> health_bits;
+  std::optional<FirmwareVersion> version;
+  CrcVerdict crc = CrcVerdict::NotApplicable;
+  std::uint32_t packets = 0;          // valid scan packets in this lap
+  std::uint32_t checksum_errors = 0;  // packets of this lap dropped for a bad checksum
+  std::int64_t first_rx_ns = 0;       // steady-clock receive time of the lap's first byte
+  std::int64_t last_rx_ns = 0;        // receive time of the byte that closed the lap
+
+  Lap() { points.reserve(kMaxPoints); }
+  // CT information is trusted only when the CRC8 did not fail.
+  bool ct_info_trusted() const { return crc != CrcVerdict::Mismatch; }
+};
+
+}  // namespace ydscope

@@ -1,0 +1,49 @@
+#pragma once
+// What differs between the G1, G6 and TG-series lidars, in one table: codes, baud, distance
+// formula, flags, which commands exist, ranging tables and scan-frequency limits.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "core/protocol/commands.h"
+
+namespace ydscope {
+
+enum class Model : std::uint8_t { G1, G6, TG15, TG30, TG50 };
+
+struct ModelProfile {
+  Model model;
+  std::string_view name;        // "G1", "G6", "TG15", ...
+  std::uint8_t model_code;      // device-info model byte seen in the field
+  std::uint32_t default_baud;
+  // Range in mm = (S >> flag_bits) * distance_scale. The manuals: G1 S>>2 (flags in S&3),
+  // G6 S/4, TG S/2. Some vendor-SDK firmware differs, so sessions may override the scale.
+  unsigned flag_bits;
+  double distance_scale;
+  bool ct_carries_info;         // G1: CT[7:1] holds scan frequency, version, health by packet index
+  bool last_crc_before_zero;    // G1: one CRC8 byte precedes every zero packet
+  Command health_command;       // the manual's health command (the other one is the fallback)
+  Command restart_command;
+  std::span<const std::uint16_t> ranging_khz;  // reply byte -> kHz
+  std::uint16_t default_ranging_khz;
+  bool ranging_settable;        // A5 D0 cycles through the table
+  double min_scan_hz;
+  double max_scan_hz;
+  double default_scan_hz;
+  std::span<const Command> commands;  // every command the model's manual lists
+
+  bool supports(Command command) const;
+  // Index of kHz in the ranging table, if the model has that value.
+  std::optional<std::uint8_t> ranging_index(std::uint16_t khz) const;
+};
+
+std::span<const ModelProfile> all_profiles();
+const ModelProfile& profile_for(Model model);
+// Case-insensitive name lookup ("g1", "TG30").
+const ModelProfile* find_profile(std::string_view name);
+const ModelProfile* find_profile_by_code(std::uint8_t model_code);
+// "G1, G6, TG15, TG30, TG50" for messages and --help.
+std::string_view model_names();
+
+}  // namespace ydscope

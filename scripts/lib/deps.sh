@@ -1,0 +1,24 @@
+# Debian packages ydscope needs, installed only when missing. Sourced by scripts/test and scripts/run.
+ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev)
+ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri)
+ydscope_packages_run=(libgl1-mesa-dri)
+
+ydscope_install_deps() {  # ydscope_install_deps build test run ...
+  local wanted=() missing=() set
+  for set in "$@"; do
+    local -n list="ydscope_packages_$set"
+    wanted+=("${list[@]}")
+  done
+  local p
+  for p in "${wanted[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "== installing Debian packages: ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  if ! "${sudo[@]}" apt-get update -qq || ! DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null; then
+    echo "Could not install ${missing[*]} with apt-get; install them by hand and run this again." >&2
+    exit 1
+  fi
+}
