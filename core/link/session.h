@@ -1,0 +1,148 @@
+#pragma once
+// Session: everything between a lidar port and the lap queue, on ONE I/O thread it owns.
+//
+// The I/O thread runs a boost::asio::io_context: it reads into a fixed buffer, feeds the
+// ScanDecoder, pushes each complete lap into the LapQueue, calls the wake callback, keeps counters,
+// records every byte in both directions when asked, and runs commands as the manuals require
+// (stop, drain, command, reply with a timeout and a bounded retry, resume the scan). Faults
+// (unplugged port, stalled stream, wrong baud, silent device) become a LinkState and a sentence;
+// the session reconnects by itself with backoff. No exception leaves the I/O thread.
+//
+// Thread contract: every public method may be called from any thread (intents are posted to the
+// io_context). Completion callbacks and the wake callback run on the I/O thread: keep them short.
+// The LapQueue has exactly one consumer: the thread that drains it (UI or CLI).
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include <boost/asio/io_context.hpp>
+
+#include "core/link/byte_link.h"
+#include "core/link/link_state.h"
+#include "core/link/session_counters.h"
+#include "core/protocol/lap.h"
+#include "core/protocol/lap_queue.h"
+#include "core/protocol/model_profile.h"
+
+namespace ydscope {
+
+// Opens the byte link for one attempt at `baud`; null plus one sentence in `error` on failure.
+using LinkOpener = std::function<std::unique_ptr<ByteLink>(boost::asio::io_context& io, std::uint32_t baud,
+                                                           std::string& error)>;
+
+// Bauds tried, in this order, when baud probing is on.
+inline constexpr std::uint32_t kProbeBauds[] = {230400, 512000, 128000, 115200};
+
+struct SessionConfig {
+  std::string address;                // "/dev/ttyUSB0", a pty path, or "tcp://host:port"
+  std::optional<Model> model;         // empty: detect from the device-info model code
+  std::optional<std::uint32_t> baud;  // empty: the model's default (230400 when the model is unknown)
+  bool probe_baud = false;            // try kProbeBauds (starting with `baud` if given) until A5 90 answers
+  bool scan = true;                   // start scanning after start-up; false for info / set
+  bool reconnect = true;              // after a fault, reopen with backoff (0.25 s doubling to 4 s)
+  std::optional<double> distance_scale;  // overrides the profile's mm per count
+  std::chrono::milliseconds reply_timeout{1000};
+  int command_attempts = 2;                      // sends per command before it is reported failed
+  std::chrono::milliseconds stall_timeout{2000}; // no byte for this long while scanning = stalled
+  LinkOpener open_link;               // empty: open `address` as a serial port or tcp:// bridge
+};
+
+struct DeviceDetails {
+  const ModelProfile* profile = nullptr;  // the model in use (detected or configured)
+  std::uint8_t model_code = 0;            // as the device reported it
+  FirmwareVersion firmware;
+  std::uint8_t hardware = 0;
+  std::string serial;                     // 16 serial bytes rendered as text
+};
+
+struct HealthReport {
+  Command command = Command::HealthStatusCode;  // the command that answered (A5 91 or A5 92)
+  std::uint8_t status = 0;       // G1: module bits; G6/TG: 0 ok, 1 warning, 2 error
+  std::uint16_t error_code = 0;
+  std::string summary;           // "ok", "error (code 0x0012)", "sensor, encoder abnormal"
+};
+
+// The outcome of one intent, also kept as SessionSnapshot::last_result.
+struct CommandResult {
+  bool ok = false;
+  std::string what;     // "set scan frequency to 10.0 Hz"
+  std::string message;  // read-back on success, one actionable sentence on failure
+  std::optional<double> scan_hz;
+  std::optional<std::uint16_t> ranging_khz;
+  std::optional<bool> power_down_protection;
+  std::optional<HealthReport> health;
+};
+using CommandCallback = std::function<void(const CommandResult&)>;
+
+struct SessionSnapshot {
+  LinkState state = LinkState::Idle;
+  std::string message;        // what is happening or what went wrong, in words
+  std::string link;           // the link's describe(): "/dev/ttyUSB0 at 512000 baud"
+  std::uint32_t baud = 0;
+  std::optional<DeviceDetails> device;
+  std::optional<HealthReport> health;
+  std::optional<double> scan_hz;             // set value (A5 0D), not the measured rate
+  std::optional<std::uint16_t> ranging_khz;  // A5 D1
+  std::optional<bool> power_down_protection; // known after toggling it
+  double distance_scale = 0;                 // mm per count in use
+  bool busy = false;                         // a command is running
+  std::string busy_what;
+  std::optional<CommandResult> last_result;
+  bool recording = false;
+  std::string recording_path;
+  CounterSnapshot counters;
+  std::uint64_t queue_dropped = 0;  // LapQueue::dropped_full
+  std::uint64_t queue_skipped = 0;  // LapQueue::skipped
+};
+
+class Session {
+ public:
+  using WakeFn = std::function<void()>;
+
+  // Pushes laps into `queue` (which must outlive the session); calls `wake` after every push.
+  Session(LapQueue& queue, WakeFn wake = {});
+  // Owns a queue of `queue_capacity` laps, reachable through laps().
+  explicit Session(std::size_t queue_capacity = 16, WakeFn wake = {});
+  ~Session();  // disconnects and joins the I/O thread
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  LapQueue& laps() { return *queue_; }
+
+  // Intents, posted to the I/O thread. connect replaces any current connection.
+  void connect(SessionConfig config);
+  void disconnect();
+  void set_scan_hz(double target_hz, CommandCallback done = {});
+  void set_ranging_khz(std::uint16_t target_khz, CommandCallback done = {});
+  void set_power_down_protection(bool on, CommandCallback done = {});
+  void refresh_health(CommandCallback done = {});
+  void start_recording(std::string path, CommandCallback done = {});
+  void stop_recording(CommandCallback done = {});
+  // Empty: back to the model profile's scale. Applies from the next decoded byte.
+  void set_distance_scale(std::optional<double> mm_per_count);
+
+  // Any thread; a copy under a mutex plus relaxed counter loads: cheap enough for every frame.
+  SessionSnapshot snapshot() const;
+  // Blocks until `done(snapshot)` holds or the timeout passes; returns the last snapshot seen.
+  // For the CLI and tests (the UI polls snapshot() instead).
+  SessionSnapshot wait_until(const std::function<bool(const SessionSnapshot&)>& done,
+                             std::chrono::milliseconds timeout) const;
+
+  class Impl;
+
+ private:
+  std::unique_ptr<LapQueue> owned_queue_;
+  LapQueue* queue_;
+  std::unique_ptr<Impl> impl_;
+};
+
+// A one-line JSON-free rendering of a snapshot's state for logs: "scanning: G6 on /dev/pts/3 ...".
+std::string describe_snapshot(const SessionSnapshot& snapshot);
+
+}  // namespace ydscope

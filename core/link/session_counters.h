@@ -1,0 +1,73 @@
+#pragma once
+// Live counters of a device session. Written by the I/O thread only (relaxed atomics, no locks on
+// the byte path); read from any thread as a plain CounterSnapshot. Rates are recomputed by the
+// I/O thread once a second from the totals, so reading them costs nothing.
+#include <atomic>
+#include <cstdint>
+#include <optional>
+
+namespace ydscope {
+
+struct CounterSnapshot {
+  std::uint64_t bytes_received = 0;
+  std::uint64_t bytes_sent = 0;
+  std::uint64_t packets = 0;          // valid scan packets
+  std::uint64_t laps = 0;             // laps pushed or dropped
+  std::uint64_t checksum_errors = 0;  // scan packets dropped for a bad XOR checksum
+  std::uint64_t resync_bytes = 0;     // bytes skipped while hunting a packet header
+  std::uint64_t crc8_failures = 0;    // G1 laps whose LastCRC disagreed
+  std::uint64_t queue_drops = 0;      // laps dropped because the consumer was behind
+  std::uint64_t drained_bytes = 0;    // bytes discarded while draining before a command
+  std::uint64_t reconnects = 0;       // links reopened after a fault
+  std::uint64_t refused_commands = 0; // commands the session refused to send while scanning (bugs)
+  double bytes_per_s = 0;
+  double packets_per_s = 0;
+  double laps_per_s = 0;
+  std::optional<double> seconds_since_last_byte;  // empty before the first byte
+};
+
+class SessionCounters {
+ public:
+  // I/O thread.
+  void add_received(std::uint64_t n, std::int64_t now_ns) {
+    bump(bytes_received_, n);
+    last_byte_ns_.store(now_ns, std::memory_order_relaxed);
+  }
+  void add_sent(std::uint64_t n) { bump(bytes_sent_, n); }
+  void add_drained(std::uint64_t n) { bump(drained_bytes_, n); }
+  void add_reconnect() { bump(reconnects_, 1); }
+  void add_refused() { bump(refused_commands_, 1); }
+  void add_queue_drop() { bump(queue_drops_, 1); }
+  // The decoder's totals for the current link are added to what earlier links decoded.
+  void set_decoder_totals(std::uint64_t packets, std::uint64_t laps, std::uint64_t checksum_errors,
+                          std::uint64_t resync_bytes, std::uint64_t crc8_failures);
+  // Folds the current link's decoder totals into the base before a new decoder starts at zero.
+  void close_decoder_epoch();
+  // Once a second: recompute the rates from the totals.
+  void tick(std::int64_t now_ns);
+
+  // Any thread.
+  CounterSnapshot read(std::int64_t now_ns) const;
+  std::int64_t last_byte_ns() const { return last_byte_ns_.load(std::memory_order_relaxed); }
+
+ private:
+  static void bump(std::atomic<std::uint64_t>& counter, std::uint64_t n) {
+    counter.store(counter.load(std::memory_order_relaxed) + n, std::memory_order_relaxed);
+  }
+  struct DecoderTotals {
+    std::uint64_t packets = 0, laps = 0, checksum_errors = 0, resync_bytes = 0, crc8_failures = 0;
+  };
+
+  std::atomic<std::uint64_t> bytes_received_{0}, bytes_sent_{0}, drained_bytes_{0}, reconnects_{0},
+      refused_commands_{0}, queue_drops_{0};
+  std::atomic<std::uint64_t> packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0}, crc8_failures_{0};
+  std::atomic<std::int64_t> last_byte_ns_{0};
+  std::atomic<double> bytes_per_s_{0}, packets_per_s_{0}, laps_per_s_{0};
+  // I/O thread only.
+  DecoderTotals base_{};
+  DecoderTotals current_{};
+  std::int64_t last_tick_ns_ = 0;
+  std::uint64_t tick_bytes_ = 0, tick_packets_ = 0, tick_laps_ = 0;
+};
+
+}  // namespace ydscope
