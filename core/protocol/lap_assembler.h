@@ -1,0 +1,63 @@
+#pragma once
+// LapAssembler: valid scan packets -> complete laps, with the manuals' formulas.
+//
+// - Angles: first level (FSA>>1)/64 and (LSA>>1)/64, interpolated over LSN-1 steps along the
+//   clockwise difference (LSA < FSA crosses 360); second level adds the distance-only correction
+//   (angle_correction.h); results are normalised to [0, 360).
+// - Ranges: (S >> flag_bits) * distance_scale mm; G1's flag is S & 3.
+// - G1: CT information by packet index (scan frequency, version, health) and the CRC8 verdict from
+//   the LastCRC of the zero packet that closes the lap.
+// - A lap runs from a zero packet (inclusive) to the next (exclusive). Packets before the first
+//   zero packet form a partial lap that is discarded. A lap is published when the next zero packet
+//   arrives; it stays readable through lap() until the following add_packet call.
+// Two preallocated laps are swapped, so steady state allocates nothing.
+#include <cstdint>
+
+#include "core/protocol/angle_correction.h"
+#include "core/protocol/lap.h"
+#include "core/protocol/model_profile.h"
+#include "core/protocol/packet_decoder.h"
+
+namespace ydscope {
+
+struct LapCounters {
+  std::uint64_t laps = 0;                  // complete laps published
+  std::uint64_t discarded_packets = 0;     // packets before the first zero packet
+  std::uint64_t crc_ok = 0;                // G1 laps whose CRC8 matched the LastCRC
+  std::uint64_t crc_mismatches = 0;        // G1 laps whose CRC8 did not match (or LastCRC missing)
+  std::uint64_t overflow_points = 0;       // points dropped because a lap exceeded Lap::kMaxPoints
+};
+
+class LapAssembler {
+ public:
+  // distance_scale: mm per raw unit after the flag bits (profile.distance_scale unless overridden).
+  LapAssembler(const ModelProfile& profile, double distance_scale);
+
+  // Returns true when this packet (a zero packet) closed a complete lap, now in lap().
+  bool add_packet(const PacketView& packet);
+  // A packet dropped for a bad checksum: counted in the lap being built.
+  void add_checksum_error();
+
+  const Lap& lap() const { return done_; }
+  const LapCounters& counters() const { return counters_; }
+  double distance_scale() const { return distance_scale_; }
+  void reset();
+
+ private:
+  void start_lap(const PacketView& zero);
+  void add_points(const PacketView& packet);
+  void take_ct_info(const PacketView& packet);
+
+  const ModelProfile* profile_;
+  double distance_scale_;
+  AngleCorrectionTable corrections_;
+  Lap building_;
+  Lap done_;
+  bool in_lap_ = false;             // a zero packet has been seen
+  std::uint32_t packet_index_ = 0;  // index of the next packet within the lap being built
+  std::uint8_t crc_ = 0;            // G1 CRC8 over the CT bytes of the lap being built
+  std::uint64_t next_index_ = 0;
+  LapCounters counters_;
+};
+
+}  // namespace ydscope

@@ -1,0 +1,53 @@
+#pragma once
+// ScanDecoder: bytes of an A5 60 stream in, complete laps out. PacketDecoder + LapAssembler for
+// one model, with one set of counters. This is what the session, the CLI and the tests use.
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "core/protocol/function_ref.h"
+#include "core/protocol/lap.h"
+#include "core/protocol/lap_assembler.h"
+#include "core/protocol/model_profile.h"
+#include "core/protocol/packet_decoder.h"
+
+namespace ydscope {
+
+struct DecoderCounters {
+  std::uint64_t bytes = 0;             // every byte fed
+  std::uint64_t packets = 0;           // scan packets with a valid checksum
+  std::uint64_t zero_packets = 0;      // of which CT bit 0 was set
+  std::uint64_t checksum_errors = 0;   // packets dropped for a bad checksum
+  std::uint64_t resync_bytes = 0;      // bytes skipped hunting a header (junk, reply headers, failed starts)
+  std::uint64_t pending_bytes = 0;     // bytes of a packet not complete yet (cut off at end of stream)
+  std::uint64_t laps = 0;              // complete laps published
+  std::uint64_t discarded_packets = 0; // packets before the first zero packet (partial lap)
+  std::uint64_t crc_ok = 0;            // G1 laps whose CT CRC8 matched
+  std::uint64_t crc_mismatches = 0;    // G1 laps whose CT CRC8 did not match
+  std::uint64_t overflow_points = 0;   // points dropped from laps longer than Lap::kMaxPoints
+};
+
+using LapCallback = FunctionRef<void(const Lap&)>;
+
+class ScanDecoder {
+ public:
+  // distance_scale overrides profile.distance_scale (mm per raw unit after the flag bits).
+  explicit ScanDecoder(const ModelProfile& profile, std::optional<double> distance_scale = std::nullopt);
+
+  // Consumes all of `bytes` received at rx_ns; calls on_lap for every lap completed. The Lap is
+  // valid only during the call (copy it, e.g. into a LapQueue).
+  void feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, LapCallback on_lap);
+
+  DecoderCounters counters() const;
+  const ModelProfile& profile() const { return *profile_; }
+  double distance_scale() const { return assembler_.distance_scale(); }
+  // Back to a fresh decoder (buffers, lap state and counters).
+  void reset();
+
+ private:
+  const ModelProfile* profile_;
+  PacketDecoder packets_;
+  LapAssembler assembler_;
+};
+
+}  // namespace ydscope
