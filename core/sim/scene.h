@@ -1,0 +1,35 @@
+#pragma once
+// What the virtual lidar sees: a pure, deterministic function of (direction, time) -> range and
+// interference flag. The same seed, angle and time always give the same answer.
+#include <cstdint>
+#include <memory>
+#include <string_view>
+
+#include "core/protocol/lap.h"
+
+namespace ydscope {
+
+struct SceneReturn {
+  double range_mm = 0.0;  // 0 = no return
+  PointFlag flag = PointFlag::None;  // G1 interference flag (specular, ambient light)
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  // angle_deg: direction in the lidar frame, [0, 360); t_ns: time since the device powered on.
+  virtual SceneReturn sample(double angle_deg, std::int64_t t_ns) const = 0;
+  virtual std::string_view name() const = 0;
+};
+
+// "room" or "demo" (case-sensitive); nullptr for any other name.
+std::unique_ptr<Scene> make_scene(std::string_view name, std::uint64_t seed);
+// "room, demo" for messages and --help.
+std::string_view scene_names();
+
+// Deterministic noise shared by the scenes: a hash of (seed, a, b) mapped to [0, 1) or to an
+// approximately normal value with unit deviation. Pure, so scenes stay pure.
+double hash_unit(std::uint64_t seed, std::int64_t a, std::int64_t b);
+double hash_normal(std::uint64_t seed, std::int64_t a, std::int64_t b);
+
+}  // namespace ydscope
