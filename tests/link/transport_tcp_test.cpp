@@ -1,0 +1,104 @@
+// TcpLink against a listener on 127.0.0.1 (an ephemeral port), as a ser2net bridge would be.
+#include <array>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include <boost/asio/read.hpp>
+#include <boost/asio/write.hpp>
+#include <gtest/gtest.h>
+
+#include "core/link/tcp_link.h"
+
+namespace ydscope {
+namespace {
+
+using boost::asio::ip::tcp;
+constexpr auto kHangGuard = std::chrono::seconds(5);
+
+TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
+  boost::asio::io_context io;
+  tcp::acceptor acceptor(io, tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+  const auto port = acceptor.local_endpoint().port();
+
+  // connect() is blocking and must not need the io_context to run: accept on another thread.
+  boost::asio::io_context bridge_io;
+  tcp::socket bridge(bridge_io);
+  std::thread accept_thread([&] { acceptor.accept(bridge); });
+  std::string error;
+  auto link = TcpLink::connect(io, "127.0.0.1", port, error);
+  accept_thread.join();
+  ASSERT_TRUE(link) << error;
+  EXPECT_EQ(link->describe(), "tcp://127.0.0.1:" + std::to_string(port));
+  EXPECT_TRUE(link->accepts_commands());
+
+  const std::vector<std::uint8_t> device_bytes{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81, 0xAA, 0x55};
+  boost::asio::write(bridge, boost::asio::buffer(device_bytes));
+  std::vector<std::uint8_t> received;
+  std::array<std::uint8_t, 4> buffer{};
+  std::function<void()> read_more = [&] {
+    link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
+      ASSERT_FALSE(ec) << ec.message();
+      received.insert(received.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
+      if (received.size() < device_bytes.size()) read_more();
+    });
+  };
+  read_more();
+  io.run_for(kHangGuard);
+  EXPECT_EQ(received, device_bytes);
+
+  const std::array<std::uint8_t, 2> stop{0xA5, 0x65};
+  bool written = false;
+  link->async_write(stop, [&](const boost::system::error_code& ec, std::size_t n) {
+    EXPECT_FALSE(ec);
+    EXPECT_EQ(n, 2u);
+    written = true;
+  });
+  io.restart();
+  io.run_for(kHangGuard);
+  ASSERT_TRUE(written);
+  std::array<std::uint8_t, 2> at_bridge{};
+  boost::asio::read(bridge, boost::asio::buffer(at_bridge));
+  EXPECT_EQ(at_bridge, stop);
+
+  // The bridge hanging up is end-of-file for the session (it reconnects).
+  bridge.close();
+  boost::system::error_code last;
+  link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t) { last = ec; });
+  io.restart();
+  io.run_for(kHangGuard);
+  EXPECT_EQ(last, boost::asio::error::eof);
+}
+
+TEST(TcpLink, RefusedConnectionIsOneSentence) {
+  boost::asio::io_context io;
+  std::uint16_t port = 0;
+  {  // A port that was just free: nothing listens there now.
+    tcp::acceptor probe(io, tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+    port = probe.local_endpoint().port();
+  }
+  std::string error;
+  EXPECT_FALSE(TcpLink::connect(io, "127.0.0.1", port, error));
+  EXPECT_EQ(error, "cannot connect to tcp://127.0.0.1:" + std::to_string(port) +
+                       ": connection refused; is the bridge (e.g. ser2net) running on that port?");
+}
+
+TEST(TcpLink, UnknownHostIsOneSentence) {
+  boost::asio::io_context io;
+  std::string error;
+  EXPECT_FALSE(TcpLink::connect(io, "no-such-host.invalid", 2000, error, std::chrono::milliseconds(2000)));
+  EXPECT_NE(error.find("unknown host 'no-such-host.invalid'"), std::string::npos) << error;
+}
+
+TEST(TcpLink, BaudBelongsToTheBridge) {
+  boost::asio::io_context io;
+  tcp::acceptor acceptor(io, tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+  std::string error;
+  auto link = TcpLink::connect(io, "127.0.0.1", acceptor.local_endpoint().port(), error);
+  ASSERT_TRUE(link) << error;  // the kernel completes the handshake from the backlog
+  EXPECT_FALSE(link->set_baud(512000, error));
+  EXPECT_NE(error.find("ser2net"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace ydscope
