@@ -32,6 +32,9 @@ class ReplyReader {
   void reset();
 
  private:
+  void hunt(std::uint8_t byte);  // one byte while looking for / collecting the header
+  void header_collected();
+
   std::size_t max_junk_;
   State state_ = State::Searching;
   std::array<std::uint8_t, kReplyHeaderSize> header_bytes_{};

@@ -1,0 +1,121 @@
+#include "core/protocol/lap_assembler.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "core/protocol/g1_ct.h"
+
+namespace ydscope {
+
+namespace {
+
+// Into [0, 360) without fmod in the common case (at most one turn out of range).
+float wrap_degrees(double degrees) {
+  if (degrees >= 360.0) degrees -= 360.0;
+  else if (degrees < 0.0) degrees += 360.0;
+  if (degrees < 0.0 || degrees >= 360.0) degrees = normalize_degrees(degrees);
+  auto narrow = static_cast<float>(degrees);
+  // 359.99999... can round up to 360.0f.
+  return narrow >= 360.0f ? 0.0f : narrow;
+}
+
+}  // namespace
+
+LapAssembler::LapAssembler(const ModelProfile& profile, double distance_scale)
+    : profile_(&profile), distance_scale_(distance_scale), corrections_(distance_scale) {}
+
+void LapAssembler::reset() {
+  building_.points.clear();
+  done_.points.clear();
+  in_lap_ = false;
+  packet_index_ = 0;
+  crc_ = 0;
+  next_index_ = 0;
+  counters_ = {};
+}
+
+void LapAssembler::start_lap(const PacketView& zero) {
+  building_.index = next_index_++;
+  building_.points.clear();
+  building_.scan_hz.reset();
+  building_.health_bits.reset();
+  building_.version.reset();
+  building_.crc = CrcVerdict::NotApplicable;
+  building_.packets = 0;
+  building_.checksum_errors = 0;
+  building_.first_rx_ns = zero.first_rx_ns;
+  building_.last_rx_ns = zero.rx_ns;
+  packet_index_ = 0;
+  crc_ = 0;
+  in_lap_ = true;
+}
+
+bool LapAssembler::add_packet(const PacketView& packet) {
+  bool closed = false;
+  if (packet.lap_start()) {
+    if (in_lap_) {
+      if (profile_->last_crc_before_zero) {
+        // A missing LastCRC byte means the stream lost bytes, so the lap cannot be vouched for.
+        const bool ok = packet.last_crc && *packet.last_crc == crc_;
+        building_.crc = ok ? CrcVerdict::Ok : CrcVerdict::Mismatch;
+        ++(ok ? counters_.crc_ok : counters_.crc_mismatches);
+      }
+      building_.last_rx_ns = packet.rx_ns;
+      std::swap(building_, done_);
+      ++counters_.laps;
+      closed = true;
+    }
+    start_lap(packet);
+  } else if (!in_lap_) {
+    ++counters_.discarded_packets;
+    return false;
+  }
+  if (profile_->ct_carries_info) take_ct_info(packet);
+  if (profile_->last_crc_before_zero) crc_ = ct_crc8_update(crc_, packet.ct);
+  add_points(packet);
+  ++building_.packets;
+  ++packet_index_;
+  building_.last_rx_ns = packet.rx_ns;
+  return closed;
+}
+
+void LapAssembler::add_checksum_error() {
+  if (in_lap_) ++building_.checksum_errors;
+}
+
+void LapAssembler::take_ct_info(const PacketView& packet) {
+  switch (packet_index_) {
+    case kG1CtScanHzIndex: building_.scan_hz = g1_ct_scan_hz(packet.ct); break;
+    case kG1CtVersionIndex:
+      building_.version = FirmwareVersion{g1_ct_version_major(packet.ct), g1_ct_version_minor(packet.ct)};
+      break;
+    case kG1CtHealthIndex: building_.health_bits = g1_ct_health(packet.ct); break;
+    default: break;
+  }
+}
+
+void LapAssembler::add_points(const PacketView& packet) {
+  const double first = raw_angle_degrees(packet.fsa);
+  double diff = raw_angle_degrees(packet.lsa) - first;
+  if (diff < 0.0) diff += 360.0;  // clockwise across 360
+  const double step = packet.lsn > 1 ? diff / (packet.lsn - 1) : 0.0;
+
+  std::size_t count = packet.lsn;
+  const std::size_t room = Lap::kMaxPoints - std::min(building_.points.size(), Lap::kMaxPoints);
+  if (count > room) {
+    counters_.overflow_points += count - room;
+    count = room;
+  }
+  const unsigned flag_bits = profile_->flag_bits;
+  const unsigned flag_mask = (1u << flag_bits) - 1u;
+  const auto scale = static_cast<float>(distance_scale_);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint16_t sample = packet.sample(i);
+    const auto raw_distance = static_cast<std::uint16_t>(sample >> flag_bits);
+    const double angle = first + step * static_cast<double>(i) + corrections_[raw_distance];
+    building_.points.push_back(LapPoint{wrap_degrees(angle), static_cast<float>(raw_distance) * scale,
+                                        static_cast<PointFlag>(sample & flag_mask)});
+  }
+}
+
+}  // namespace ydscope

@@ -1,0 +1,56 @@
+#include "core/protocol/scan_decoder.h"
+
+namespace ydscope {
+
+namespace {
+
+// Routes the framer's events into the assembler and hands completed laps to the caller.
+class AssemblingSink final : public PacketSink {
+ public:
+  AssemblingSink(LapAssembler& assembler, LapCallback on_lap) : assembler_(assembler), on_lap_(on_lap) {}
+  void on_packet(const PacketView& packet) override {
+    if (assembler_.add_packet(packet)) on_lap_(assembler_.lap());
+  }
+  void on_checksum_error() override { assembler_.add_checksum_error(); }
+
+ private:
+  LapAssembler& assembler_;
+  LapCallback on_lap_;
+};
+
+}  // namespace
+
+ScanDecoder::ScanDecoder(const ModelProfile& profile, std::optional<double> distance_scale)
+    : profile_(&profile),
+      packets_(profile.last_crc_before_zero),
+      assembler_(profile, distance_scale.value_or(profile.distance_scale)) {}
+
+void ScanDecoder::feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, LapCallback on_lap) {
+  AssemblingSink sink(assembler_, on_lap);
+  packets_.feed(bytes, rx_ns, sink);
+}
+
+DecoderCounters ScanDecoder::counters() const {
+  const PacketCounters& p = packets_.counters();
+  const LapCounters& l = assembler_.counters();
+  DecoderCounters c;
+  c.bytes = p.bytes;
+  c.packets = p.packets;
+  c.zero_packets = p.zero_packets;
+  c.checksum_errors = p.checksum_errors;
+  c.resync_bytes = p.resync_bytes;
+  c.pending_bytes = p.pending_bytes;
+  c.laps = l.laps;
+  c.discarded_packets = l.discarded_packets;
+  c.crc_ok = l.crc_ok;
+  c.crc_mismatches = l.crc_mismatches;
+  c.overflow_points = l.overflow_points;
+  return c;
+}
+
+void ScanDecoder::reset() {
+  packets_.reset();
+  assembler_.reset();
+}
+
+}  // namespace ydscope
