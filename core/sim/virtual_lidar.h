@@ -173,7 +173,6 @@ class VirtualLidar {
   std::int64_t stall_from_ns_ = 0;
   std::int64_t stall_until_ns_ = 0;
   std::int64_t next_periodic_stall_ns_ = kNever;
-  std::optional<std::uint8_t> pending_a5_;  // an A5 waiting for its code byte
   bool saw_a5_ = false;
 
   DeviceCounters counters_;

@@ -1,0 +1,134 @@
+#include "core/sim/scan_stream.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/protocol/angle_correction.h"
+#include "core/protocol/g1_ct.h"
+#include "core/protocol/scan_packet.h"
+#include "core/sim/scene.h"
+
+namespace ydscope {
+
+namespace {
+// Where the correction sits for distant targets; the first guess of the fixed-point iteration.
+const double kFarCorrectionDeg = angle_correction_deg(1e9);
+constexpr int kFixedPointSteps = 3;
+}  // namespace
+
+ScanStream::ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene,
+                       std::int64_t scene_epoch_ns, std::uint8_t version_major, std::uint8_t version_minor,
+                       std::uint64_t seed)
+    : profile_(&profile),
+      distance_scale_(distance_scale),
+      max_range_mm_(static_cast<double>(0xFFFFu >> profile.flag_bits) * distance_scale),
+      scene_(&scene),
+      scene_epoch_ns_(scene_epoch_ns),
+      version_major_(version_major),
+      version_minor_(version_minor),
+      debug_salt_(static_cast<std::uint8_t>(seed * 37u + 11u)) {
+  samples_.reserve(kSamplesPerPacket);
+}
+
+void ScanStream::start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz) {
+  scan_hz_ = scan_centihz / 100.0;
+  const double ranging_hz = ranging_khz * 1000.0;
+  samples_per_lap_ = std::max<std::uint32_t>(2, static_cast<std::uint32_t>(std::lround(ranging_hz / scan_hz_)));
+  lap_period_ns_ = 1e9 / scan_hz_;
+  lap_start_ns_ = t_ns;
+  lap_ = 0;
+  next_sample_ = 0;
+  packet_index_ = 0;
+  crc_ = 0;
+  first_zero_ = true;
+}
+
+std::int64_t ScanStream::sample_time_ns(std::uint32_t sample) const {
+  return lap_start_ns_ + static_cast<std::int64_t>(std::llround(lap_period_ns_ * sample / samples_per_lap_));
+}
+
+std::int64_t ScanStream::next_ready_ns() const {
+  if (next_sample_ == 0) return lap_start_ns_;
+  const std::uint32_t last = std::min<std::uint32_t>(next_sample_ + kSamplesPerPacket - 1, samples_per_lap_ - 1);
+  return sample_time_ns(last);
+}
+
+std::uint8_t ScanStream::packet_ct(std::uint32_t index) const {
+  if (!profile_->ct_carries_info) return index == 0 ? kCtLapStart : 0;
+  switch (index) {
+    case kG1CtScanHzIndex: return g1_zero_packet_ct(scan_hz_);
+    case kG1CtVersionIndex: return g1_version_ct(version_major_, version_minor_);
+    case kG1CtHealthIndex: return g1_health_ct(health_);
+    default:  // production debugging information: any value with the lap-start bit clear
+      return static_cast<std::uint8_t>(((index * 29u + debug_salt_) & 0x7Fu) << 1);
+  }
+}
+
+StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth) {
+  const bool zero = next_sample_ == 0;
+  const std::uint32_t first = next_sample_;
+  const std::uint32_t last =
+      zero ? 0 : std::min<std::uint32_t>(first + kSamplesPerPacket - 1, samples_per_lap_ - 1);
+  const auto lsn = static_cast<std::uint8_t>(last - first + 1);
+
+  StreamPacket packet;
+  packet.ready_ns = sample_time_ns(last);
+  packet.index = packet_index_;
+  packet.ct = packet_ct(packet_index_);
+  packet.lsn = lsn;
+
+  if (zero) {
+    if (!first_zero_) ++lap_;
+    if (profile_->last_crc_before_zero) bytes.push_back(first_zero_ ? 0 : crc_);
+    first_zero_ = false;
+    crc_ = 0;
+  }
+  packet.lap = lap_;
+  if (profile_->ct_carries_info) crc_ = ct_crc8_update(crc_, packet.ct);
+
+  // First-level angles: evenly spaced raw angles, quantised to the protocol's 1/64 degree at the
+  // ends; the host interpolates between the quantised ends, so this does too.
+  const double step = 360.0 / samples_per_lap_;
+  const std::uint16_t fsa = encode_raw_angle(first * step);
+  const std::uint16_t lsa = encode_raw_angle(last * step);
+  const double fsa_deg = raw_angle_degrees(fsa);
+  double diff = raw_angle_degrees(lsa) - fsa_deg;
+  if (diff < 0) diff += 360.0;
+
+  samples_.clear();
+  if (truth) truth->clear();
+  const bool flags = profile_->flag_bits > 0;
+  for (std::uint32_t i = 0; i < lsn; ++i) {
+    const double level1 = lsn > 1 ? fsa_deg + diff * i / (lsn - 1) : fsa_deg;
+    const std::int64_t t = sample_time_ns(first + i) - scene_epoch_ns_;
+    double theta = level1 + kFarCorrectionDeg;
+    std::uint16_t word = 0;
+    PointFlag flag = PointFlag::None;
+    double range = 0.0;
+    for (int k = 0; k < kFixedPointSteps; ++k) {
+      const SceneReturn ret = scene_->sample(normalize_degrees(theta), t);
+      range = ret.range_mm > 0.0 && ret.range_mm <= max_range_mm_ ? ret.range_mm : 0.0;
+      flag = flags && range > 0.0 ? ret.flag : PointFlag::None;
+      word = encode_sample(range, flag, profile_->flag_bits, distance_scale_);
+      range = static_cast<double>(word >> profile_->flag_bits) * distance_scale_;
+      theta = level1 + angle_correction_deg(range);
+    }
+    samples_.push_back(word);
+    if (truth)
+      truth->push_back({static_cast<float>(normalize_degrees(theta)), static_cast<float>(range), flag});
+  }
+
+  packet.packet_offset = bytes.size();
+  append_scan_packet({packet.ct, fsa, lsa, samples_}, bytes);
+
+  ++packet_index_;
+  next_sample_ = last + 1;
+  if (next_sample_ >= samples_per_lap_) {
+    next_sample_ = 0;
+    packet_index_ = 0;
+    lap_start_ns_ = sample_time_ns(samples_per_lap_);
+  }
+  return packet;
+}
+
+}  // namespace ydscope

@@ -1,0 +1,73 @@
+#pragma once
+// ScanStream: the scan packets of one scan, in order, each with the time its last sample was
+// measured. Laps hold N = round(ranging Hz / scan Hz) samples evenly spaced over 360 degrees; the
+// zero packet carries sample 0 alone, then packets of up to kSamplesPerPacket samples.
+//
+// Angles: the host computes first-level angles by interpolating FSA..LSA, then adds the manuals'
+// distance-dependent correction. Each sample's range is therefore taken from the scene at the
+// direction the host will compute for it: a fixed point of theta = first_level + correction(range
+// (theta)), reached in a few iterations. The truth reported is exactly what a correct decoder
+// computes from the bytes (up to float rounding).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/protocol/lap.h"
+#include "core/protocol/model_profile.h"
+
+namespace ydscope {
+
+class Scene;
+
+struct StreamPacket {
+  std::int64_t ready_ns = 0;
+  std::uint64_t lap = 0;
+  std::uint32_t index = 0;         // within the lap; 0 = zero packet
+  std::uint8_t ct = 0;
+  std::size_t packet_offset = 0;   // where AA 55 starts in the bytes (G1 zero packet: after LastCRC)
+  std::uint8_t lsn = 0;
+};
+
+class ScanStream {
+ public:
+  static constexpr std::size_t kSamplesPerPacket = 40;
+
+  // scene_epoch_ns: the device time the scene's clock counts from.
+  ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene,
+             std::int64_t scene_epoch_ns, std::uint8_t version_major, std::uint8_t version_minor,
+             std::uint64_t seed);
+
+  void start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz);
+  void set_health(std::uint8_t bits) { health_ = bits; }
+  std::int64_t next_ready_ns() const;
+  // Appends the next packet's bytes to `bytes`; fills `truth` (cleared first) when not null.
+  StreamPacket next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth);
+  std::uint32_t samples_per_lap() const { return samples_per_lap_; }
+
+ private:
+  std::int64_t sample_time_ns(std::uint32_t sample) const;
+  std::uint8_t packet_ct(std::uint32_t index) const;
+
+  const ModelProfile* profile_;
+  double distance_scale_;
+  double max_range_mm_;
+  const Scene* scene_;
+  std::int64_t scene_epoch_ns_;
+  std::uint8_t version_major_;
+  std::uint8_t version_minor_;
+  std::uint8_t debug_salt_;
+  std::uint8_t health_ = 0;
+
+  double scan_hz_ = 10.0;
+  std::uint32_t samples_per_lap_ = 1;
+  std::int64_t lap_start_ns_ = 0;
+  double lap_period_ns_ = 1e8;
+  std::uint64_t lap_ = 0;
+  std::uint32_t next_sample_ = 0;   // 0 = the next packet is a zero packet
+  std::uint32_t packet_index_ = 0;
+  std::uint8_t crc_ = 0;            // G1 CRC8 over this lap's CT bytes so far
+  bool first_zero_ = true;
+  std::vector<std::uint16_t> samples_;
+};
+
+}  // namespace ydscope

@@ -1,0 +1,367 @@
+#include "core/sim/virtual_lidar.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/protocol/scan_packet.h"
+#include "core/sim/line_pacer.h"
+#include "core/sim/scan_stream.h"
+#include "core/sim/scene.h"
+
+namespace ydscope {
+
+namespace {
+
+std::string hex_command(std::uint8_t code) {
+  char text[8];
+  std::snprintf(text, sizeof text, "A5 %02X", code);
+  return text;
+}
+
+std::string hz_text(std::uint32_t centihz) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f Hz", centihz / 100.0);
+  return text;
+}
+
+// Each fault kind draws from its own generator so enabling one never moves another.
+constexpr std::uint64_t kCorruptSalt = 0xC0AA;
+constexpr std::uint64_t kDropSalt = 0xD40F;
+constexpr std::uint64_t kLostSalt = 0x1057;
+constexpr std::uint64_t kJunkSalt = 0x3A4C;
+
+}  // namespace
+
+VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns)
+    : profile_(&profile_for(config.model)),
+      config_(config),
+      distance_scale_(config.distance_scale.value_or(profile_->distance_scale)),
+      scene_(make_scene(config.scene, config.seed)),
+      faults_(config.faults),
+      corrupt_random_(config.seed ^ kCorruptSalt),
+      drop_random_(config.seed ^ kDropSalt),
+      lost_random_(config.seed ^ kLostSalt),
+      junk_random_(config.seed ^ kJunkSalt),
+      now_ns_(now_ns) {
+  if (!scene_)
+    throw std::invalid_argument("unknown scene '" + config.scene + "'; the scenes are " + std::string(scene_names()));
+  if (!(distance_scale_ > 0.0)) throw std::invalid_argument("the distance scale must be positive");
+  stream_ = std::make_unique<ScanStream>(*profile_, distance_scale_, *scene_, now_ns, config.firmware_major,
+                                         config.firmware_minor, config.seed);
+  pacer_ = std::make_unique<LinePacer>(profile_->default_baud);
+  info_.model_code = profile_->model_code;
+  info_.firmware_major = config.firmware_major;
+  info_.firmware_minor = config.firmware_minor;
+  info_.hardware = config.hardware;
+  FaultRandom serial_random(config.seed ^ 0x5E41A1);
+  for (auto& digit : info_.serial) digit = static_cast<std::uint8_t>(serial_random.below(10));
+  reset_to_power_on();
+}
+
+VirtualLidar::~VirtualLidar() = default;
+
+void VirtualLidar::reset_to_power_on() {
+  mode_ = DeviceMode::Idle;
+  scan_centihz_ = static_cast<std::uint32_t>(std::lround(profile_->default_scan_hz * 100.0));
+  ranging_index_ = profile_->ranging_index(profile_->default_ranging_khz).value_or(0);
+  protection_ = false;
+  low_power_ = true;
+  direction_ = MotorDirection::Clockwise;
+  constant_hz_ = true;
+  saw_a5_ = false;
+  stall_from_ns_ = stall_until_ns_ = 0;
+  next_periodic_stall_ns_ = kNever;
+  pacer_->clear();
+}
+
+void VirtualLidar::log(std::int64_t t_ns, const std::string& line) const {
+  if (log_) log_(t_ns, line);
+}
+
+void VirtualLidar::receive(std::span<const std::uint8_t> bytes, std::int64_t now_ns) {
+  advance(now_ns);
+  for (const std::uint8_t byte : bytes) {
+    if (!saw_a5_) {
+      if (byte == kCommandStart) {
+        saw_a5_ = true;
+      } else {
+        ++counters_.stray_bytes;
+      }
+      continue;
+    }
+    saw_a5_ = false;
+    if (byte == kCommandStart) {  // the earlier A5 had no code: it was stray, this one starts anew
+      ++counters_.stray_bytes;
+      saw_a5_ = true;
+      continue;
+    }
+    handle_command(byte, now_ns_);
+  }
+}
+
+void VirtualLidar::handle_command(std::uint8_t code, std::int64_t now_ns) {
+  ++counters_.commands;
+  const std::optional<Command> command = command_from_code(code);
+  const std::string name = hex_command(code) + (command ? " (" + std::string(command_name(*command)) + ")" : "");
+
+  if (mode_ == DeviceMode::Scanning) {
+    if (command == Command::Stop) {
+      log(now_ns, "received " + name);
+      stop_scan(now_ns, "stopped by A5 65");
+    } else if (command == Command::Scan && protection_) {
+      ++counters_.keepalives;
+      last_keepalive_ns_ = now_ns;
+      log(now_ns, "received " + name + ": power-down protection keep-alive");
+    } else {
+      ++counters_.ignored_during_scan;
+      log(now_ns, "ignored " + name + ": only A5 65 is accepted while scanning");
+    }
+    return;
+  }
+
+  bool supported = command && profile_->supports(*command);
+  if (supported && config_.health_quirk) {
+    // The unit answers the other health command than its manual's, and not the manual's one.
+    const bool is_health = command == Command::HealthStatusBits || command == Command::HealthStatusCode;
+    if (is_health) supported = *command != profile_->health_command;
+  } else if (!supported && config_.health_quirk &&
+             (command == Command::HealthStatusBits || command == Command::HealthStatusCode)) {
+    supported = true;
+  }
+  if (!supported) {
+    ++counters_.unsupported;
+    log(now_ns, "no reply to " + name + ": the " + std::string(profile_->name) + " manual does not list it");
+    return;
+  }
+  log(now_ns, "received " + name);
+
+  const auto step_hz = [&](int centihz) {
+    const auto min = static_cast<long>(std::lround(profile_->min_scan_hz * 100.0));
+    const auto max = static_cast<long>(std::lround(profile_->max_scan_hz * 100.0));
+    scan_centihz_ = static_cast<std::uint32_t>(std::clamp(static_cast<long>(scan_centihz_) + centihz, min, max));
+    answer(*command, encode_scan_frequency({scan_centihz_}), now_ns);
+  };
+
+  switch (*command) {
+    case Command::Scan: start_scan(now_ns); break;
+    case Command::Stop: break;  // already idle: nothing to stop, and A5 65 never answers
+    case Command::DeviceInfo: answer(*command, encode_device_info(info_), now_ns); break;
+    case Command::HealthStatusBits:
+    case Command::HealthStatusCode: {
+      HealthReply health;
+      if (profile_->health_command == Command::HealthStatusBits) {
+        health.status = faults_.health_bits;
+      } else {
+        health.status = faults_.health_bits ? static_cast<std::uint8_t>(DeviceStatus::Error) : 0;
+        health.error_code = faults_.health_bits;
+      }
+      answer(*command, encode_health(health), now_ns);
+      break;
+    }
+    case Command::ScanHzUpTenth: step_hz(10); break;
+    case Command::ScanHzDownTenth: step_hz(-10); break;
+    case Command::ScanHzUpOne: step_hz(100); break;
+    case Command::ScanHzDownOne: step_hz(-100); break;
+    case Command::ScanHzGet: step_hz(0); break;
+    case Command::RangingCycle:
+      ranging_index_ = static_cast<std::uint8_t>((ranging_index_ + 1) % profile_->ranging_khz.size());
+      log(now_ns, "ranging frequency now " + std::to_string(ranging_khz()) + " kHz");
+      answer(*command, encode_one_byte(ranging_index_), now_ns);
+      break;
+    case Command::RangingGet: answer(*command, encode_one_byte(ranging_index_), now_ns); break;
+    case Command::PowerDownProtection:
+      protection_ = !protection_;
+      log(now_ns, std::string("power-down protection ") + (protection_ ? "on" : "off"));
+      answer(*command, encode_power_down_protection(protection_), now_ns);
+      break;
+    case Command::LowPowerOn:
+    case Command::LowPowerOff:
+      low_power_ = *command == Command::LowPowerOn;
+      answer(*command, encode_low_power(low_power_), now_ns);
+      break;
+    case Command::ModuleStatus:  // TG "low-power query": 01 while low power is on
+      answer(*command, encode_one_byte(low_power_ ? 1 : 0), now_ns);
+      break;
+    case Command::MotorClockwise: direction_ = MotorDirection::Clockwise; [[fallthrough]];
+    case Command::MotorDirection:
+      answer(*command, encode_motor_direction(direction_), now_ns);
+      break;
+    case Command::MotorCounterClockwise:
+      direction_ = MotorDirection::CounterClockwise;
+      answer(*command, encode_motor_direction(direction_), now_ns);
+      break;
+    case Command::ConstantHzOn:
+    case Command::ConstantHzOff:
+      constant_hz_ = *command == Command::ConstantHzOn;
+      answer(*command, encode_constant_frequency(constant_hz_), now_ns);
+      break;
+    case Command::RestartG1:
+    case Command::RestartG6TG:
+      ++counters_.restarts;
+      reset_to_power_on();
+      log(now_ns, "restarted: idle, power-on defaults");
+      break;
+  }
+}
+
+bool VirtualLidar::in_stall(std::int64_t t_ns) { return t_ns >= stall_from_ns_ && t_ns < stall_until_ns_; }
+
+void VirtualLidar::answer(Command command, std::span<const std::uint8_t> payload, std::int64_t now_ns) {
+  std::vector<std::uint8_t> bytes;
+  for (std::uint32_t i = 0; i < faults_.junk_before_reply; ++i) {
+    std::uint8_t junk = 0;
+    do {
+      junk = static_cast<std::uint8_t>(junk_random_.below(256));
+    } while (junk == kCommandStart || junk == kPacketHeader0);
+    bytes.push_back(junk);
+  }
+  const std::vector<std::uint8_t> reply = encode_reply(command, payload);
+  bytes.insert(bytes.end(), reply.begin(), reply.end());
+  if (in_stall(now_ns)) {
+    fault_counters_.stalled_bytes += bytes.size();
+    return;
+  }
+  fault_counters_.junk_bytes += faults_.junk_before_reply;
+  ++counters_.replies;
+  pacer_->enqueue(now_ns, bytes);
+}
+
+void VirtualLidar::start_scan(std::int64_t now_ns) {
+  mode_ = DeviceMode::Scanning;
+  ++counters_.scans_started;
+  scan_started_ns_ = now_ns;
+  last_keepalive_ns_ = now_ns;
+  answer(Command::Scan, {}, now_ns);
+  stream_->set_health(faults_.health_bits);
+  stream_->start(now_ns, scan_centihz_, ranging_khz());
+  next_periodic_stall_ns_ =
+      faults_.stall_ms > 0 && faults_.stall_every_ms > 0 ? now_ns + faults_.stall_every_ms * 1'000'000 : kNever;
+  log(now_ns, "scanning at " + hz_text(scan_centihz_) + ", " + std::to_string(ranging_khz()) + " kHz, " +
+                  std::to_string(stream_->samples_per_lap()) + " points per lap");
+}
+
+void VirtualLidar::stop_scan(std::int64_t now_ns, std::string_view why) {
+  mode_ = DeviceMode::Idle;
+  next_periodic_stall_ns_ = kNever;
+  pacer_->drop_unstarted(now_ns);
+  log(now_ns, "idle: " + std::string(why));
+}
+
+void VirtualLidar::advance(std::int64_t now_ns) {
+  now_ns_ = std::max(now_ns_, now_ns);
+  while (mode_ == DeviceMode::Scanning) {
+    const std::int64_t ready = stream_->next_ready_ns();
+    const std::int64_t deadline = protection_ ? last_keepalive_ns_ + kPowerDownTimeoutNs : kNever;
+    if (next_periodic_stall_ns_ <= std::min(ready, now_ns_)) {
+      stall(next_periodic_stall_ns_, faults_.stall_ms * 1'000'000);
+      next_periodic_stall_ns_ += faults_.stall_every_ms * 1'000'000;
+      continue;
+    }
+    if (deadline <= now_ns_ && deadline <= ready) {
+      ++counters_.power_down_stops;
+      stop_scan(deadline, "power-down protection: no A5 60 for 3 s");
+      break;
+    }
+    if (ready > now_ns_) break;
+    generate_packet();
+  }
+}
+
+void VirtualLidar::generate_packet() {
+  packet_.clear();
+  std::vector<LapPoint> truth_points;
+  const StreamPacket sp = stream_->next(packet_, truth_ ? &truth_points : nullptr);
+  ++counters_.packets;
+  if (sp.index == 0) ++counters_.zero_packets;
+  counters_.points += sp.lsn;
+
+  TruthPacket truth;
+  if (in_stall(sp.ready_ns)) {
+    ++fault_counters_.stalled_packets;
+    fault_counters_.stalled_bytes += packet_.size();
+    truth.lost = true;
+  } else if (sp.index != 0 && lost_random_.chance(faults_.lost_packet_rate)) {
+    ++fault_counters_.lost_packets;
+    truth.lost = true;
+  } else {
+    std::uint8_t lane_flips[2] = {0, 0};  // the checksum XORs u16 words: low and high byte lanes
+    const std::size_t samples_at = sp.packet_offset + kPacketHeaderSize;
+    for (std::size_t i = samples_at; i < packet_.size(); ++i) {
+      if (!corrupt_random_.chance(faults_.corrupt_byte_rate)) continue;
+      const auto flip = static_cast<std::uint8_t>(1u << corrupt_random_.below(8));
+      packet_[i] ^= flip;
+      lane_flips[(i - samples_at) % 2] ^= flip;
+      ++fault_counters_.corrupted_bytes;
+    }
+    if (lane_flips[0] || lane_flips[1]) {
+      ++fault_counters_.corrupted_packets;
+      truth.corrupted = true;
+    }
+    pacer_->enqueue(sp.ready_ns, packet_, sp.index == 0 ? packet_.size() : LinePacer::kNoZeroEnd);
+  }
+  if (truth_) {
+    truth.lap = sp.lap;
+    truth.index = sp.index;
+    truth.ct = sp.ct;
+    truth.ready_ns = sp.ready_ns;
+    truth.points = std::move(truth_points);
+    truth_(truth);
+  }
+}
+
+void VirtualLidar::produce(std::int64_t now_ns, std::vector<std::uint8_t>& out,
+                           std::vector<std::size_t>* zero_packet_ends) {
+  advance(now_ns);
+  const std::size_t base = out.size();
+  const std::size_t zero_base = zero_packet_ends ? zero_packet_ends->size() : 0;
+  pacer_->drain(now_ns_, out, zero_packet_ends);
+  if (faults_.drop_byte_rate > 0.0) {
+    // Remove dropped bytes in place and pull the zero-packet offsets back by the bytes removed before them.
+    std::size_t write = base;
+    std::size_t next_zero = zero_base;
+    for (std::size_t read = base; read < out.size(); ++read) {
+      const bool drop = drop_random_.chance(faults_.drop_byte_rate);
+      if (!drop) out[write++] = out[read];
+      else ++fault_counters_.dropped_bytes;
+      while (zero_packet_ends && next_zero < zero_packet_ends->size() && (*zero_packet_ends)[next_zero] == read + 1)
+        (*zero_packet_ends)[next_zero++] = write;
+    }
+    out.resize(write);
+  }
+  counters_.bytes_out += out.size() - base;
+}
+
+std::int64_t VirtualLidar::next_event_ns() const {
+  std::int64_t next = pacer_->next_completion_ns();
+  if (mode_ == DeviceMode::Scanning) {
+    next = std::min(next, stream_->next_ready_ns());
+    if (protection_) next = std::min(next, last_keepalive_ns_ + kPowerDownTimeoutNs);
+    next = std::min(next, next_periodic_stall_ns_);
+  }
+  return next;
+}
+
+void VirtualLidar::power_cycle(std::int64_t now_ns) {
+  now_ns_ = std::max(now_ns_, now_ns);
+  reset_to_power_on();
+  log(now_ns_, "power cycled: idle, power-on defaults");
+}
+
+void VirtualLidar::set_faults(const FaultConfig& faults) {
+  faults_ = faults;
+  stream_->set_health(faults_.health_bits);
+  next_periodic_stall_ns_ = mode_ == DeviceMode::Scanning && faults_.stall_ms > 0 && faults_.stall_every_ms > 0
+                                ? now_ns_ + faults_.stall_every_ms * 1'000'000
+                                : kNever;
+}
+
+void VirtualLidar::stall(std::int64_t from_ns, std::int64_t duration_ns) {
+  stall_from_ns_ = from_ns;
+  stall_until_ns_ = from_ns + duration_ns;
+  ++fault_counters_.stalls;
+  log(from_ns, "stalling for " + std::to_string(duration_ns / 1'000'000) + " ms");
+}
+
+}  // namespace ydscope
