@@ -1,0 +1,167 @@
+#include "core/record/recording_metadata.h"
+
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <sstream>
+
+namespace ydscope {
+namespace {
+
+std::string escape(std::string_view value) {
+  std::string out;
+  for (const char c : value) {
+    if (c == '\\') {
+      out += "\\\\";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string unescape(std::string_view value) {
+  std::string out;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (value[i] == '\\' && i + 1 < value.size()) {
+      ++i;
+      out += value[i] == 'n' ? '\n' : value[i];
+    } else {
+      out += value[i];
+    }
+  }
+  return out;
+}
+
+std::optional<std::uint32_t> parse_u32(std::string_view text) {
+  std::uint32_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+std::optional<double> parse_double(std::string_view text) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+std::string format_double(double value) {
+  std::array<char, 64> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return ec == std::errc() ? std::string(buffer.data(), end) : std::string("0");
+}
+
+template <typename T>
+void take(std::optional<T>& mine, const std::optional<T>& theirs) {
+  if (theirs) mine = theirs;
+}
+
+}  // namespace
+
+std::string RecordingMetadata::encode() const {
+  std::string out;
+  const auto line = [&out](std::string_view key, std::string_view value) {
+    out.append(key).append("=").append(escape(value)).append("\n");
+  };
+  if (model) line("model", *model);
+  if (baud) line("baud", std::to_string(*baud));
+  if (distance_scale) line("distance_scale", format_double(*distance_scale));
+  if (port) line("port", *port);
+  if (start_wall_time) line("start_wall_time", *start_wall_time);
+  if (model_code) line("model_code", std::to_string(*model_code));
+  if (firmware) line("firmware", *firmware);
+  if (hardware) line("hardware", std::to_string(*hardware));
+  if (serial) line("serial", *serial);
+  if (software) line("software", *software);
+  for (const auto& [key, value] : extra) line(key, value);
+  return out;
+}
+
+RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<std::string>* warnings) {
+  RecordingMetadata metadata;
+  const auto warn = [warnings](std::string message) {
+    if (warnings) warnings->push_back(std::move(message));
+  };
+  while (!text.empty()) {
+    const auto newline = text.find('\n');
+    std::string_view line = text.substr(0, newline);
+    text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
+    if (line.empty()) continue;
+    const auto eq = line.find('=');
+    if (eq == std::string_view::npos || eq == 0) {
+      warn("metadata line without key=value skipped: '" + std::string(line) + "'");
+      continue;
+    }
+    const std::string key(line.substr(0, eq));
+    const std::string value = unescape(line.substr(eq + 1));
+    const auto number = [&](std::optional<std::uint32_t>& field) {
+      if (const auto parsed = parse_u32(value)) {
+        field = parsed;
+      } else {
+        warn("metadata " + key + "='" + value + "' is not a whole number; ignored");
+      }
+    };
+    if (key == "model") {
+      metadata.model = value;
+    } else if (key == "baud") {
+      number(metadata.baud);
+    } else if (key == "distance_scale") {
+      if (const auto parsed = parse_double(value)) {
+        metadata.distance_scale = parsed;
+      } else {
+        warn("metadata distance_scale='" + value + "' is not a number; ignored");
+      }
+    } else if (key == "port") {
+      metadata.port = value;
+    } else if (key == "start_wall_time") {
+      metadata.start_wall_time = value;
+    } else if (key == "model_code") {
+      number(metadata.model_code);
+    } else if (key == "firmware") {
+      metadata.firmware = value;
+    } else if (key == "hardware") {
+      number(metadata.hardware);
+    } else if (key == "serial") {
+      metadata.serial = value;
+    } else if (key == "software") {
+      metadata.software = value;
+    } else {
+      metadata.extra[key] = value;
+    }
+  }
+  return metadata;
+}
+
+void RecordingMetadata::merge(const RecordingMetadata& later) {
+  take(model, later.model);
+  take(baud, later.baud);
+  take(distance_scale, later.distance_scale);
+  take(port, later.port);
+  take(start_wall_time, later.start_wall_time);
+  take(model_code, later.model_code);
+  take(firmware, later.firmware);
+  take(hardware, later.hardware);
+  take(serial, later.serial);
+  take(software, later.software);
+  for (const auto& [key, value] : later.extra) extra[key] = value;
+}
+
+std::string iso8601_utc_now() {
+  const auto now = std::chrono::system_clock::now();
+  const auto seconds = std::chrono::system_clock::to_time_t(now);
+  const auto millis = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm utc{};
+  ::gmtime_r(&seconds, &utc);
+  std::array<char, 96> buffer{};  // room for any int the format could print
+  std::snprintf(buffer.data(), buffer.size(), "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900,
+                utc.tm_mon + 1, utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, static_cast<int>(millis));
+  return buffer.data();
+}
+
+}  // namespace ydscope

@@ -1,0 +1,41 @@
+#pragma once
+// The metadata of a recording (see recording_format.h for the key=value encoding and the keys).
+// Every field is optional: a recording started before the device answered has no device info
+// yet, and a later metadata record fills it in.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ydscope {
+
+struct RecordingMetadata {
+  std::optional<std::string> model;  // "G1", "G6", "TG15", ...
+  std::optional<std::uint32_t> baud;
+  std::optional<double> distance_scale;  // mm per count
+  std::optional<std::string> port;
+  std::optional<std::string> start_wall_time;  // ISO 8601 UTC
+  std::optional<std::uint32_t> model_code;
+  std::optional<std::string> firmware;  // "major.minor"
+  std::optional<std::uint32_t> hardware;
+  std::optional<std::string> serial;
+  std::optional<std::string> software;
+  std::map<std::string, std::string> extra;  // keys this version does not know, kept verbatim
+
+  // key=value lines of the fields that are set (the payload of a metadata record).
+  std::string encode() const;
+  // Parses a payload. Lines without '=' and values that do not parse as their key's type are
+  // skipped with a warning (a damaged field must not hide the rest).
+  static RecordingMetadata parse(std::string_view text, std::vector<std::string>* warnings = nullptr);
+  // Fields set in `later` replace ours; the others stay.
+  void merge(const RecordingMetadata& later);
+
+  friend bool operator==(const RecordingMetadata&, const RecordingMetadata&) = default;
+};
+
+// "2026-11-22T02:20:00.123Z" for the current wall-clock time.
+std::string iso8601_utc_now();
+
+}  // namespace ydscope

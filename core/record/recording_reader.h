@@ -1,0 +1,86 @@
+#pragma once
+// RecordingReader: iterates the records of a .ydrec file (format in recording_format.h), one at
+// a time from disk, so hours of recording cost one record of memory. A file cut off inside its
+// last record (the writer was killed) reads every complete record and then reports a warning;
+// a corrupt record stops the iteration with an error sentence.
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/record/recording_format.h"
+#include "core/record/recording_metadata.h"
+
+namespace ydscope {
+
+struct RecordView {
+  RecordType type = RecordType::DeviceToHost;
+  std::int64_t t_ns = 0;                  // since the recording started
+  std::span<const std::uint8_t> payload;  // valid until the next call to next() or rewind()
+  std::uint64_t file_offset = 0;          // of the record header, for messages
+};
+
+class RecordingReader {
+ public:
+  // Checks the magic and version. Null plus one sentence in `error` for a missing file, a file
+  // that is not a recording, or a newer format version.
+  static std::unique_ptr<RecordingReader> open(const std::string& path, std::string& error);
+  ~RecordingReader();
+  RecordingReader(const RecordingReader&) = delete;
+  RecordingReader& operator=(const RecordingReader&) = delete;
+
+  // The next record of a known type (metadata records are returned too, and merged into
+  // metadata()). False at the end of the file, at a truncated tail (see warning()) or at a
+  // corrupt record (see error()).
+  bool next(RecordView& out);
+  // Back to the first record (metadata() keeps what was merged so far).
+  void rewind();
+
+  // Metadata merged from every metadata record read so far (the first record is read by open()).
+  const RecordingMetadata& metadata() const { return metadata_; }
+  // Damaged metadata fields that were skipped.
+  const std::vector<std::string>& metadata_warnings() const { return metadata_warnings_; }
+  bool truncated() const { return !warning_.empty(); }
+  // "... ends inside a record at byte N (the recorder was probably killed); the K records before it are intact"
+  const std::string& warning() const { return warning_; }
+  bool corrupt() const { return !error_.empty(); }
+  const std::string& error() const { return error_; }
+  std::uint16_t version() const { return version_; }
+  const std::string& path() const { return path_; }
+  std::uint64_t records_read() const { return records_read_; }
+
+ private:
+  RecordingReader(std::FILE* file, std::string path);
+
+  std::FILE* file_;
+  std::string path_;
+  std::uint16_t version_ = 0;
+  std::uint64_t first_record_offset_ = kFileHeaderSize;
+  std::uint64_t offset_ = 0;
+  std::uint64_t records_read_ = 0;
+  std::vector<std::uint8_t> payload_;
+  RecordingMetadata metadata_;
+  std::vector<std::string> metadata_warnings_;
+  std::string warning_;
+  std::string error_;
+};
+
+// True when the file at `path` starts with the recording magic (false if it cannot be read).
+bool is_recording_file(const std::string& path);
+
+// Totals of a whole recording, read in one pass (metadata fully merged).
+struct RecordingSummary {
+  RecordingMetadata metadata;
+  std::uint64_t records = 0;
+  std::uint64_t device_bytes = 0;
+  std::uint64_t host_bytes = 0;
+  std::int64_t duration_ns = 0;  // time of the last record
+  std::string warning;           // truncated tail
+  std::string error;             // corrupt record
+};
+std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error);
+
+}  // namespace ydscope

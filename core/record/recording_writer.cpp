@@ -1,0 +1,119 @@
+#include "core/record/recording_writer.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+namespace ydscope {
+namespace {
+
+constexpr std::size_t kBufferSize = 64 * 1024;
+
+std::string write_error_sentence(const std::string& path, const std::string& what, int errno_value) {
+  std::string sentence = "cannot " + what + " " + path + ": " + std::strerror(errno_value);
+  if (errno_value == ENOSPC) sentence += "; free some disk space and record again";
+  if (errno_value == EACCES || errno_value == EROFS) sentence += "; choose a folder you can write to";
+  if (errno_value == ENOENT) sentence += "; check that the folder exists";
+  return sentence;
+}
+
+}  // namespace
+
+RecordingWriter::RecordingWriter(std::FILE* file, std::string path, std::int64_t start_ns)
+    : file_(file), path_(std::move(path)), start_ns_(start_ns) {}
+
+RecordingWriter::~RecordingWriter() { close(); }
+
+std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path, RecordingMetadata metadata,
+                                                         std::int64_t start_ns, std::string& error) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) {
+    error = write_error_sentence(path, "create recording", errno);
+    return nullptr;
+  }
+  std::setvbuf(file, nullptr, _IOFBF, kBufferSize);
+  std::unique_ptr<RecordingWriter> writer(new RecordingWriter(file, path, start_ns));
+  const auto header = encode_file_header();
+  if (std::fwrite(header.data(), 1, header.size(), file) != header.size()) {
+    error = write_error_sentence(path, "write recording", errno);
+    return nullptr;
+  }
+  writer->file_size_ = header.size();
+  if (!metadata.start_wall_time) metadata.start_wall_time = iso8601_utc_now();
+  if (!writer->update_metadata(metadata, start_ns)) {
+    error = writer->error();
+    return nullptr;
+  }
+  return writer;
+}
+
+bool RecordingWriter::append(Direction direction, std::span<const std::uint8_t> bytes, std::int64_t t_ns) {
+  if (bytes.empty()) return !failed() && file_ != nullptr;
+  if (!write_record(static_cast<RecordType>(direction), bytes, t_ns)) return false;
+  (direction == Direction::DeviceToHost ? device_bytes_ : host_bytes_) += bytes.size();
+  if (last_t_ns_ - last_flush_t_ns_ >= kFlushInterval) return flush();
+  return true;
+}
+
+bool RecordingWriter::update_metadata(const RecordingMetadata& changes, std::int64_t t_ns) {
+  const std::string text = changes.encode();
+  const std::span<const std::uint8_t> payload(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+  if (!write_record(RecordType::Metadata, payload, t_ns)) return false;
+  metadata_.merge(changes);
+  return flush();
+}
+
+bool RecordingWriter::write_record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns) {
+  if (!file_ || failed()) return false;
+  // A read larger than the format allows is split, keeping every byte.
+  while (payload.size() > kMaxRecordPayload) {
+    if (!write_record(type, payload.first(kMaxRecordPayload), t_ns)) return false;
+    payload = payload.subspan(kMaxRecordPayload);
+  }
+  RecordHeader header;
+  header.type = static_cast<std::uint8_t>(type);
+  header.length = static_cast<std::uint32_t>(payload.size());
+  header.t_ns = std::max(last_t_ns_, t_ns - start_ns_);
+  const auto head = encode_record_header(header);
+  if (std::fwrite(head.data(), 1, head.size(), file_) != head.size() ||
+      std::fwrite(payload.data(), 1, payload.size(), file_) != payload.size()) {
+    fail("write recording", errno);
+    return false;
+  }
+  last_t_ns_ = header.t_ns;
+  file_size_ += head.size() + payload.size();
+  ++records_;
+  return true;
+}
+
+bool RecordingWriter::flush() {
+  if (!file_ || failed()) return false;
+  if (std::fflush(file_) != 0) {
+    fail("write recording", errno);
+    return false;
+  }
+  last_flush_t_ns_ = last_t_ns_;
+  return true;
+}
+
+bool RecordingWriter::close() {
+  if (!file_) return !failed();
+  const bool flushed = failed() || std::fflush(file_) == 0;
+  const int flush_errno = errno;
+  const bool closed = std::fclose(file_) == 0;
+  const int close_errno = errno;
+  file_ = nullptr;
+  if (!failed() && !flushed) fail("write recording", flush_errno);
+  if (!failed() && !closed) fail("close recording", close_errno);
+  return !failed();
+}
+
+std::uint64_t RecordingWriter::bytes(Direction direction) const {
+  return direction == Direction::DeviceToHost ? device_bytes_ : host_bytes_;
+}
+
+void RecordingWriter::fail(const std::string& what, int errno_value) {
+  error_ = write_error_sentence(path_, what, errno_value);
+}
+
+}  // namespace ydscope
