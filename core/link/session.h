@@ -12,14 +12,11 @@
 // io_context). Completion callbacks and the wake callback run on the I/O thread: keep them short.
 // The LapQueue has exactly one consumer: the thread that drains it (UI or CLI).
 #include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include <boost/asio/io_context.hpp>
 

@@ -1,0 +1,324 @@
+#include "core/link/session.h"
+
+#include <cstdio>
+#include <exception>
+
+#include <boost/asio/post.hpp>
+
+#include "core/link/device_probe.h"
+#include "core/link/session_impl.h"
+
+namespace ydscope {
+
+namespace asio = boost::asio;
+using namespace std::chrono_literals;
+
+namespace {
+constexpr auto kTickPeriod = 250ms;
+constexpr std::int64_t kRatePeriodNs = 1'000'000'000;
+constexpr std::int64_t kKeepalivePeriodNs = 1'000'000'000;  // the manuals allow up to 3 s
+}  // namespace
+
+// ---- Session: thin forwarding ---------------------------------------------------------------
+
+Session::Session(LapQueue& queue, WakeFn wake) : queue_(&queue), impl_(std::make_unique<Impl>(queue, std::move(wake))) {}
+
+Session::Session(std::size_t queue_capacity, WakeFn wake)
+    : owned_queue_(std::make_unique<LapQueue>(queue_capacity)),
+      queue_(owned_queue_.get()),
+      impl_(std::make_unique<Impl>(*owned_queue_, std::move(wake))) {}
+
+Session::~Session() = default;
+
+void Session::connect(SessionConfig config) { impl_->post_connect(std::move(config)); }
+void Session::disconnect() { impl_->post_disconnect(); }
+void Session::set_scan_hz(double target_hz, CommandCallback done) {
+  impl_->post_intent({Impl::Intent::Kind::ScanHz, target_hz, 0, false, std::move(done)});
+}
+void Session::set_ranging_khz(std::uint16_t target_khz, CommandCallback done) {
+  impl_->post_intent({Impl::Intent::Kind::RangingKhz, 0, target_khz, false, std::move(done)});
+}
+void Session::set_power_down_protection(bool on, CommandCallback done) {
+  impl_->post_intent({Impl::Intent::Kind::PowerDown, 0, 0, on, std::move(done)});
+}
+void Session::refresh_health(CommandCallback done) {
+  impl_->post_intent({Impl::Intent::Kind::Health, 0, 0, false, std::move(done)});
+}
+void Session::start_recording(std::string path, CommandCallback done) {
+  impl_->post_start_recording(std::move(path), std::move(done));
+}
+void Session::stop_recording(CommandCallback done) { impl_->post_stop_recording(std::move(done)); }
+void Session::set_distance_scale(std::optional<double> mm_per_count) { impl_->post_distance_scale(mm_per_count); }
+SessionSnapshot Session::snapshot() const { return impl_->snapshot(); }
+SessionSnapshot Session::wait_until(const std::function<bool(const SessionSnapshot&)>& done,
+                                    std::chrono::milliseconds timeout) const {
+  return impl_->wait_until(done, timeout);
+}
+
+std::string describe_snapshot(const SessionSnapshot& s) {
+  std::string text(link_state_name(s.state));
+  if (s.device && s.device->profile) text += ": " + std::string(s.device->profile->name);
+  if (!s.link.empty()) text += " on " + s.link;
+  if (!s.message.empty()) text += " (" + s.message + ")";
+  return text;
+}
+
+// ---- Impl: thread and lifetime --------------------------------------------------------------
+
+Session::Impl::Impl(LapQueue& queue, WakeFn wake)
+    : queue_(queue),
+      wake_(std::move(wake)),
+      work_(io_.get_executor()),
+      link_(io_, counters_),
+      sequencer_(link_),
+      signal_(io_),
+      tick_(io_) {
+  link_.on_fault([this] { notify(); });
+  link_.on_stream([this](std::span<const std::uint8_t> bytes, std::int64_t rx_ns) { on_stream(bytes, rx_ns); });
+  thread_ = std::thread([this] { run_thread(); });
+}
+
+Session::Impl::~Impl() {
+  asio::post(io_, [this] { shutdown(); });
+  work_.reset();
+  if (thread_.joinable()) thread_.join();
+}
+
+void Session::Impl::run_thread() {
+  start_tick();
+  // The last boundary: nothing thrown on this thread may end the program or leave it.
+  for (;;) {
+    try {
+      io_.run();
+      return;
+    } catch (const std::exception& e) {
+      set_state(LinkState::Failed, std::string("internal error on the I/O thread: ") + e.what());
+    } catch (...) {
+      set_state(LinkState::Failed, "internal error on the I/O thread");
+    }
+  }
+}
+
+void Session::Impl::shutdown() {
+  stopping_ = true;
+  disconnect_requested_ = true;
+  pending_config_.reset();
+  recorder_.stop();
+  link_.detach();
+  notify();
+  tick_.cancel();
+}
+
+// ---- intents (any thread -> I/O thread) -----------------------------------------------------
+
+void Session::Impl::post_connect(SessionConfig config) {
+  asio::post(io_, [this, config = std::move(config)]() mutable {
+    if (stopping_) return;
+    pending_config_ = std::move(config);
+    if (supervisor_running_) {
+      disconnect_requested_ = true;
+      notify();
+      return;  // the supervisor starts the pending one as it ends
+    }
+    spawn_supervisor();
+  });
+}
+
+void Session::Impl::post_disconnect() {
+  asio::post(io_, [this] {
+    pending_config_.reset();
+    if (supervisor_running_) {
+      disconnect_requested_ = true;
+      notify();
+    }
+  });
+}
+
+void Session::Impl::post_intent(Intent intent) {
+  asio::post(io_, [this, intent = std::move(intent)]() mutable {
+    const bool down = state_ == LinkState::Reconnecting || state_ == LinkState::Stalled || state_ == LinkState::Failed;
+    if (!supervisor_running_ || stopping_ || down) {
+      CommandResult result;
+      result.message = down ? "the lidar is not connected right now (" + std::string(link_state_name(state_)) + ")"
+                            : "not connected to a lidar: connect first";
+      finish(result, intent.done);
+      return;
+    }
+    intents_.push_back(std::move(intent));
+    notify();
+  });
+}
+
+void Session::Impl::post_start_recording(std::string path, CommandCallback done) {
+  asio::post(io_, [this, path = std::move(path), done = std::move(done)] {
+    CommandResult result;
+    result.what = "record to " + path;
+    RecordingMetadata metadata;
+    metadata.start_wall_time = iso8601_utc_now();
+    metadata.software = "ydscope 0.1.0";
+    if (config_) metadata.port = config_->address;
+    recorder_.stop();
+    std::string error;
+    if (recorder_.start(path, metadata, error)) {
+      link_.on_wire([this](bool outgoing, std::span<const std::uint8_t> bytes, std::int64_t ns) {
+        recorder_.bytes(outgoing, bytes, ns);
+      });
+      record_metadata();
+      result.ok = true;
+      result.message = "recording every byte to " + path;
+    } else {
+      result.message = error;
+    }
+    publish([&](SessionSnapshot& s) {
+      s.recording = recorder_.active();
+      s.recording_path = recorder_.active() ? path : std::string();
+    });
+    finish(result, done);
+  });
+}
+
+void Session::Impl::post_stop_recording(CommandCallback done) {
+  asio::post(io_, [this, done = std::move(done)] {
+    CommandResult result;
+    result.what = "stop recording";
+    result.ok = true;
+    result.message = recorder_.active() ? "recording saved to " + recorder_.path() : "was not recording";
+    link_.on_wire({});
+    recorder_.stop();
+    publish([](SessionSnapshot& s) {
+      s.recording = false;
+      s.recording_path.clear();
+    });
+    finish(result, done);
+  });
+}
+
+void Session::Impl::post_distance_scale(std::optional<double> scale) {
+  asio::post(io_, [this, scale] {
+    scale_override_ = scale;
+    if (profile_) new_decoder();
+  });
+}
+
+// ---- snapshot -------------------------------------------------------------------------------
+
+void Session::Impl::set_state(LinkState state, std::string message) {
+  state_ = state;
+  publish([&](SessionSnapshot& s) {
+    s.state = state;
+    s.message = std::move(message);
+  });
+}
+
+void Session::Impl::publish(const std::function<void(SessionSnapshot&)>& change) {
+  {
+    std::lock_guard lock(mutex_);
+    change(shared_);
+  }
+  changed_.notify_all();
+}
+
+void Session::Impl::finish(const CommandResult& result, const CommandCallback& done) {
+  publish([&](SessionSnapshot& s) {
+    s.last_result = result;
+    s.busy = false;
+    s.busy_what.clear();
+  });
+  if (done) {
+    try {
+      done(result);
+    } catch (...) {
+      // A caller's callback must not take the I/O thread down.
+    }
+  }
+}
+
+SessionSnapshot Session::Impl::snapshot() const {
+  SessionSnapshot s;
+  {
+    std::lock_guard lock(mutex_);
+    s = shared_;
+  }
+  s.counters = counters_.read(link_clock_ns());
+  s.queue_dropped = queue_.dropped_full();
+  s.queue_skipped = queue_.skipped();
+  return s;
+}
+
+SessionSnapshot Session::Impl::wait_until(const std::function<bool(const SessionSnapshot&)>& done,
+                                          std::chrono::milliseconds timeout) const {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    SessionSnapshot s = snapshot();
+    if (done(s) || std::chrono::steady_clock::now() >= deadline) return s;
+    // Counters change without a notification, so look again at least every 20 ms.
+    std::unique_lock lock(mutex_);
+    changed_.wait_until(lock, std::min(deadline, std::chrono::steady_clock::now() + 20ms));
+  }
+}
+
+// ---- the byte path --------------------------------------------------------------------------
+
+void Session::Impl::new_decoder() {
+  if (decoder_) counters_.close_decoder_epoch();
+  decoder_ = std::make_unique<ScanDecoder>(*profile_, scale_override_);
+  const double scale = decoder_->distance_scale();
+  publish([scale](SessionSnapshot& s) { s.distance_scale = scale; });
+}
+
+void Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns) {
+  if (!decoder_) return;
+  decoder_->feed(bytes, rx_ns, [this](const Lap& lap) {
+    if (!queue_.try_push(lap)) counters_.add_queue_drop();
+    if (wake_) wake_();
+  });
+  const DecoderCounters c = decoder_->counters();
+  counters_.set_decoder_totals(c.packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches);
+}
+
+// ---- the tick: rates, stall watchdog, power-down keepalive ----------------------------------
+
+void Session::Impl::start_tick() {
+  if (stopping_) return;
+  tick_.expires_after(kTickPeriod);
+  tick_.async_wait([this](const boost::system::error_code& ec) {
+    if (ec || stopping_) return;
+    on_tick();
+    start_tick();
+  });
+}
+
+void Session::Impl::on_tick() {
+  const std::int64_t now = link_clock_ns();
+  if (now - last_rate_tick_ns_ >= kRatePeriodNs) {
+    counters_.tick(now);
+    last_rate_tick_ns_ = now;
+    if (recorder_.active()) {
+      recorder_.flush();
+      const bool recording = recorder_.active();
+      const std::string error = recorder_.error();
+      publish([&](SessionSnapshot& s) {
+        s.recording = recording;
+        if (!recording && !error.empty()) s.message = "recording stopped: " + error;
+      });
+    }
+  }
+  if (state_ != LinkState::Scanning || !link_.device_scanning() || !config_) return;
+  if (power_down_wanted_ && now - last_keepalive_ns_ >= kKeepalivePeriodNs) {
+    link_.send(Command::Scan);  // the keepalive the power-down mode needs; SessionIo allows only this
+    last_keepalive_ns_ = now;
+  }
+  const std::int64_t quiet_since = std::max(counters_.last_byte_ns(), scan_started_ns_);
+  const std::int64_t stall_ns = std::chrono::nanoseconds(config_->stall_timeout).count();
+  if (now - quiet_since > stall_ns) {
+    char seconds[16];
+    std::snprintf(seconds, sizeof seconds, "%.1f", static_cast<double>(now - quiet_since) * 1e-9);
+    const std::string why = std::string("no data for ") + seconds + " s from " +
+                            (link_.link() ? link_.link()->describe() : std::string("the port")) +
+                            " while scanning: is the lidar powered and its cable seated?";
+    set_state(LinkState::Stalled, why);
+    link_.fail(why);
+  }
+}
+
+}  // namespace ydscope

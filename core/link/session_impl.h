@@ -1,0 +1,106 @@
+#pragma once
+// Session::Impl: the I/O thread's side of a Session. session.cpp holds the thread, the intents
+// and the snapshot; session_supervisor.cpp the connect / start-up / serve / reconnect coroutine.
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "core/link/command_sequencer.h"
+#include "core/link/session.h"
+#include "core/link/session_io.h"
+#include "core/link/session_recorder.h"
+#include "core/protocol/scan_decoder.h"
+
+namespace ydscope {
+
+class Session::Impl {
+ public:
+  Impl(LapQueue& queue, WakeFn wake);
+  ~Impl();
+
+  // ---- any thread -------------------------------------------------------------------------
+  void post_connect(SessionConfig config);
+  void post_disconnect();
+  struct Intent {
+    enum class Kind { ScanHz, RangingKhz, PowerDown, Health } kind;
+    double hz = 0;
+    std::uint16_t khz = 0;
+    bool on = false;
+    CommandCallback done;
+  };
+  void post_intent(Intent intent);
+  void post_start_recording(std::string path, CommandCallback done);
+  void post_stop_recording(CommandCallback done);
+  void post_distance_scale(std::optional<double> scale);
+  SessionSnapshot snapshot() const;
+  SessionSnapshot wait_until(const std::function<bool(const SessionSnapshot&)>& done,
+                             std::chrono::milliseconds timeout) const;
+
+  // ---- I/O thread ---------------------------------------------------------------------------
+ private:
+  void run_thread();
+  void shutdown();
+  void notify() { signal_.cancel(); }
+  void start_tick();
+  void on_tick();
+  void on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns);
+  void new_decoder();
+  void set_state(LinkState state, std::string message);
+  void publish(const std::function<void(SessionSnapshot&)>& change);
+  void finish(const CommandResult& result, const CommandCallback& done);
+  void fail_pending_intents(const std::string& why);
+
+  void spawn_supervisor();
+  boost::asio::awaitable<void> supervise(SessionConfig config);
+  boost::asio::awaitable<bool> connect_and_start(const SessionConfig& config, std::string& error);
+  boost::asio::awaitable<void> serve();
+  boost::asio::awaitable<void> run_intent(Intent intent);
+  boost::asio::awaitable<void> backoff(std::chrono::milliseconds duration);
+  void record_metadata();
+
+  LapQueue& queue_;
+  WakeFn wake_;
+  boost::asio::io_context io_;
+  boost::asio::executor_work_guard<boost::asio::io_context::executor_type> work_;
+  SessionCounters counters_;
+  SessionIo link_;
+  CommandSequencer sequencer_;
+  boost::asio::steady_timer signal_;  // the supervisor's wait; notify() ends it early
+  boost::asio::steady_timer tick_;    // watchdog, rates, power-down keepalive
+
+  // I/O thread only.
+  bool stopping_ = false;
+  bool supervisor_running_ = false;
+  bool disconnect_requested_ = false;
+  std::optional<SessionConfig> pending_config_;
+  std::optional<SessionConfig> config_;
+  std::deque<Intent> intents_;
+  const ModelProfile* profile_ = nullptr;
+  std::unique_ptr<ScanDecoder> decoder_;
+  std::optional<double> scale_override_;
+  bool power_down_wanted_ = false;
+  std::int64_t last_keepalive_ns_ = 0;
+  std::int64_t scan_started_ns_ = 0;
+  std::int64_t last_rate_tick_ns_ = 0;
+  LinkState state_ = LinkState::Idle;
+  SessionRecorder recorder_;
+
+  // Shared with readers.
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  SessionSnapshot shared_;
+
+  std::thread thread_;  // last: starts after everything above exists
+};
+
+}  // namespace ydscope

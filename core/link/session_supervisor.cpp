@@ -1,0 +1,359 @@
+// The supervisor coroutine of a Session: open the link, start the device up as the manuals say,
+// serve intents while laps flow, and on a fault reconnect with backoff. I/O thread only.
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <utility>  // before asio's coroutine headers, which use std::exchange without including it
+#include <vector>
+
+#include <boost/asio/co_spawn.hpp>
+#include <boost/asio/redirect_error.hpp>
+#include <boost/asio/use_awaitable.hpp>
+
+#include "core/link/device_probe.h"
+#include "core/link/link_address.h"
+#include "core/link/session_impl.h"
+
+namespace ydscope {
+
+namespace asio = boost::asio;
+using namespace std::chrono_literals;
+
+namespace {
+constexpr std::chrono::milliseconds kFirstBackoff{250};
+constexpr std::chrono::milliseconds kMaxBackoff{4000};
+
+std::string seconds_text(std::chrono::milliseconds duration) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.2g s", static_cast<double>(duration.count()) / 1000.0);
+  return text;
+}
+
+std::string baud_list(const std::vector<std::uint32_t>& bauds) {
+  std::string text;
+  for (std::size_t i = 0; i < bauds.size(); ++i) text += (i ? ", " : "") + std::to_string(bauds[i]);
+  return text;
+}
+
+std::vector<std::uint32_t> candidate_bauds(const SessionConfig& config) {
+  std::vector<std::uint32_t> bauds;
+  const auto add = [&](std::uint32_t baud) {
+    if (std::find(bauds.begin(), bauds.end(), baud) == bauds.end()) bauds.push_back(baud);
+  };
+  if (config.baud) add(*config.baud);
+  if (config.probe_baud) {
+    for (const auto baud : kProbeBauds) add(baud);
+  } else if (!config.baud) {
+    if (config.model) {
+      add(profile_for(*config.model).default_baud);
+    } else {  // unknown model: the default bauds of every model
+      for (const auto& profile : all_profiles()) add(profile.default_baud);
+    }
+  }
+  return bauds;
+}
+
+std::string intent_text(const Session::Impl::Intent& intent) {
+  switch (intent.kind) {
+    case Session::Impl::Intent::Kind::ScanHz: return "set scan frequency to " + hz_text(intent.hz);
+    case Session::Impl::Intent::Kind::RangingKhz: return "set ranging frequency to " + std::to_string(intent.khz) + " kHz";
+    case Session::Impl::Intent::Kind::PowerDown:
+      return std::string("turn power-down protection ") + (intent.on ? "on" : "off");
+    case Session::Impl::Intent::Kind::Health: return "read health";
+  }
+  return "command";
+}
+}  // namespace
+
+void Session::Impl::spawn_supervisor() {
+  SessionConfig config = std::move(*pending_config_);
+  pending_config_.reset();
+  config_ = config;
+  supervisor_running_ = true;
+  disconnect_requested_ = false;
+  asio::co_spawn(io_, supervise(std::move(config)), [this](std::exception_ptr error) {
+    supervisor_running_ = false;
+    link_.detach();
+    if (error) {
+      std::string why = "internal error in the session";
+      try {
+        std::rethrow_exception(error);
+      } catch (const std::exception& e) {
+        why += std::string(": ") + e.what();
+      } catch (...) {
+      }
+      set_state(LinkState::Failed, why);
+    }
+    fail_pending_intents("the session ended");
+    if (pending_config_ && !stopping_) spawn_supervisor();
+  });
+}
+
+asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
+  sequencer_.configure(config.reply_timeout, config.command_attempts);
+  auto delay = kFirstBackoff;
+  while (!disconnect_requested_ && !stopping_) {
+    std::string error;
+    if (co_await connect_and_start(config, error)) {
+      delay = kFirstBackoff;
+      co_await serve();
+      if (disconnect_requested_ || stopping_) break;
+      error = link_.fault().empty() ? "the link closed" : link_.fault();
+    }
+    link_.detach();
+    fail_pending_intents(error);
+    if (disconnect_requested_ || stopping_) break;
+    if (!config.reconnect) {
+      set_state(LinkState::Failed, error);
+      co_return;
+    }
+    set_state(LinkState::Reconnecting, error + "; retrying in " + seconds_text(delay));
+    co_await backoff(delay);
+    counters_.add_reconnect();
+    delay = std::min(delay * 2, kMaxBackoff);
+  }
+  if (link_.attached() && !stopping_) {
+    if (link_.device_scanning()) {  // leave the lidar stopped, as we found it
+      link_.stop_stream();
+      link_.send(Command::Stop);
+      co_await link_.sleep(30ms);
+    }
+  }
+  link_.detach();
+  if (!stopping_) set_state(LinkState::Idle, "disconnected");
+}
+
+asio::awaitable<void> Session::Impl::backoff(std::chrono::milliseconds duration) {
+  const auto deadline = std::chrono::steady_clock::now() + duration;
+  while (!disconnect_requested_ && !stopping_ && std::chrono::steady_clock::now() < deadline) {
+    signal_.expires_at(deadline);
+    boost::system::error_code ec;
+    co_await signal_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+  }
+}
+
+asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& config, std::string& error) {
+  set_state(LinkState::Connecting, "opening " + config.address);
+  const std::vector<std::uint32_t> bauds = candidate_bauds(config);
+  std::unique_ptr<ByteLink> opened = config.open_link ? config.open_link(io_, bauds.front(), error)
+                                                      : open_byte_link(io_, config.address, bauds.front(), error);
+  if (!opened) {
+    if (error.empty()) error = "cannot open " + config.address;
+    co_return false;
+  }
+  const bool commands = opened->accepts_commands();
+  link_.attach(std::move(opened));
+  const auto publish_link = [this](std::uint32_t baud) {
+    const std::string text = link_.link() ? link_.link()->describe() : std::string();
+    publish([&](SessionSnapshot& s) {
+      s.link = text;
+      s.baud = baud;
+    });
+  };
+  publish_link(bauds.front());
+
+  if (!commands) {  // a replay: nothing to ask, decode what comes
+    profile_ = &profile_for(config.model.value_or(Model::G6));
+    new_decoder();
+    publish([this](SessionSnapshot& s) {
+      s.device = DeviceDetails{};
+      s.device->profile = profile_;
+    });
+    link_.listen_stream();
+    scan_started_ns_ = link_clock_ns();
+    set_state(LinkState::Scanning, "");
+    co_return true;
+  }
+
+  set_state(LinkState::Probing, "asking " + link_.link()->describe() + " for its device info");
+  sequencer_.reset_device();
+  Step<DeviceInfo> info;
+  std::uint32_t baud = bauds.front();
+  for (std::size_t i = 0; i < bauds.size(); ++i) {
+    if (disconnect_requested_ || stopping_) co_return false;
+    if (i > 0) {
+      if (!link_.link()->set_baud(bauds[i], error)) co_return false;
+      publish_link(bauds[i]);
+    }
+    co_await sequencer_.pause_scan(true);  // a device left scanning answers nothing else
+    info = co_await sequencer_.device_info();
+    if (info.ok()) {
+      baud = bauds[i];
+      break;
+    }
+    if (info.link_lost) break;
+  }
+  if (!info.ok()) {
+    if (bauds.size() > 1 && !info.link_lost)
+      error = "no device-info reply (A5 90) at any of " + baud_list(bauds) + " baud on " + config.address +
+              ": is it a G1, G6 or TG lidar, powered, on this port?";
+    else
+      error = info.error;
+    co_return false;
+  }
+  std::string note;
+  profile_ = choose_profile(config.model, info.value->model_code, note);
+  if (!profile_) {
+    error = note;
+    co_return false;
+  }
+  new_decoder();
+  const DeviceDetails details = make_device_details(*info.value, *profile_);
+  publish([&](SessionSnapshot& s) {
+    s.device = details;
+    s.baud = baud;
+  });
+
+  // The rest of start-up is informative: a model without an answer still scans.
+  const auto health = co_await sequencer_.health(*profile_);
+  if (health.link_lost) co_return false;
+  const auto scan_hz = co_await sequencer_.scan_hz();
+  if (scan_hz.link_lost) co_return false;
+  const auto ranging = co_await sequencer_.ranging_khz(*profile_);
+  if (ranging.link_lost) co_return false;
+  std::optional<bool> protection;
+  if (power_down_wanted_) {  // a replugged device is back to its default (off)
+    const auto step = co_await sequencer_.power_down_protection(true);
+    if (step.link_lost) co_return false;
+    protection = step.value;
+  }
+  link_.allow_scan_keepalive(protection.value_or(false));
+  publish([&](SessionSnapshot& s) {
+    s.health = health.value;
+    s.scan_hz = scan_hz.value;
+    s.ranging_khz = ranging.value;
+    s.power_down_protection = protection;
+  });
+  record_metadata();
+  if (!health.ok() && note.empty()) note = "health: " + health.error;
+
+  if (!config.scan) {
+    set_state(LinkState::Ready, note);
+    co_return true;
+  }
+  scan_started_ns_ = last_keepalive_ns_ = link_clock_ns();
+  if (!link_.start_stream()) {
+    error = "could not send A5 60 to " + config.address;
+    co_return false;
+  }
+  set_state(LinkState::Scanning, note);
+  co_return true;
+}
+
+asio::awaitable<void> Session::Impl::serve() {
+  while (!disconnect_requested_ && !stopping_ && link_.attached() && link_.fault().empty()) {
+    if (!intents_.empty()) {
+      Intent intent = std::move(intents_.front());
+      intents_.pop_front();
+      co_await run_intent(std::move(intent));
+      continue;
+    }
+    signal_.expires_at(asio::steady_timer::time_point::max());
+    boost::system::error_code ec;
+    co_await signal_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+  }
+}
+
+asio::awaitable<void> Session::Impl::run_intent(Intent intent) {
+  CommandResult result;
+  result.what = intent_text(intent);
+  publish([&](SessionSnapshot& s) {
+    s.busy = true;
+    s.busy_what = result.what;
+  });
+  if (!profile_ || !link_.attached()) {
+    result.message = "not connected to a lidar: connect first";
+    finish(result, intent.done);
+    co_return;
+  }
+  const bool scanning = state_ == LinkState::Scanning;
+  if (scanning) set_state(LinkState::CommandInProgress, result.what);
+  const bool was_scanning = co_await sequencer_.pause_scan();
+  bool lost = false;
+  const auto settle = [&](const auto& step, const std::string& success) {
+    result.ok = step.ok();
+    result.message = step.ok() ? success : step.error;
+    lost = step.link_lost;
+  };
+  switch (intent.kind) {
+    case Intent::Kind::ScanHz: {
+      const auto step = co_await sequencer_.step_scan_hz(*profile_, intent.hz);
+      result.scan_hz = step.value;
+      settle(step, step.value ? "scan frequency reads back " + hz_text(*step.value) : "");
+      if (step.value) publish([&](SessionSnapshot& s) { s.scan_hz = step.value; });
+      break;
+    }
+    case Intent::Kind::RangingKhz: {
+      const auto step = co_await sequencer_.cycle_ranging_to(*profile_, intent.khz);
+      result.ranging_khz = step.value;
+      settle(step, step.value ? "ranging frequency reads back " + std::to_string(*step.value) + " kHz" : "");
+      if (step.value) publish([&](SessionSnapshot& s) { s.ranging_khz = step.value; });
+      break;
+    }
+    case Intent::Kind::PowerDown: {
+      const auto step = co_await sequencer_.power_down_protection(intent.on);
+      result.power_down_protection = step.value;
+      settle(step, std::string("power-down protection is ") + (intent.on ? "on" : "off"));
+      if (step.value) {
+        power_down_wanted_ = *step.value;
+        link_.allow_scan_keepalive(*step.value);
+        publish([&](SessionSnapshot& s) { s.power_down_protection = step.value; });
+      }
+      break;
+    }
+    case Intent::Kind::Health: {
+      const auto step = co_await sequencer_.health(*profile_);
+      result.health = step.value;
+      settle(step, step.value ? "health: " + step.value->summary : "");
+      if (step.value) publish([&](SessionSnapshot& s) { s.health = step.value; });
+      break;
+    }
+  }
+  if (lost || !link_.attached()) {
+    result.ok = false;
+    finish(result, intent.done);
+    co_return;  // serve() sees the fault; the supervisor reconnects
+  }
+  if (was_scanning) {
+    new_decoder();  // the lap cut by the stop is not a lap
+    scan_started_ns_ = last_keepalive_ns_ = link_clock_ns();
+    if (!sequencer_.resume_scan(true)) {
+      result.ok = false;
+      result.message += "; and A5 60 could not be sent to resume the scan";
+    }
+  }
+  if (scanning) set_state(LinkState::Scanning, "");
+  finish(result, intent.done);
+}
+
+void Session::Impl::fail_pending_intents(const std::string& why) {
+  while (!intents_.empty()) {
+    Intent intent = std::move(intents_.front());
+    intents_.pop_front();
+    CommandResult result;
+    result.what = intent_text(intent);
+    result.message = "not done: " + why;
+    finish(result, intent.done);
+  }
+}
+
+void Session::Impl::record_metadata() {
+  if (!recorder_.active()) return;
+  RecordingMetadata metadata;
+  if (config_) metadata.port = config_->address;
+  const SessionSnapshot s = snapshot();
+  if (s.baud) metadata.baud = s.baud;
+  if (decoder_) metadata.distance_scale = decoder_->distance_scale();
+  if (s.device && s.device->profile) {
+    metadata.model = std::string(s.device->profile->name);
+    if (s.device->model_code) {
+      metadata.model_code = s.device->model_code;
+      metadata.firmware = std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor);
+      metadata.hardware = s.device->hardware;
+      metadata.serial = s.device->serial;
+    }
+  }
+  recorder_.metadata(metadata);
+}
+
+}  // namespace ydscope
