@@ -1,0 +1,268 @@
+#include "app/gui/app.h"
+
+#include <cstdio>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "app/gui/screenshot.h"
+#include "ui/panels/panels.h"
+#include "ui/render/gl.h"
+#include "ui/render/theme.h"
+#include "ui/view/health_names.h"
+
+namespace ydscope::gui {
+namespace {
+
+std::int64_t steady_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
+    : window_(window),
+      options_(options),
+      persist_(persist_settings),
+      session_(16, [] { glfwPostEmptyEvent(); }),
+      source_(session_),
+      view_(std::make_unique<ui::PolarView>()),
+      start_(std::chrono::steady_clock::now()),
+      last_frame_(start_) {
+  const auto dir = ui::config_directory();
+  if (persist_ && !dir.empty()) {
+    settings_path_ = (dir / "settings.ini").string();
+    imgui_ini_path_ = (dir / "imgui.ini").string();
+    settings_ = ui::load_settings(settings_path_);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    ImGui::GetIO().IniFilename = imgui_ini_path_.c_str();
+  } else {
+    ImGui::GetIO().IniFilename = nullptr;  // screenshot runs must not depend on a user's layout
+  }
+  if (options_.fullscreen) {
+    settings_.show_panels = false;
+    toggle_fullscreen();
+  }
+  history_.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
+  std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", settings_.last_replay_file.c_str());
+  model_.ports = discover_ports();
+}
+
+App::~App() {
+  source_.stop();
+  if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
+}
+
+std::string App::start_source() {
+  ui::ConnectRequest request;
+  switch (options_.source) {
+    case SourceKind::Auto:
+      model_.banner = source_.start_auto();
+      model_.source_text = source_.description();
+      return {};
+    case SourceKind::Port:
+      request.kind = ui::ConnectRequest::Kind::Port;
+      request.address = options_.port;
+      if (options_.model && *options_.model != "auto") request.model = options_.model;
+      if (options_.baud) request.baud = *options_.baud;
+      break;
+    case SourceKind::Sim:
+      request.kind = ui::ConnectRequest::Kind::Sim;
+      request.model = options_.model;
+      request.scene = options_.scene;
+      break;
+    case SourceKind::Replay:
+      request.kind = ui::ConnectRequest::Kind::Replay;
+      request.address = options_.replay_file;
+      settings_.last_replay_file = options_.replay_file;
+      break;
+  }
+  const std::string error = source_.start(request);
+  model_.source_text = source_.description();
+  model_.sim_active = source_.sim_active();
+  model_.replay.available = source_.replay_active();
+  return error;
+}
+
+void App::drain_laps() {
+  const std::size_t drained = session_.laps().drain_newest(lap_);
+  model_.laps_skipped = session_.laps().skipped();
+  if (drained == 0 || model_.paused_view) return;
+  history_.push(lap_);
+  view_->invalidate();
+  ++model_.laps_shown;
+  model_.scan_rate.add_lap_end(lap_.last_rx_ns);
+  model_.points_in_lap = lap_.points.size();
+  pending_latency_rx_ns_ = lap_.last_rx_ns;
+  if (lap_.health_bits) {
+    model_.ct_health = lap_.health_bits;
+    model_.ct_health_trusted = lap_.ct_info_trusted();
+    if (lap_.ct_info_trusted()) {
+      model_.timeline.observe("CT health", *lap_.health_bits, model_.now_s, ui::describe_health_bits(Model::G1, *lap_.health_bits));
+    }
+  }
+  if (lap_.crc == CrcVerdict::Mismatch) ++model_.crc_mismatch_laps;
+}
+
+void App::update_model() {
+  model_.now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  model_.snap = session_.snapshot();
+  model_.sim_active = source_.sim_active();
+  const SessionSnapshot& s = model_.snap;
+  model_.timeline.observe("link", static_cast<std::uint32_t>(s.state), model_.now_s, std::string(link_state_name(s.state)));
+  if (s.health) {
+    const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;
+    const char* source = s.health->command == Command::HealthStatusBits ? "A5 92" : "A5 91";
+    std::string text = ui::reports_health_bits(m) ? ui::describe_health_bits(m, s.health->status)
+                                                  : std::string(ui::health_status_info(s.health->status).name);
+    const std::uint32_t value = static_cast<std::uint32_t>(s.health->status) << 16 | s.health->error_code;
+    if (!ui::reports_health_bits(m) && s.health->error_code) {
+      char code[24];
+      std::snprintf(code, sizeof code, ", error 0x%04X", static_cast<unsigned>(s.health->error_code));
+      text += code;
+    }
+    model_.timeline.observe(source, value, model_.now_s, text);
+  }
+}
+
+void App::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggle_fullscreen();
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false)) settings_.show_panels = !settings_.show_panels;
+  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model_.reset_view_request = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) settings_.auto_range = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) model_.paused_view = !model_.paused_view;
+  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) model_.screenshot_request = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) && io.KeyCtrl) quit_ = true;
+}
+
+void App::toggle_fullscreen() {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (!fullscreen_) {
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return;
+    glfwGetWindowPos(window_, &windowed_[0], &windowed_[1]);
+    glfwGetWindowSize(window_, &windowed_[2], &windowed_[3]);
+    glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    fullscreen_ = true;
+    settings_.show_panels = false;
+  } else {
+    glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3], 0);
+    fullscreen_ = false;
+    settings_.show_panels = true;
+  }
+}
+
+void App::frame() {
+  const auto now = std::chrono::steady_clock::now();
+  model_.frame_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
+  last_frame_ = now;
+
+  drain_laps();
+  update_model();
+  if (static_cast<int>(history_.depth()) != settings_.persistence_laps) {
+    history_.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
+    view_->invalidate();
+  }
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  handle_keys();
+
+  int win_w = 0, win_h = 0, fb_w = 0, fb_h = 0;
+  glfwGetWindowSize(window_, &win_w, &win_h);
+  glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+  const float fb_scale = win_w > 0 ? static_cast<float>(fb_w) / static_cast<float>(win_w) : 1.0f;
+
+  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_, session_) : 0.0f;
+  const float view_w = static_cast<float>(win_w) - sidebar;
+  view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
+  view_->handle_input(settings_);
+  if (model_.reset_view_request) {
+    view_->reset(settings_);
+    model_.reset_view_request = false;
+  }
+  view_->auto_range(history_, settings_);
+  model_.cloud = view_->update_cloud(history_, settings_);
+  model_.points_drawn_total = view_->vertex_count();
+  ui::draw_view_header(model_, sidebar, view_w);
+
+  glViewport(0, 0, fb_w, fb_h);
+  glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
+  glClear(GL_COLOR_BUFFER_BIT);
+  view_->draw(history_, settings_, fb_scale, fb_h);
+  ImGui::Render();
+  glViewport(0, 0, fb_w, fb_h);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  carry_out_requests(fb_w, fb_h);
+}
+
+void App::after_present() {
+  if (pending_latency_rx_ns_ != 0) {
+    model_.latency_ms.add(static_cast<double>(steady_ns() - pending_latency_rx_ns_) * 1e-6);
+    pending_latency_rx_ns_ = 0;
+  }
+}
+
+void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
+  ui::UiModel& m = model_;
+  if (m.screenshot_request) {
+    m.screenshot_request = false;
+    const std::string path = timestamped_name("png");
+    const std::string error = save_framebuffer_png(path, framebuffer_width, framebuffer_height);
+    m.status_message = error.empty() ? "saved " + path : error;
+  }
+  if (m.csv_request) {
+    m.csv_request = false;
+    if (history_.empty()) {
+      m.status_message = "no lap to export yet.";
+    } else {
+      const std::string path = timestamped_name("csv");
+      const std::string error = export_lap_csv(path, lap_);
+      m.status_message = error.empty() ? "exported lap " + std::to_string(lap_.index) + " to " + path : error;
+    }
+  }
+  if (m.refresh_ports_request) {
+    m.refresh_ports_request = false;
+    m.ports = discover_ports();
+  }
+  if (m.disconnect_request) {
+    m.disconnect_request = false;
+    source_.stop();
+    m.source_text.clear();
+    m.banner.clear();
+  }
+  if (m.connect_request) {
+    const ui::ConnectRequest request = *m.connect_request;
+    m.connect_request.reset();
+    if (request.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = request.address;
+    const std::string error = source_.start(request);
+    m.status_message = error;
+    m.source_text = source_.description();
+    m.banner.clear();
+    m.scan_rate.reset();
+    history_.clear();
+    view_->invalidate();
+    m.replay.available = source_.replay_active();
+  }
+  if (m.sim_faults_request) {
+    if (SimServer* sim = source_.sim()) sim->set_faults(*m.sim_faults_request);
+    m.sim_faults_request.reset();
+  }
+  if (m.sim_unplug_request) {
+    m.sim_unplug_request = false;
+    if (SimServer* sim = source_.sim()) sim->unplug();
+  }
+  if (m.sim_replug_request) {
+    m.sim_replug_request = false;
+    if (SimServer* sim = source_.sim()) sim->replug();
+  }
+}
+
+}  // namespace ydscope::gui

@@ -1,0 +1,67 @@
+#pragma once
+// The desktop app's state and one frame of work: drain the lap queue, update what the panels show,
+// draw the polar view and the panels, and carry out what the user asked for.
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "app/gui/app_options.h"
+#include "app/gui/lidar_source.h"
+#include "core/link/session.h"
+#include "ui/panels/ui_model.h"
+#include "ui/render/polar_view.h"
+#include "ui/view/lap_history.h"
+#include "ui/view/settings.h"
+
+struct GLFWwindow;
+
+namespace ydscope::gui {
+
+class App {
+ public:
+  App(GLFWwindow* window, const AppOptions& options, bool persist_settings);
+  ~App();
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  // Starts the source the command line named (or the automatic choice). Empty, or one sentence.
+  std::string start_source();
+  // One frame: input, drain, draw (ImGui frame included). Does not swap buffers.
+  void frame();
+  // After the swap: latency of the laps this frame showed.
+  void after_present();
+
+  std::uint64_t laps_shown() const { return model_.laps_shown; }
+  const std::string& last_error() const { return model_.status_message; }
+  // The current lap, for the CSV export.
+  const Lap& current_lap() const { return lap_; }
+  bool quit_requested() const { return quit_; }
+
+ private:
+  void drain_laps();
+  void update_model();
+  void handle_keys();
+  void carry_out_requests(int framebuffer_width, int framebuffer_height);
+  void toggle_fullscreen();
+
+  GLFWwindow* window_;
+  AppOptions options_;
+  bool persist_;
+  std::string settings_path_;
+  std::string imgui_ini_path_;
+  ui::ViewSettings settings_;
+  ui::UiModel model_;
+  Session session_;
+  LidarSource source_;
+  ui::LapHistory history_;
+  Lap lap_;
+  std::unique_ptr<ui::PolarView> view_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_frame_;
+  std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
+  bool quit_ = false;
+  bool fullscreen_ = false;
+  int windowed_[4] = {100, 100, 1280, 800};
+};
+
+}  // namespace ydscope::gui

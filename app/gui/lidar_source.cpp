@@ -1,0 +1,101 @@
+#include "app/gui/lidar_source.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/protocol/model_profile.h"
+
+namespace ydscope::gui {
+namespace {
+
+// The virtual lidar's pty gets a stable symlink, so the session can reopen it after an unplug
+// (a replug makes a new /dev/pts/N and re-points the link).
+std::string sim_link_path() {
+  const char* runtime = std::getenv("XDG_RUNTIME_DIR");
+  const std::filesystem::path dir = runtime && *runtime ? runtime : std::filesystem::temp_directory_path().string();
+  return (dir / ("ydscope-sim-" + std::to_string(getpid()))).string();
+}
+
+}  // namespace
+
+LidarSource::~LidarSource() { stop(); }
+
+void LidarSource::stop() {
+  session_.disconnect();
+  if (sim_) {
+    sim_->stop();
+    sim_.reset();
+  }
+  replay_ = false;
+  description_.clear();
+}
+
+std::string LidarSource::start(const ui::ConnectRequest& request) {
+  stop();
+  SessionConfig config;
+  switch (request.kind) {
+    case ui::ConnectRequest::Kind::Port: {
+      config.address = request.address;
+      if (request.model) {
+        const ModelProfile* profile = find_profile(*request.model);
+        if (!profile) return "unknown model " + *request.model + "; choose one of " + std::string(model_names()) + ".";
+        config.model = profile->model;
+      }
+      config.baud = request.baud;
+      // Without a fixed model or baud, find the baud by asking for device info at each candidate.
+      config.probe_baud = !request.model && !request.baud;
+      description_ = request.address;
+      break;
+    }
+    case ui::ConnectRequest::Kind::Sim: {
+      const ModelProfile* profile = find_profile(request.model.value_or("G6"));
+      if (!profile) return "unknown model " + request.model.value_or("") + "; choose one of " + std::string(model_names()) + ".";
+      SimServerOptions options;
+      options.device.model = profile->model;
+      options.device.scene = request.scene;
+      options.device.faults = request.faults;
+      options.device.seed = 7;
+      options.transport = SimTransport::Pty;
+      options.pty_link = sim_link_path();
+      try {
+        sim_ = std::make_unique<SimServer>(options);
+        sim_->start();
+      } catch (const std::exception& e) {
+        sim_.reset();
+        return std::string("the virtual lidar did not start: ") + e.what();
+      }
+      config.address = sim_->link_path().empty() ? sim_->device_path() : sim_->link_path();
+      config.model = profile->model;
+      description_ = "virtual " + std::string(profile->name) + " (" + request.scene + " scene) on " + sim_->device_path();
+      break;
+    }
+    case ui::ConnectRequest::Kind::Replay:
+      return "replay of " + request.address + " is not available in this build yet.";
+  }
+  session_.connect(config);
+  return {};
+}
+
+std::string LidarSource::start_auto() {
+  const std::vector<ui::PortEntry> ports = discover_ports();
+  if (!ports.empty()) {
+    ui::ConnectRequest request;
+    request.kind = ui::ConnectRequest::Kind::Port;
+    request.address = ports.front().path;
+    if (start(request).empty()) return {};
+  }
+  ui::ConnectRequest sim;
+  sim.kind = ui::ConnectRequest::Kind::Sim;
+  sim.model = "G6";
+  sim.scene = "demo";
+  const std::string error = start(sim);
+  if (!error.empty()) return "No lidar found, and " + error;
+  return "No lidar found \xE2\x80\x94 showing the virtual G6 (demo scene)";
+}
+
+std::vector<ui::PortEntry> discover_ports() { return {}; }
+
+}  // namespace ydscope::gui

@@ -1,0 +1,42 @@
+#pragma once
+// Where the app's bytes come from: a port the user names, the first lidar found, the virtual lidar
+// started in-process on a pseudo-terminal, or a recording. Whatever it is, the Session reads it
+// through the same path a real serial port uses.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/link/session.h"
+#include "core/sim/sim_server.h"
+#include "ui/panels/ui_model.h"
+
+namespace ydscope::gui {
+
+class LidarSource {
+ public:
+  explicit LidarSource(Session& session) : session_(session) {}
+  ~LidarSource();
+
+  // Starts the request; on failure leaves the session idle and returns one sentence.
+  std::string start(const ui::ConnectRequest& request);
+  // No source named: the first lidar the port discovery finds, else the virtual G6 (demo scene).
+  // Returns the banner to show (empty when a real lidar was found).
+  std::string start_auto();
+  void stop();
+
+  std::string description() const { return description_; }
+  bool sim_active() const { return sim_ != nullptr; }
+  SimServer* sim() { return sim_.get(); }
+  bool replay_active() const { return replay_; }
+
+ private:
+  Session& session_;
+  std::unique_ptr<SimServer> sim_;
+  std::string description_;
+  bool replay_ = false;
+};
+
+// Candidate serial ports with their USB names, for the Connection panel.
+std::vector<ui::PortEntry> discover_ports();
+
+}  // namespace ydscope::gui

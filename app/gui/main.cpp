@@ -1,0 +1,124 @@
+// ydscope: the desktop window. main owns GLFW, the GL context, ImGui and the loop; App does a frame.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "app/gui/app.h"
+#include "app/gui/app_options.h"
+#include "app/gui/screenshot.h"
+#include "ui/render/theme.h"
+
+namespace {
+
+void on_glfw_error(int code, const char* description) { std::fprintf(stderr, "ydscope: GLFW error %d: %s\n", code, description); }
+
+int run(const ydscope::gui::AppOptions& options) {
+  using namespace ydscope::gui;
+  glfwSetErrorCallback(on_glfw_error);
+  if (!glfwInit()) {
+    std::fprintf(stderr, "ydscope: cannot open a window: no display (is DISPLAY set? under CI use xvfb-run).\n");
+    return 1;
+  }
+  const bool screenshot_mode = !options.screenshot_path.empty();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 0);
+  GLFWwindow* window = glfwCreateWindow(1280, 800, "ydscope", nullptr, nullptr);
+  if (!window) {
+    std::fprintf(stderr, "ydscope: cannot create an OpenGL 3.3 core window; try LIBGL_ALWAYS_SOFTWARE=1 for Mesa's software renderer.\n");
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  // Screenshot runs go as fast as laps arrive; interactive runs follow the display.
+  glfwSwapInterval(screenshot_mode ? 0 : 1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  float scale_x = 1.0f, scale_y = 1.0f;
+  glfwGetWindowContentScale(window, &scale_x, &scale_y);
+  ydscope::ui::apply_theme(scale_x);
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exit_code = 0;
+  {
+    std::unique_ptr<App> app;
+    try {
+      app = std::make_unique<App>(window, options, !screenshot_mode);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ydscope: %s\n", e.what());
+      exit_code = 1;
+    }
+    if (app) {
+      if (const std::string error = app->start_source(); !error.empty()) {
+        std::fprintf(stderr, "ydscope: %s\n", error.c_str());
+        if (screenshot_mode) exit_code = 1;
+      }
+      // Screenshot mode: at least N frames, and at least a few laps drawn, but never forever.
+      constexpr std::uint64_t kLapsBeforeScreenshot = 5;
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+      int frames = 0;
+      while (exit_code == 0 && !glfwWindowShouldClose(window) && !app->quit_requested()) {
+        // Wait for input or the session's wake-up; the timeout keeps the statistics ticking.
+        glfwWaitEventsTimeout(screenshot_mode ? 0.02 : 0.25);
+        app->frame();
+        ++frames;
+        if (screenshot_mode) {
+          const bool enough = frames >= options.frames && app->laps_shown() >= kLapsBeforeScreenshot;
+          const bool timed_out = std::chrono::steady_clock::now() > deadline;
+          if (enough || timed_out) {
+            int w = 0, h = 0;
+            glfwGetFramebufferSize(window, &w, &h);
+            const std::string error = save_framebuffer_png(options.screenshot_path, w, h);
+            if (!error.empty()) {
+              std::fprintf(stderr, "ydscope: %s\n", error.c_str());
+              exit_code = 1;
+            } else if (!enough) {
+              std::fprintf(stderr, "ydscope: only %llu laps arrived in 30 s; the screenshot was saved anyway.\n",
+                           static_cast<unsigned long long>(app->laps_shown()));
+              exit_code = 1;
+            }
+            break;
+          }
+        }
+        glfwSwapBuffers(window);
+        app->after_present();
+      }
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exit_code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  ydscope::gui::AppOptions options;
+  try {
+    options = ydscope::gui::parse_app_options(args);
+  } catch (const ydscope::gui::OptionsError& e) {
+    std::fprintf(stderr, "ydscope: %s\n", e.what());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(ydscope::gui::kAppHelp, stdout);
+    return 0;
+  }
+  return run(options);
+}

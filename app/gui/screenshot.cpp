@@ -1,0 +1,64 @@
+#include "app/gui/screenshot.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <vector>
+
+#include <stb_image_write.h>
+#include <unistd.h>
+
+#include "ui/render/gl.h"
+
+namespace ydscope::gui {
+
+std::string save_framebuffer_png(const std::string& path, int width, int height) {
+  if (width <= 0 || height <= 0) return "the window has no pixels to save (minimised?).";
+  const auto w = static_cast<std::size_t>(width);
+  const auto h = static_cast<std::size_t>(height);
+  std::vector<unsigned char> pixels(w * h * 3);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  // GL rows run bottom-up; PNG rows top-down.
+  std::vector<unsigned char> flipped(pixels.size());
+  for (std::size_t row = 0; row < h; ++row) {
+    std::memcpy(&flipped[row * w * 3], &pixels[(h - 1 - row) * w * 3], w * 3);
+  }
+  if (!stbi_write_png(path.c_str(), width, height, 3, flipped.data(), width * 3)) {
+    return "could not write " + path + ": " + std::strerror(errno) + "; is the folder writable?";
+  }
+  return {};
+}
+
+std::string export_lap_csv(const std::string& path, const Lap& lap) {
+  std::ofstream out(path);
+  if (!out) return "could not create " + path + ": " + std::strerror(errno) + ".";
+  out << "angle_deg,range_mm,flag\n";
+  char line[64];
+  for (const LapPoint& p : lap.points) {
+    std::snprintf(line, sizeof line, "%.3f,%.1f,%u\n", static_cast<double>(p.angle_deg),
+                  static_cast<double>(p.range_mm), static_cast<unsigned>(p.flag));
+    out << line;
+  }
+  if (!out) return "writing " + path + " failed: " + std::strerror(errno) + ".";
+  return {};
+}
+
+std::string timestamped_name(const char* extension) {
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+  std::string name = std::string("ydscope-") + stamp + "." + extension;
+  if (access(".", W_OK) != 0) {
+    if (const char* home = std::getenv("HOME")) name = std::string(home) + "/" + name;
+  }
+  return name;
+}
+
+}  // namespace ydscope::gui

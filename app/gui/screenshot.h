@@ -1,0 +1,19 @@
+#pragma once
+// Saving what the window shows: the framebuffer as PNG, and the current lap as CSV.
+#include <string>
+
+#include "core/protocol/lap.h"
+
+namespace ydscope::gui {
+
+// Reads the current framebuffer (after rendering, before the swap) and writes it as PNG.
+// Returns an empty string on success, otherwise one sentence saying what failed.
+std::string save_framebuffer_png(const std::string& path, int width, int height);
+
+// One line per point: angle_deg,range_mm,flag. Empty string on success, otherwise a sentence.
+std::string export_lap_csv(const std::string& path, const Lap& lap);
+
+// "ydscope-20261122-021500.png" in the current directory (or $HOME when it is not writable).
+std::string timestamped_name(const char* extension);
+
+}  // namespace ydscope::gui

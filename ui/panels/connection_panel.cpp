@@ -1,0 +1,220 @@
+// Connection: where the bytes come from (a port, the virtual lidar, a recording) and recording.
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include <imgui.h>
+
+#include "core/protocol/model_profile.h"
+#include "ui/panels/panels.h"
+
+namespace ydscope::ui {
+namespace {
+
+constexpr const char* kBauds[] = {"model default", "115200", "128000", "230400", "512000"};
+constexpr std::uint32_t kBaudValues[] = {0, 115200, 128000, 230400, 512000};
+constexpr const char* kScenes[] = {"room", "demo"};
+
+std::string model_label(int choice) {
+  const auto profiles = all_profiles();
+  if (choice <= 0 || choice > static_cast<int>(profiles.size())) return "detect";
+  return std::string(profiles[static_cast<std::size_t>(choice - 1)].name);
+}
+
+bool model_combo(const char* label, int& choice, bool with_detect) {
+  const auto profiles = all_profiles();
+  bool changed = false;
+  const int first = with_detect ? 0 : 1;
+  if (!with_detect && choice < 1) choice = 1;
+  if (ImGui::BeginCombo(label, model_label(choice).c_str())) {
+    for (int i = first; i <= static_cast<int>(profiles.size()); ++i) {
+      if (ImGui::Selectable(model_label(i).c_str(), i == choice)) {
+        choice = i;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+void port_section(UiModel& m) {
+  ImGui::TextDisabled("Serial port or tcp://host:port");
+  if (ImGui::BeginCombo("##ports", m.port_text[0] ? m.port_text : "choose a port")) {
+    if (m.ports.empty()) ImGui::TextDisabled("no serial ports found");
+    for (const PortEntry& p : m.ports) {
+      if (ImGui::Selectable(p.label.c_str(), p.path == m.port_text)) {
+        std::snprintf(m.port_text, sizeof m.port_text, "%s", p.path.c_str());
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("rescan")) m.refresh_ports_request = true;
+  ImGui::InputText("address", m.port_text, sizeof m.port_text);
+  model_combo("model", m.port_model_choice, true);
+  ImGui::Combo("baud", &m.port_baud_choice, kBauds, IM_ARRAYSIZE(kBauds));
+  const bool can_connect = m.port_text[0] != '\0';
+  if (!can_connect) ImGui::BeginDisabled();
+  if (ImGui::Button("Connect")) {
+    ConnectRequest r;
+    r.kind = ConnectRequest::Kind::Port;
+    r.address = m.port_text;
+    if (m.port_model_choice > 0) r.model = model_label(m.port_model_choice);
+    if (m.port_baud_choice > 0) r.baud = kBaudValues[m.port_baud_choice];
+    m.connect_request = r;
+  }
+  if (!can_connect) ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Disconnect")) m.disconnect_request = true;
+}
+
+void sim_section(UiModel& m) {
+  model_combo("sim model", m.sim_model_choice, false);
+  ImGui::Combo("scene", &m.sim_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
+  if (ImGui::TreeNode("faults")) {
+    float corrupt = static_cast<float>(m.sim_faults.corrupt_byte_rate * 1e3);
+    float drop = static_cast<float>(m.sim_faults.drop_byte_rate * 1e3);
+    float lost = static_cast<float>(m.sim_faults.lost_packet_rate * 1e2);
+    bool changed = false;
+    changed |= ImGui::SliderFloat("corrupt /1000 B", &corrupt, 0.0f, 10.0f, "%.2f");
+    changed |= ImGui::SliderFloat("drop /1000 B", &drop, 0.0f, 10.0f, "%.2f");
+    changed |= ImGui::SliderFloat("lost packets %", &lost, 0.0f, 20.0f, "%.1f");
+    int bits = m.sim_faults.health_bits;
+    changed |= ImGui::InputInt("health bits", &bits, 1, 4, ImGuiInputTextFlags_CharsHexadecimal);
+    m.sim_faults.corrupt_byte_rate = corrupt * 1e-3;
+    m.sim_faults.drop_byte_rate = drop * 1e-3;
+    m.sim_faults.lost_packet_rate = lost * 1e-2;
+    m.sim_faults.health_bits = static_cast<std::uint8_t>(bits & 0xFF);
+    if (changed && m.sim_active) m.sim_faults_request = m.sim_faults;
+    if (m.sim_active) {
+      if (ImGui::SmallButton("unplug")) m.sim_unplug_request = true;
+      ImGui::SameLine();
+      if (ImGui::SmallButton("replug")) m.sim_replug_request = true;
+    }
+    ImGui::TreePop();
+  }
+  if (ImGui::Button("Start virtual lidar")) {
+    ConnectRequest r;
+    r.kind = ConnectRequest::Kind::Sim;
+    r.model = model_label(m.sim_model_choice);
+    r.scene = kScenes[m.sim_scene_choice];
+    r.faults = m.sim_faults;
+    m.connect_request = r;
+  }
+}
+
+void replay_section(UiModel& m) {
+  ImGui::InputText("recording", m.replay_text, sizeof m.replay_text);
+  if (ImGui::Button("Open recording") && m.replay_text[0]) {
+    ConnectRequest r;
+    r.kind = ConnectRequest::Kind::Replay;
+    r.address = m.replay_text;
+    m.connect_request = r;
+  }
+  if (m.replay.available) {
+    ImGui::SameLine();
+    if (ImGui::Button(m.replay.paused ? "Play" : "Pause")) {
+      m.replay.paused = !m.replay.paused;
+      m.replay.changed = true;
+    }
+    m.replay.changed |= ImGui::SliderFloat("speed", &m.replay.speed, 0.25f, 8.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+    m.replay.changed |= ImGui::Checkbox("loop", &m.replay.loop);
+  }
+}
+
+void record_section(UiModel& m, const SessionSnapshot& s, Session& session) {
+  if (s.recording) {
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(s.recording_path, ec);
+    ImGui::TextColored({1.0f, 0.35f, 0.35f, 1.0f}, "\xE2\x80\xA2 REC");
+    ImGui::SameLine();
+    ImGui::Text("%.1f s, %.2f MB", m.now_s - m.record_started_s, ec ? 0.0 : static_cast<double>(bytes) / 1e6);
+    ImGui::TextWrapped("%s", s.recording_path.c_str());
+    if (ImGui::Button("Stop recording")) session.stop_recording();
+  } else {
+    if (m.record_text[0] == '\0') std::snprintf(m.record_text, sizeof m.record_text, "ydscope-recording.ydrec");
+    ImGui::InputText("file", m.record_text, sizeof m.record_text);
+    const bool connected = link_state_connected(s.state);
+    if (!connected) ImGui::BeginDisabled();
+    if (ImGui::Button("Start recording")) {
+      session.start_recording(m.record_text);
+      m.record_started_s = m.now_s;
+    }
+    if (!connected) ImGui::EndDisabled();
+    help_marker("Every byte in both directions, with timestamps, written by the I/O thread; replay it from the Replay tab.");
+  }
+}
+
+}  // namespace
+
+void link_state_text(LinkState state, const char* message) {
+  ImVec4 colour{0.7f, 0.7f, 0.7f, 1.0f};
+  switch (state) {
+    case LinkState::Scanning: colour = {0.35f, 0.90f, 0.55f, 1.0f}; break;
+    case LinkState::Ready:
+    case LinkState::Connecting:
+    case LinkState::Probing:
+    case LinkState::CommandInProgress: colour = {0.40f, 0.70f, 1.0f, 1.0f}; break;
+    case LinkState::Stalled:
+    case LinkState::Reconnecting: colour = {1.0f, 0.75f, 0.30f, 1.0f}; break;
+    case LinkState::Failed: colour = {1.0f, 0.40f, 0.40f, 1.0f}; break;
+    case LinkState::Idle: break;
+  }
+  ImGui::TextColored(colour, "%s", std::string(link_state_name(state)).c_str());
+  if (message && *message) {
+    ImGui::SameLine();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(message);
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void section(const char* title) {
+  ImGui::Spacing();
+  ImGui::TextDisabled("%s", title);
+  ImGui::Separator();
+}
+
+void help_marker(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+void draw_connection_panel(UiModel& m, Session& session) {
+  if (!ImGui::CollapsingHeader("Connection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const SessionSnapshot& s = m.snap;
+  ImGui::TextDisabled("source");
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s", m.source_text.empty() ? "none" : m.source_text.c_str());
+  link_state_text(s.state, s.message.c_str());
+  if (!s.link.empty()) ImGui::TextDisabled("%s", s.link.c_str());
+  if (ImGui::BeginTabBar("sources")) {
+    if (ImGui::BeginTabItem("Port")) {
+      port_section(m);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Virtual")) {
+      sim_section(m);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Replay")) {
+      replay_section(m);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Record")) {
+      record_section(m, s, session);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+}
+
+}  // namespace ydscope::ui

@@ -1,0 +1,149 @@
+// Scan and ranging frequency (device commands), and the view and interference-filter settings.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+
+namespace ydscope::ui {
+namespace {
+
+void busy_and_result(const SessionSnapshot& s, double now_s) {
+  if (s.busy) {
+    static const char* const kSpin[] = {"|", "/", "-", "\\"};
+    ImGui::TextColored({0.4f, 0.7f, 1.0f, 1.0f}, "%s %s...", kSpin[static_cast<int>(now_s * 8.0) % 4],
+                       s.busy_what.empty() ? "working" : s.busy_what.c_str());
+  } else if (s.last_result) {
+    const CommandResult& r = *s.last_result;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(r.ok ? ImVec4{0.35f, 0.9f, 0.55f, 1.0f} : ImVec4{1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", r.what.c_str(),
+                       r.message.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+}  // namespace
+
+void draw_frequency_panels(UiModel& m, Session& session) {
+  const SessionSnapshot& s = m.snap;
+  const ModelProfile* profile = s.device ? s.device->profile : nullptr;
+  const bool can_command = link_state_connected(s.state) && !s.busy && profile;
+
+  if (ImGui::CollapsingHeader("Scan frequency", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const auto measured = m.scan_rate.hz();
+    if (ImGui::BeginTable("scanhz", 2, ImGuiTableFlags_SizingStretchSame)) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextDisabled("set (A5 0D)");
+      ImGui::TableSetColumnIndex(1);
+      ImGui::TextDisabled("measured");
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      if (s.scan_hz) ImGui::Text("%.2f Hz", *s.scan_hz);
+      else ImGui::TextDisabled("-");
+      ImGui::TableSetColumnIndex(1);
+      if (measured) ImGui::Text("%.2f Hz", *measured);
+      else ImGui::TextDisabled("-");
+      ImGui::EndTable();
+    }
+    if (!can_command) ImGui::BeginDisabled();
+    const double base = s.scan_hz.value_or(static_cast<double>(m.scan_target_hz));
+    for (const double step : {-1.0, -0.1, 0.1, 1.0}) {
+      char label[16];
+      std::snprintf(label, sizeof label, "%+.1f", step);
+      if (ImGui::Button(label)) {
+        double target = std::round((base + step) * 10.0) / 10.0;
+        if (profile) target = std::clamp(target, profile->min_scan_hz, profile->max_scan_hz);
+        m.scan_target_hz = static_cast<float>(target);
+        session.set_scan_hz(target);
+      }
+      ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    ImGui::SetNextItemWidth(110.0f);
+    ImGui::InputFloat("##target", &m.scan_target_hz, 0.0f, 0.0f, "%.1f Hz");
+    ImGui::SameLine();
+    if (ImGui::Button("Set target")) session.set_scan_hz(static_cast<double>(m.scan_target_hz));
+    if (!can_command) ImGui::EndDisabled();
+    if (profile) ImGui::TextDisabled("%s allows %.0f to %.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
+  }
+
+  if (ImGui::CollapsingHeader("Ranging frequency")) {
+    if (s.ranging_khz) ImGui::Text("current: %u kHz", static_cast<unsigned>(*s.ranging_khz));
+    else ImGui::TextDisabled("current: unknown");
+    if (profile && profile->ranging_settable) {
+      if (!can_command) ImGui::BeginDisabled();
+      for (const std::uint16_t khz : profile->ranging_khz) {
+        char label[24];
+        std::snprintf(label, sizeof label, "%u kHz", static_cast<unsigned>(khz));
+        if (ImGui::RadioButton(label, s.ranging_khz && *s.ranging_khz == khz)) session.set_ranging_khz(khz);
+        ImGui::SameLine();
+      }
+      ImGui::NewLine();
+      if (!can_command) ImGui::EndDisabled();
+    } else if (profile) {
+      ImGui::TextDisabled("%s reports its ranging frequency but cannot change it.", std::string(profile->name).c_str());
+    }
+  }
+  busy_and_result(s, m.now_s);
+}
+
+void draw_view_panel(UiModel& m, ViewSettings& v) {
+  if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int mode = static_cast<int>(v.colours.mode);
+  ImGui::TextDisabled("colour by");
+  ImGui::SameLine();
+  ImGui::RadioButton("range", &mode, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("flag", &mode, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("lap age", &mode, 2);
+  v.colours.mode = static_cast<ColourMode>(mode);
+  if (v.colours.mode != ColourMode::Flag) {
+    int palette = static_cast<int>(v.colours.palette);
+    ImGui::TextDisabled("palette  ");
+    ImGui::SameLine();
+    ImGui::RadioButton("turbo", &palette, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("viridis", &palette, 1);
+    v.colours.palette = static_cast<Palette>(palette);
+  }
+  if (v.colours.mode == ColourMode::Range) {
+    float metres[2] = {v.colours.near_mm / 1000.0f, v.colours.far_mm / 1000.0f};
+    if (ImGui::DragFloat2("near / far m", metres, 0.05f, 0.0f, 100.0f, "%.2f")) {
+      v.colours.near_mm = std::max(metres[0], 0.0f) * 1000.0f;
+      v.colours.far_mm = std::max(metres[1] * 1000.0f, v.colours.near_mm + 10.0f);
+    }
+  }
+  ImGui::SliderFloat("point size", &v.point_size_px, 1.0f, 10.0f, "%.1f px");
+  ImGui::SliderInt("persistence", &v.persistence_laps, 1, 60, "%d laps");
+  ImGui::Checkbox("fade old laps", &v.colours.fade_old_laps);
+  ImGui::SameLine();
+  ImGui::Checkbox("grid", &v.show_grid);
+  ImGui::SameLine();
+  ImGui::Checkbox("auto-range", &v.auto_range);
+  if (ImGui::Button("Reset view")) m.reset_view_request = true;
+  ImGui::SameLine();
+  if (ImGui::Button(m.paused_view ? "Resume" : "Freeze")) m.paused_view = !m.paused_view;
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) m.screenshot_request = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Export CSV")) m.csv_request = true;
+  if (!m.status_message.empty()) ImGui::TextWrapped("%s", m.status_message.c_str());
+}
+
+void draw_filter_panel(UiModel& m, ViewSettings& v) {
+  if (!ImGui::CollapsingHeader("Interference filter")) return;
+  ImGui::Checkbox("drop specular (flag 2)", &v.interference.drop_specular);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu / lap", m.cloud.newest_specular_removed);
+  ImGui::Checkbox("drop ambient light (flag 3)", &v.interference.drop_ambient);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu / lap", m.cloud.newest_ambient_removed);
+  ImGui::Checkbox("show removed as ghosts", &v.interference.show_ghosts);
+  help_marker("G1 marks samples hit by a mirror-like reflection (2) or strong ambient light (3). G6 and TG never set these flags.");
+}
+
+}  // namespace ydscope::ui

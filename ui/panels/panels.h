@@ -1,0 +1,32 @@
+#pragma once
+// The ImGui panels of the sidebar. Each draws one collapsing section; draw_sidebar lays them out.
+#include "ui/panels/ui_model.h"
+
+namespace ydscope {
+class Session;
+}
+
+namespace ydscope::ui {
+
+void draw_connection_panel(UiModel& model, Session& session);
+void draw_device_panel(UiModel& model, Session& session);
+void draw_health_panel(UiModel& model, Session& session);
+void draw_frequency_panels(UiModel& model, Session& session);
+void draw_view_panel(UiModel& model, ViewSettings& settings);
+void draw_filter_panel(UiModel& model, ViewSettings& settings);
+void draw_stats_panel(const UiModel& model);
+
+// The whole left sidebar (full window height). Returns its width in pixels so the polar view can
+// use the rest of the window.
+float draw_sidebar(UiModel& model, ViewSettings& settings, Session& session);
+
+// Status line over the polar view: link state, model, measured rate, banner.
+void draw_view_header(const UiModel& model, float view_left, float view_width);
+
+// Small helpers shared by the panels.
+void help_marker(const char* text);
+// A dim title over a thin rule (ImGui 1.86 has no SeparatorText).
+void section(const char* title);
+void link_state_text(LinkState state, const char* message);
+
+}  // namespace ydscope::ui

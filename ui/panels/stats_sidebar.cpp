@@ -1,0 +1,104 @@
+// Statistics, the sidebar that holds every panel, and the status header over the polar view.
+#include <cstdio>
+#include <cstring>
+
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+
+namespace ydscope::ui {
+namespace {
+
+}  // namespace
+
+void draw_stats_panel(const UiModel& m) {
+  if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const CounterSnapshot& c = m.snap.counters;
+  if (!ImGui::BeginTable("stats", 4, ImGuiTableFlags_SizingStretchProp)) return;
+  // Two name/value pairs per row keeps the panel short.
+  auto pair = [](const char* name, const char* format, double value, bool warn) {
+    ImGui::TableNextColumn();
+    ImGui::TextDisabled("%s", name);
+    ImGui::TableNextColumn();
+    char text[48];
+    std::snprintf(text, sizeof text, format, value);
+    if (warn) ImGui::TextColored({1.0f, 0.6f, 0.35f, 1.0f}, "%s", text);
+    else ImGui::TextUnformatted(text);
+  };
+  pair("bytes/s", "%.0f", c.bytes_per_s, false);
+  pair("packets/s", "%.0f", c.packets_per_s, false);
+  pair("laps/s", "%.2f", c.laps_per_s, false);
+  pair("points/lap", "%.0f", static_cast<double>(m.points_in_lap), false);
+  pair("checksum err", "%.0f", static_cast<double>(c.checksum_errors), c.checksum_errors > 0);
+  pair("resync bytes", "%.0f", static_cast<double>(c.resync_bytes), c.resync_bytes > 0);
+  pair("CRC8 fails", "%.0f", static_cast<double>(c.crc8_failures), c.crc8_failures > 0);
+  pair("queue drops", "%.0f", static_cast<double>(m.snap.queue_dropped), m.snap.queue_dropped > 0);
+  pair("laps skipped", "%.0f", static_cast<double>(m.laps_skipped), false);
+  pair("reconnects", "%.0f", static_cast<double>(c.reconnects), c.reconnects > 0);
+  pair("latency ms", "%.1f", m.latency_ms.mean(), false);
+  pair("frame ms", "%.2f", m.frame_ms.mean(), false);
+  pair("points drawn", "%.0f", static_cast<double>(m.points_drawn_total), false);
+  pair("laps shown", "%.0f", static_cast<double>(m.laps_shown), false);
+  ImGui::EndTable();
+}
+
+float draw_sidebar(UiModel& m, ViewSettings& v, Session& session) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  // Docked to the left edge at full height; the width is the user's (remembered in imgui.ini).
+  ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({430.0f, viewport->WorkSize.y}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints({300.0f, viewport->WorkSize.y}, {viewport->WorkSize.x * 0.6f, viewport->WorkSize.y});
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  float width = 0.0f;
+  if (ImGui::Begin("ydscope", nullptr, flags)) {
+    ImGui::TextColored({0.45f, 0.75f, 1.0f, 1.0f}, "ydscope");
+    ImGui::SameLine();
+    ImGui::TextDisabled("Tab: panels   F11: full-screen");
+    ImGui::Separator();
+    draw_connection_panel(m, session);
+    draw_device_panel(m, session);
+    draw_health_panel(m, session);
+    draw_frequency_panels(m, session);
+    draw_view_panel(m, v);
+    draw_filter_panel(m, v);
+    draw_stats_panel(m);
+  }
+  width = ImGui::GetWindowWidth();
+  ImGui::End();
+  return width;
+}
+
+void draw_view_header(const UiModel& m, float view_left, float view_width) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float pad = 14.0f;
+  float y = pad;
+  const SessionSnapshot& s = m.snap;
+  char line[256];
+  const char* model = s.device && s.device->profile ? s.device->profile->name.data() : nullptr;
+  const auto measured = m.scan_rate.hz();
+  std::snprintf(line, sizeof line, "%s%s%s   %s", model ? model : "", model ? "   " : "",
+                std::string(link_state_name(s.state)).c_str(), measured ? "" : "");
+  if (measured) {
+    char rate[32];
+    std::snprintf(rate, sizeof rate, "%.1f Hz   %zu pts", *measured, m.points_in_lap);
+    std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), "%s", rate);
+  }
+  const ImU32 state_colour = s.state == LinkState::Scanning ? IM_COL32(110, 230, 150, 255)
+                             : (s.state == LinkState::Failed ? IM_COL32(255, 110, 100, 255) : IM_COL32(255, 200, 90, 255));
+  draw->AddText({view_left + pad, y}, state_colour, line);
+  y += ImGui::GetTextLineHeightWithSpacing();
+  if (!m.banner.empty()) {
+    const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str());
+    const float x = view_left + (view_width - size.x) * 0.5f;
+    draw->AddRectFilled({x - 12.0f, y - 4.0f}, {x + size.x + 12.0f, y + size.y + 6.0f}, IM_COL32(20, 40, 70, 200), 6.0f);
+    draw->AddText({x, y}, IM_COL32(200, 225, 255, 255), m.banner.c_str());
+    y += size.y + 12.0f;
+  }
+  if (s.state != LinkState::Scanning && !s.message.empty()) {
+    draw->AddText({view_left + pad, y}, IM_COL32(255, 200, 120, 255), s.message.c_str());
+  }
+  if (m.paused_view) draw->AddText({view_left + pad, y + 22.0f}, IM_COL32(255, 255, 255, 200), "frozen (P to resume)");
+}
+
+}  // namespace ydscope::ui

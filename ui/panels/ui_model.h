@@ -1,0 +1,93 @@
+#pragma once
+// What the panels read and write each frame. The app fills the measured part from the session and
+// the laps; the panels turn clicks into requests the app carries out after the frame (connecting,
+// starting the virtual lidar, saving files), or call the session's intents directly (frequency,
+// health, recording), whose outcome comes back in the snapshot.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/link/session.h"
+#include "core/sim/faults.h"
+#include "ui/view/health_timeline.h"
+#include "ui/view/point_cloud.h"
+#include "ui/view/rate_meters.h"
+#include "ui/view/settings.h"
+
+namespace ydscope::ui {
+
+struct PortEntry {
+  std::string path;   // what to connect to
+  std::string label;  // "/dev/ttyUSB0 — Silicon Labs CP2102 (0001)"
+};
+
+struct ConnectRequest {
+  enum class Kind { Port, Sim, Replay } kind = Kind::Port;
+  std::string address;                // port path / tcp URL, or the recording for Replay
+  std::optional<std::string> model;   // Port: fixed model (empty = detect); Sim: the model
+  std::optional<std::uint32_t> baud;  // Port only
+  std::string scene = "demo";         // Sim only
+  FaultConfig faults;                 // Sim only
+};
+
+struct ReplayControl {
+  bool available = false;  // a replay is the current source
+  bool paused = false;
+  bool loop = true;
+  float speed = 1.0f;
+  bool changed = false;    // set by the panel when the user touched a control
+};
+
+struct UiModel {
+  // ---- filled by the app each frame -------------------------------------------------------------
+  SessionSnapshot snap;
+  std::string source_text;  // "virtual G6 (demo scene) on /dev/pts/4", "recording demo.ydrec"
+  std::string banner;       // shown over the view, e.g. "No lidar found — showing the virtual G6 (demo scene)"
+  std::vector<PortEntry> ports;
+  bool sim_active = false;
+  double now_s = 0.0;       // since start, for the health timeline
+  ScanRateMeter scan_rate;
+  RunningMean frame_ms;
+  RunningMean latency_ms;   // lap's last byte -> the frame that first shows it
+  std::uint64_t laps_shown = 0;
+  std::uint64_t laps_skipped = 0;  // drained but never shown (LapQueue::skipped)
+  std::size_t points_in_lap = 0;
+  PointCloudStats cloud;
+  std::size_t points_drawn_total = 0;
+  std::optional<std::uint8_t> ct_health;  // G1 CT health of the newest lap that carried it
+  bool ct_health_trusted = true;          // false when that lap's CRC8 failed
+  std::uint64_t crc_mismatch_laps = 0;
+  HealthTimeline timeline;
+  CounterRate bytes_rate, packets_rate, laps_rate;
+  ReplayControl replay;
+  bool paused_view = false;               // the view holds the current laps
+
+  // ---- requests from the panels, carried out and cleared by the app -----------------------------
+  std::optional<ConnectRequest> connect_request;
+  bool disconnect_request = false;
+  bool refresh_ports_request = false;
+  std::optional<FaultConfig> sim_faults_request;
+  bool sim_unplug_request = false;
+  bool sim_replug_request = false;
+  bool screenshot_request = false;
+  bool csv_request = false;
+  bool reset_view_request = false;
+  std::string status_message;  // outcome of the last local action (file saved, ...)
+
+  // ---- panel edit state (kept between frames) ---------------------------------------------------
+  char port_text[256] = "";
+  int port_model_choice = 0;  // 0 = detect, then model_names() order
+  int port_baud_choice = 0;   // 0 = model default
+  int sim_model_choice = 1;   // G6
+  int sim_scene_choice = 1;   // demo
+  FaultConfig sim_faults;
+  char replay_text[512] = "";
+  char record_text[512] = "";
+  double record_started_s = 0.0;
+  float scan_target_hz = 10.0f;
+  bool distance_scale_override = false;
+  float distance_scale_value = 1.0f;
+};
+
+}  // namespace ydscope::ui

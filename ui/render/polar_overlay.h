@@ -1,0 +1,25 @@
+#pragma once
+// What the polar view draws with ImGui's draw lists on top of the GL layer: ring and spoke labels,
+// the lidar's origin and heading, the hovered point and the ruler. A few dozen items per frame,
+// never one per scan point.
+#include <optional>
+
+#include "ui/view/grid_layout.h"
+#include "ui/view/hit_test.h"
+
+struct ImDrawList;
+
+namespace ydscope::ui {
+
+struct OverlayInput {
+  const ViewTransform* view = nullptr;
+  const GridLayout* grid = nullptr;
+  bool show_grid_labels = true;
+  std::optional<PointHit> hover;
+  const Ruler* ruler = nullptr;
+  std::optional<Vec2> ruler_cursor_world;  // rubber band from the first end to the cursor
+};
+
+void draw_polar_overlay(ImDrawList* draw, const OverlayInput& input);
+
+}  // namespace ydscope::ui

@@ -1,0 +1,90 @@
+#include "ui/render/polar_view.h"
+
+#include <cmath>
+
+#include <imgui.h>
+
+#include "ui/render/polar_overlay.h"
+#include "ui/view/grid_layout.h"
+
+namespace ydscope::ui {
+
+void PolarView::set_viewport(Vec2 origin, Vec2 size) {
+  const Vec2 old_size = view_.viewport_size();
+  view_.set_viewport(origin, size);
+  if (std::fabs(old_size.x - size.x) > 0.5f || std::fabs(old_size.y - size.y) > 0.5f) {
+    fitted_once_ = false;  // refit on resize when auto-range is on
+  }
+}
+
+void PolarView::reset(ViewSettings& settings) {
+  settings.auto_range = true;
+  fitted_once_ = false;
+  view_.fit_range(fitted_range_mm_ > 0.0f ? fitted_range_mm_ : 8000.0f);
+}
+
+void PolarView::handle_input(ViewSettings& settings) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const Vec2 mouse{io.MousePos.x, io.MousePos.y};
+  const bool inside = view_.contains_screen(mouse) && !io.WantCaptureMouse;
+  hover_cursor_.reset();
+  cursor_world_.reset();
+  if (!inside) return;
+  hover_cursor_ = mouse;
+  cursor_world_ = view_.screen_to_world(mouse);
+  if (io.MouseWheel != 0.0f) {
+    view_.zoom_about(mouse, std::pow(1.15f, io.MouseWheel));
+    settings.auto_range = false;
+  }
+  if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    reset(settings);
+  } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+    view_.pan_by_pixels({io.MouseDelta.x, io.MouseDelta.y});
+    settings.auto_range = false;
+  }
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) ruler_.click(*cursor_world_);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ruler_.clear();
+}
+
+void PolarView::auto_range(const LapHistory& history, const ViewSettings& settings) {
+  if (!settings.auto_range || history.empty()) return;
+  const float target = robust_max_range_mm(history.newest().points) * 1.08f;
+  if (target <= 0.0f) return;
+  // Refit only on a real change, so the rings do not breathe with every lap's noise.
+  if (!fitted_once_ || std::fabs(target - fitted_range_mm_) > 0.15f * fitted_range_mm_) {
+    fitted_range_mm_ = target;
+    view_.fit_range(target);
+    fitted_once_ = true;
+  }
+}
+
+const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings) {
+  if (!(settings.colours == last_settings_.colours) || !(settings.interference == last_settings_.interference)) dirty_ = true;
+  last_settings_ = settings;
+  if (dirty_) {
+    stats_ = build_point_cloud(history, settings.colours, settings.interference, vertices_);
+    renderer_.upload_points(vertices_);
+    dirty_ = false;
+  }
+  return stats_;
+}
+
+void PolarView::draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale,
+                     int framebuffer_height) {
+  const GridLayout grid = layout_grid(view_);
+  PolarStyle style;
+  style.point_size_px = settings.point_size_px;
+  style.show_grid = settings.show_grid;
+  renderer_.draw(view_, grid, style, framebuffer_scale, framebuffer_height);
+
+  OverlayInput overlay;
+  overlay.view = &view_;
+  overlay.grid = &grid;
+  overlay.show_grid_labels = settings.show_grid;
+  overlay.ruler = &ruler_;
+  overlay.ruler_cursor_world = cursor_world_;
+  if (hover_cursor_ && !history.empty()) overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
+  draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
+}
+
+}  // namespace ydscope::ui

@@ -1,0 +1,52 @@
+#pragma once
+// The polar view as the app uses it: mouse handling (wheel zoom about the cursor, drag to pan,
+// double-click to reset, right-click ruler, hover), auto-range, the point cloud rebuilt only when
+// laps or settings change, and drawing through PolarRenderer plus the ImGui overlay.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "ui/render/polar_renderer.h"
+#include "ui/view/hit_test.h"
+#include "ui/view/lap_history.h"
+#include "ui/view/settings.h"
+
+namespace ydscope::ui {
+
+class PolarView {
+ public:
+  PolarView() = default;
+
+  // The part of the window the view owns (window pixels).
+  void set_viewport(Vec2 origin, Vec2 size);
+  // Mouse input from ImGui's IO for this frame; ignored when ImGui wants the mouse (over a panel).
+  void handle_input(ViewSettings& settings);
+  void reset(ViewSettings& settings);
+  void clear_ruler() { ruler_.clear(); }
+  // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
+  void invalidate() { dirty_ = true; }
+  // Fits the view to the newest lap when auto-range is on.
+  void auto_range(const LapHistory& history, const ViewSettings& settings);
+  // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics.
+  const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings);
+  // GL layer then ImGui overlay (background draw list, under the panels).
+  void draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale, int framebuffer_height);
+
+  const ViewTransform& transform() const { return view_; }
+  std::size_t vertex_count() const { return vertices_.size(); }
+
+ private:
+  PolarRenderer renderer_;
+  ViewTransform view_;
+  Ruler ruler_;
+  std::vector<PointVertex> vertices_;
+  PointCloudStats stats_;
+  bool dirty_ = true;
+  bool fitted_once_ = false;
+  float fitted_range_mm_ = 0.0f;
+  ViewSettings last_settings_;
+  std::optional<Vec2> hover_cursor_;
+  std::optional<Vec2> cursor_world_;
+};
+
+}  // namespace ydscope::ui

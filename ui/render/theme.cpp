@@ -1,0 +1,89 @@
+#include "ui/render/theme.h"
+
+#include <filesystem>
+
+#include <imgui.h>
+
+namespace ydscope::ui {
+namespace {
+
+const char* find_font() {
+  static const char* const candidates[] = {
+      "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+      "/usr/share/fonts/truetype/noto/NotoSans-Regular.ttf",
+      "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf",
+  };
+  for (const char* path : candidates) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec)) return path;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+Fonts apply_theme(float scale) {
+  ImGuiIO& io = ImGui::GetIO();
+  Fonts fonts;
+  ImFontConfig config;
+  config.OversampleH = 2;
+  config.OversampleV = 2;
+  // Latin-1 covers the degree sign; the em dash and arrows come from the general punctuation block.
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2013, 0x2022, 0x2190, 0x2193, 0};
+  if (const char* path = find_font()) {
+    fonts.system_font = io.Fonts->AddFontFromFileTTF(path, 16.0f * scale, &config, ranges) != nullptr;
+  }
+  if (!fonts.system_font) {
+    ImFontConfig fallback;
+    fallback.SizePixels = 13.0f * scale;
+    io.Fonts->AddFontDefault(&fallback);
+  }
+
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 6.0f;
+  style.ChildRounding = 4.0f;
+  style.FrameRounding = 4.0f;
+  style.GrabRounding = 4.0f;
+  style.PopupRounding = 4.0f;
+  style.ScrollbarRounding = 6.0f;
+  style.TabRounding = 4.0f;
+  style.WindowBorderSize = 0.0f;
+  style.FrameBorderSize = 0.0f;
+  style.WindowPadding = {12.0f, 10.0f};
+  style.FramePadding = {8.0f, 4.0f};
+  style.ItemSpacing = {8.0f, 6.0f};
+  style.IndentSpacing = 14.0f;
+
+  ImVec4* c = style.Colors;
+  const ImVec4 accent{0.26f, 0.62f, 0.98f, 1.0f};
+  c[ImGuiCol_Text] = {0.88f, 0.91f, 0.95f, 1.0f};
+  c[ImGuiCol_TextDisabled] = {0.50f, 0.55f, 0.62f, 1.0f};
+  c[ImGuiCol_WindowBg] = {0.070f, 0.082f, 0.105f, 0.94f};
+  c[ImGuiCol_ChildBg] = {0.0f, 0.0f, 0.0f, 0.0f};
+  c[ImGuiCol_PopupBg] = {0.08f, 0.09f, 0.12f, 0.98f};
+  c[ImGuiCol_Border] = {0.20f, 0.24f, 0.30f, 0.60f};
+  c[ImGuiCol_FrameBg] = {0.13f, 0.15f, 0.19f, 1.0f};
+  c[ImGuiCol_FrameBgHovered] = {0.17f, 0.20f, 0.26f, 1.0f};
+  c[ImGuiCol_FrameBgActive] = {0.20f, 0.24f, 0.31f, 1.0f};
+  c[ImGuiCol_TitleBg] = {0.06f, 0.07f, 0.09f, 1.0f};
+  c[ImGuiCol_TitleBgActive] = {0.08f, 0.10f, 0.13f, 1.0f};
+  c[ImGuiCol_Header] = {0.14f, 0.17f, 0.22f, 1.0f};
+  c[ImGuiCol_HeaderHovered] = {0.18f, 0.23f, 0.30f, 1.0f};
+  c[ImGuiCol_HeaderActive] = {0.22f, 0.28f, 0.37f, 1.0f};
+  c[ImGuiCol_Button] = {0.16f, 0.20f, 0.27f, 1.0f};
+  c[ImGuiCol_ButtonHovered] = {0.22f, 0.32f, 0.45f, 1.0f};
+  c[ImGuiCol_ButtonActive] = accent;
+  c[ImGuiCol_CheckMark] = accent;
+  c[ImGuiCol_SliderGrab] = accent;
+  c[ImGuiCol_SliderGrabActive] = {0.45f, 0.75f, 1.0f, 1.0f};
+  c[ImGuiCol_Separator] = {0.20f, 0.24f, 0.30f, 0.70f};
+  c[ImGuiCol_PlotLines] = accent;
+  c[ImGuiCol_PlotHistogram] = accent;
+  c[ImGuiCol_ScrollbarBg] = {0.0f, 0.0f, 0.0f, 0.0f};
+
+  style.ScaleAllSizes(scale);
+  return fonts;
+}
+
+}  // namespace ydscope::ui

@@ -1,0 +1,16 @@
+#pragma once
+// The app's look: a dark, low-contrast frame around a bright scan, and fonts large enough to read
+// across a booth. Fonts come from the system (DejaVu or Noto) with ImGui's own as the fallback.
+namespace ydscope::ui {
+
+struct Fonts {
+  bool system_font = false;  // false: ImGui's built-in font, scaled
+};
+
+// Call once after ImGui::CreateContext and before the first frame. `scale` for HiDPI.
+Fonts apply_theme(float scale);
+
+// Background behind the polar view (also the GL clear colour).
+inline constexpr float kBackground[4] = {0.035f, 0.043f, 0.060f, 1.0f};
+
+}  // namespace ydscope::ui

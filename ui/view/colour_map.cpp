@@ -1,0 +1,102 @@
+#include "ui/view/colour_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace ydscope::ui {
+namespace {
+
+struct Stop {
+  float r, g, b;
+};
+
+// Nine evenly spaced samples of each palette. Turbo starts at a mid blue rather than its near-black
+// end so the nearest points stay visible on the dark background.
+constexpr std::array<Stop, 9> kTurbo{{{0.27f, 0.36f, 0.86f},
+                                      {0.16f, 0.56f, 0.99f},
+                                      {0.10f, 0.79f, 0.86f},
+                                      {0.20f, 0.94f, 0.60f},
+                                      {0.55f, 0.99f, 0.27f},
+                                      {0.86f, 0.89f, 0.22f},
+                                      {0.99f, 0.66f, 0.18f},
+                                      {0.93f, 0.37f, 0.07f},
+                                      {0.76f, 0.16f, 0.02f}}};
+constexpr std::array<Stop, 9> kViridis{{{0.267f, 0.005f, 0.329f},
+                                        {0.278f, 0.173f, 0.478f},
+                                        {0.231f, 0.318f, 0.545f},
+                                        {0.173f, 0.443f, 0.557f},
+                                        {0.129f, 0.565f, 0.553f},
+                                        {0.153f, 0.678f, 0.506f},
+                                        {0.361f, 0.784f, 0.388f},
+                                        {0.667f, 0.863f, 0.196f},
+                                        {0.992f, 0.906f, 0.145f}}};
+
+std::uint8_t to_byte(float v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+}  // namespace
+
+std::string_view colour_mode_name(ColourMode mode) {
+  switch (mode) {
+    case ColourMode::Range: return "range";
+    case ColourMode::Flag: return "interference flag";
+    case ColourMode::LapAge: return "lap age";
+  }
+  return "?";
+}
+
+std::string_view palette_name(Palette palette) {
+  return palette == Palette::Turbo ? "turbo" : "viridis";
+}
+
+Rgba8 sample_palette(Palette palette, float t) {
+  const auto& stops = palette == Palette::Turbo ? kTurbo : kViridis;
+  if (!(t >= 0.0f)) t = 0.0f;  // also catches NaN
+  t = std::min(t, 1.0f);
+  const float pos = t * static_cast<float>(stops.size() - 1);
+  const std::size_t i = std::min(static_cast<std::size_t>(pos), stops.size() - 2);
+  const float f = pos - static_cast<float>(i);
+  const Stop& a = stops[i];
+  const Stop& b = stops[i + 1];
+  return {to_byte(a.r + (b.r - a.r) * f), to_byte(a.g + (b.g - a.g) * f), to_byte(a.b + (b.b - a.b) * f), 255};
+}
+
+Rgba8 flag_colour(PointFlag flag) {
+  switch (flag) {
+    case PointFlag::None: return {120, 220, 255, 255};
+    case PointFlag::Reserved: return {170, 170, 170, 255};
+    case PointFlag::Specular: return {255, 80, 200, 255};
+    case PointFlag::AmbientLight: return {255, 190, 40, 255};
+  }
+  return {255, 255, 255, 255};
+}
+
+Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age) {
+  age = std::clamp(age, 0.0f, 1.0f);
+  Rgba8 c;
+  switch (params.mode) {
+    case ColourMode::Range: {
+      const float span = std::max(params.far_mm - params.near_mm, 1.0f);
+      c = sample_palette(params.palette, (point.range_mm - params.near_mm) / span);
+      break;
+    }
+    case ColourMode::Flag: c = flag_colour(point.flag); break;
+    case ColourMode::LapAge: c = sample_palette(params.palette, 1.0f - age); break;
+  }
+  if (params.fade_old_laps) {
+    // The newest lap is opaque; the oldest kept one is barely there.
+    const float alpha = 1.0f - 0.85f * age;
+    c.a = to_byte(alpha);
+  }
+  return c;
+}
+
+Rgba8 ghost_colour(PointFlag flag) {
+  Rgba8 c = flag_colour(flag);
+  c.a = 60;
+  return c;
+}
+
+}  // namespace ydscope::ui

@@ -1,0 +1,42 @@
+#pragma once
+// Where the range rings and angle spokes go and where their labels fit: ring spacing follows the
+// zoom on a 1-2-5 ladder, labels stay inside the viewport.
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/protocol/lap.h"
+#include "ui/view/view_transform.h"
+
+namespace ydscope::ui {
+
+// Smallest 1-2-5 x 10^k step in mm whose rings are at least `min_px` apart at this zoom.
+float nice_ring_step_mm(float px_per_mm, float min_px);
+
+// "250 mm", "50 cm", "1 m", "2.5 m", "12 m".
+std::string format_distance(float mm);
+
+struct GridLabel {
+  Vec2 screen;       // anchor in pixels
+  std::string text;
+};
+
+struct GridLayout {
+  float ring_step_mm = 1000.0f;
+  std::vector<float> ring_radii_mm;   // every ring to draw, inside the visible radius
+  std::vector<GridLabel> ring_labels;
+  std::vector<float> spoke_angles_deg;
+  std::vector<GridLabel> spoke_labels;  // where each spoke leaves the (inset) viewport
+};
+
+// `label_angle_deg` is the direction along which ring labels are written.
+GridLayout layout_grid(const ViewTransform& view, float min_ring_px = 70.0f, float spoke_step_deg = 30.0f,
+                       float label_angle_deg = 45.0f, float edge_margin_px = 18.0f);
+
+// A range that holds most of the scan (the `fraction` quantile of non-zero ranges), for auto-range:
+// the far outliers of a window or a mirror do not shrink the view. 0 when there is no return.
+float robust_max_range_mm(std::span<const LapPoint> points, float fraction = 0.98f);
+
+}  // namespace ydscope::ui

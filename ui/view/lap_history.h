@@ -1,0 +1,45 @@
+#pragma once
+// The last N laps kept for persistence: a ring of preallocated point buffers, so pushing a lap per
+// frame allocates nothing once the ring is warm.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/protocol/lap.h"
+
+namespace ydscope::ui {
+
+struct HistoryLap {
+  std::uint64_t index = 0;
+  std::int64_t last_rx_ns = 0;
+  std::vector<LapPoint> points;
+};
+
+class LapHistory {
+ public:
+  static constexpr std::size_t kMaxDepth = 60;
+
+  explicit LapHistory(std::size_t depth = 10);
+
+  // How many laps are drawn (1 = only the newest). Keeps the newest laps when shrinking.
+  void set_depth(std::size_t depth);
+  std::size_t depth() const { return depth_; }
+
+  void push(const Lap& lap);
+  void clear();
+
+  std::size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  // age 0 is the newest lap; age < size().
+  const HistoryLap& at_age(std::size_t age) const;
+  const HistoryLap& newest() const { return at_age(0); }
+  std::size_t total_points() const;
+
+ private:
+  std::vector<HistoryLap> slots_;  // kMaxDepth slots; only the newest depth_ are visible
+  std::size_t depth_;
+  std::size_t next_ = 0;   // slot the next push writes
+  std::size_t count_ = 0;  // laps held, <= depth_
+};
+
+}  // namespace ydscope::ui

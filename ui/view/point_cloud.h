@@ -1,0 +1,37 @@
+#pragma once
+// Turns the lap history into the vertex array the point shader draws in one call: positions in
+// world millimetres plus a colour, newest lap last so it is drawn on top.
+#include <cstddef>
+#include <vector>
+
+#include "ui/view/colour_map.h"
+#include "ui/view/lap_history.h"
+
+namespace ydscope::ui {
+
+struct PointVertex {
+  float x, y;    // world mm
+  Rgba8 colour;  // premultiplied by nothing; the shader blends with alpha
+};
+static_assert(sizeof(PointVertex) == 12, "the shader's vertex layout expects 12 bytes");
+
+struct InterferenceSettings {
+  bool drop_specular = false;  // G1 flag 2
+  bool drop_ambient = false;   // G1 flag 3
+  bool show_ghosts = true;     // draw removed points faintly instead of hiding them
+  friend bool operator==(const InterferenceSettings&, const InterferenceSettings&) = default;
+};
+
+struct PointCloudStats {
+  std::size_t drawn = 0;
+  std::size_t ghosts = 0;
+  std::size_t newest_specular_removed = 0;  // in the newest lap
+  std::size_t newest_ambient_removed = 0;
+  std::size_t newest_no_return = 0;         // range 0: no echo, never drawn
+};
+
+// Clears `out` (keeping its capacity) and fills it. Points with range 0 are not drawn.
+PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
+                                  const InterferenceSettings& filter, std::vector<PointVertex>& out);
+
+}  // namespace ydscope::ui

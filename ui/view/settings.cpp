@@ -1,0 +1,126 @@
+#include "ui/view/settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace ydscope::ui {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::optional<float> to_float(const std::string& v) {
+  char* end = nullptr;
+  const float f = std::strtof(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !std::isfinite(f)) return std::nullopt;
+  return f;
+}
+
+std::optional<bool> to_bool(const std::string& v) {
+  if (v == "true" || v == "1") return true;
+  if (v == "false" || v == "0") return false;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::filesystem::path config_directory() {
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "ydscope";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".config" / "ydscope";
+  return {};
+}
+
+ViewSettings parse_settings(const std::string& text) {
+  ViewSettings s;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto eq = line.find('=');
+    if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
+    const std::string key = trim(line.substr(0, eq));
+    const std::string value = trim(line.substr(eq + 1));
+    const auto f = to_float(value);
+    const auto b = to_bool(value);
+    if (key == "colour_mode") {
+      if (value == "range") s.colours.mode = ColourMode::Range;
+      else if (value == "flag") s.colours.mode = ColourMode::Flag;
+      else if (value == "age") s.colours.mode = ColourMode::LapAge;
+    } else if (key == "palette") {
+      if (value == "turbo") s.colours.palette = Palette::Turbo;
+      else if (value == "viridis") s.colours.palette = Palette::Viridis;
+    } else if (key == "near_mm" && f) {
+      s.colours.near_mm = std::max(*f, 0.0f);
+    } else if (key == "far_mm" && f) {
+      s.colours.far_mm = std::max(*f, 1.0f);
+    } else if (key == "fade_old_laps" && b) {
+      s.colours.fade_old_laps = *b;
+    } else if (key == "auto_range" && b) {
+      s.auto_range = *b;
+    } else if (key == "point_size_px" && f) {
+      s.point_size_px = std::clamp(*f, 1.0f, 20.0f);
+    } else if (key == "persistence_laps" && f) {
+      s.persistence_laps = std::clamp(static_cast<int>(*f), 1, 60);
+    } else if (key == "drop_specular" && b) {
+      s.interference.drop_specular = *b;
+    } else if (key == "drop_ambient" && b) {
+      s.interference.drop_ambient = *b;
+    } else if (key == "show_ghosts" && b) {
+      s.interference.show_ghosts = *b;
+    } else if (key == "show_panels" && b) {
+      s.show_panels = *b;
+    } else if (key == "show_grid" && b) {
+      s.show_grid = *b;
+    } else if (key == "last_replay_file") {
+      s.last_replay_file = value;
+    }
+  }
+  return s;
+}
+
+std::string format_settings(const ViewSettings& s) {
+  std::ostringstream out;
+  const char* mode = s.colours.mode == ColourMode::Range ? "range" : s.colours.mode == ColourMode::Flag ? "flag" : "age";
+  auto yes = [](bool v) { return v ? "true" : "false"; };
+  out << "# ydscope view settings; written on exit\n"
+      << "colour_mode = " << mode << "\n"
+      << "palette = " << palette_name(s.colours.palette) << "\n"
+      << "near_mm = " << s.colours.near_mm << "\n"
+      << "far_mm = " << s.colours.far_mm << "\n"
+      << "fade_old_laps = " << yes(s.colours.fade_old_laps) << "\n"
+      << "auto_range = " << yes(s.auto_range) << "\n"
+      << "point_size_px = " << s.point_size_px << "\n"
+      << "persistence_laps = " << s.persistence_laps << "\n"
+      << "drop_specular = " << yes(s.interference.drop_specular) << "\n"
+      << "drop_ambient = " << yes(s.interference.drop_ambient) << "\n"
+      << "show_ghosts = " << yes(s.interference.show_ghosts) << "\n"
+      << "show_panels = " << yes(s.show_panels) << "\n"
+      << "show_grid = " << yes(s.show_grid) << "\n"
+      << "last_replay_file = " << s.last_replay_file << "\n";
+  return out.str();
+}
+
+ViewSettings load_settings(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return {};
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_settings(buffer.str());
+}
+
+bool save_settings(const std::filesystem::path& file, const ViewSettings& settings) {
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  std::ofstream out(file);
+  if (!out) return false;
+  out << format_settings(settings);
+  return static_cast<bool>(out);
+}
+
+}  // namespace ydscope::ui

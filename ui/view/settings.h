@@ -1,0 +1,37 @@
+#pragma once
+// What the app remembers between runs besides ImGui's window layout (imgui.ini): view and filter
+// choices, as `key = value` lines in $XDG_CONFIG_HOME/ydscope/settings.ini (or ~/.config/ydscope).
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "ui/view/colour_map.h"
+#include "ui/view/point_cloud.h"
+
+namespace ydscope::ui {
+
+struct ViewSettings {
+  ColourParams colours;
+  bool auto_range = true;
+  float point_size_px = 3.0f;
+  int persistence_laps = 10;
+  InterferenceSettings interference;
+  bool show_panels = true;
+  bool show_grid = true;
+  std::string last_replay_file;
+
+  friend bool operator==(const ViewSettings&, const ViewSettings&) = default;
+};
+
+// Folder for settings.ini and imgui.ini; empty when neither XDG_CONFIG_HOME nor HOME is set.
+std::filesystem::path config_directory();
+
+// Unknown keys and bad values are ignored, so an older or hand-edited file never stops the app.
+ViewSettings parse_settings(const std::string& text);
+std::string format_settings(const ViewSettings& settings);
+
+ViewSettings load_settings(const std::filesystem::path& file);
+// False when the file cannot be written (the app then just does not remember).
+bool save_settings(const std::filesystem::path& file, const ViewSettings& settings);
+
+}  // namespace ydscope::ui
