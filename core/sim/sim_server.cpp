@@ -92,7 +92,7 @@ void SimServer::Impl::replug_locked(std::int64_t now) {
     tcp_port = tcp->port();
     endpoint = std::move(tcp);
   }
-  device->power_cycle(now);
+  if (counters.unplugs > 0) device->power_cycle(now);  // a replug: the device lost power
   device_path = endpoint->device_path();
   log_line(now, "plugged in at " + device_path);
 }

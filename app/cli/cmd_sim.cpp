@@ -1,0 +1,152 @@
+// ydscope-cli sim: a virtual G1/G6/TG lidar on a pseudo-terminal or a TCP port, until SIGINT/SIGTERM.
+#include <signal.h>
+
+#include <charconv>
+#include <chrono>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+#include "app/cli/arguments.h"
+#include "app/cli/cli_command.h"
+#include "core/protocol/model_profile.h"
+#include "core/sim/scene.h"
+#include "core/sim/sim_server.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo]
+                       [--seed N] [fault options] [--verbose]
+
+Runs a virtual lidar that a host cannot tell from a real one by its bytes: it answers every command
+of the model's manual, streams scan packets paced to real time and to the model's baud (G1 230400,
+G6/TG 512000), and can inject faults. It serves until SIGINT or SIGTERM, then exits 0.
+
+  --model MODEL          G1, G6, TG15, TG30 or TG50 (any letter case).
+  --pty LINK             create a pseudo-terminal, make LINK a symlink to its device path, print
+                         "ready <device path>" on stdout, and remove LINK on exit. LINK must not
+                         exist (a dangling link into /dev/pts left by an earlier run is replaced).
+                         Open LINK like a serial port; the baud you set does not matter.
+  --tcp HOST:PORT        listen on HOST:PORT instead (e.g. 127.0.0.1:2000; port 0 picks one) and
+                         print "ready tcp://HOST:PORT". One host at a time; others are turned away.
+  --scene NAME           room: walls, furniture, two people walking, a mirror (G1 flag 2) and a
+                         sunlit window (G1 flag 3). demo (default): a turning flower, orbiting
+                         moons and a star-shaped wall, made to look good on a trade-show screen.
+  --seed N               seed of the scene's noise and motion, the serial number and every fault
+                         decision (default 1). The same seed gives the same bytes.
+  --distance-scale X     encode ranges with X mm per raw unit instead of the manual's (G1 1,
+                         G6 0.25, TG 0.5), like vendor firmware variants.
+  --health-quirk         answer only the other health command (A5 91 <-> A5 92), as some units do.
+  --verbose              print the commands received and the mode changes on stderr.
+  --zero-log FILE        append "<n> <CLOCK_MONOTONIC ns>" to FILE just after each zero packet's
+                         last byte is written (for latency measurements).
+
+Faults (all off by default; every injected fault is counted):
+  --corrupt RATE         flip one bit of a scan packet's sample byte with probability RATE per
+                         byte (0..1): the packet fails its checksum on the host.
+  --drop RATE            lose each outgoing byte (packets and replies) with probability RATE.
+  --lose-packets RATE    never send a non-zero scan packet, with probability RATE per packet (on
+                         G1 the lap's CRC8 check then fails on the host).
+  --stall-ms N           stop sending for N ms (packets and replies due then are lost) ...
+  --stall-every-ms M     ... every M ms of scanning (both needed).
+  --health-bits N        raise health bits (0..255): G1 status bits in A5 92 and in CT; G6/TG
+                         A5 91 status 2 (error) with N as the error code.
+  --junk N               send N junk bytes in front of every reply header.
+  --unplug-after-ms N    disconnect after N ms: the pseudo-terminal and LINK disappear (TCP: the
+                         host is dropped and the port closed); the device loses power.
+  --replug-after-ms N    come back N ms after the unplug with a new pseudo-terminal (LINK is
+                         re-pointed), the device in its power-on state.
+
+examples:
+  ydscope-cli sim --model G6 --pty /tmp/lidar &       then: ydscope-cli info --port /tmp/lidar
+  ydscope-cli sim --model G1 --scene room --tcp 127.0.0.1:2000 --lose-packets 0.01 --verbose
+)";
+
+std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos || colon == 0)
+    throw UsageError("--tcp needs HOST:PORT, such as 127.0.0.1:2000, not '" + text + "'");
+  const std::string port_text = text.substr(colon + 1);
+  unsigned port = 0;
+  const auto [ptr, ec] = std::from_chars(port_text.data(), port_text.data() + port_text.size(), port);
+  if (ec != std::errc() || ptr != port_text.data() + port_text.size() || port > 65535)
+    throw UsageError("--tcp port must be a number from 0 to 65535, not '" + port_text + "'");
+  return {text.substr(0, colon), static_cast<std::uint16_t>(port)};
+}
+
+int run_sim(std::span<const std::string> raw) {
+  const Arguments args(raw,
+                       {"model", "pty", "tcp", "scene", "seed", "distance-scale", "zero-log", "corrupt", "drop",
+                        "lose-packets", "stall-ms", "stall-every-ms", "health-bits", "junk", "unplug-after-ms",
+                        "replug-after-ms"},
+                       {"verbose", "health-quirk"});
+  if (args.help_requested()) {
+    std::cout << kHelpText;
+    return kExitOk;
+  }
+  if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals().front() + "'");
+
+  const std::string model_name = args.required("model");
+  const ModelProfile* profile = find_profile(model_name);
+  if (!profile)
+    throw UsageError("unknown model '" + model_name + "'; the models are " + std::string(model_names()));
+  if (args.has("pty") == args.has("tcp")) throw UsageError("give exactly one of --pty LINK or --tcp HOST:PORT");
+
+  SimServerOptions options;
+  options.device.model = profile->model;
+  options.device.scene = args.value("scene").value_or("demo");
+  if (!make_scene(options.device.scene, 0))
+    throw UsageError("unknown scene '" + options.device.scene + "'; the scenes are " + std::string(scene_names()));
+  options.device.seed = static_cast<std::uint64_t>(args.integer("seed", 0, INT64_MAX).value_or(1));
+  options.device.distance_scale = args.number("distance-scale", 0.001, 1000.0);
+  options.device.health_quirk = args.has("health-quirk");
+  FaultConfig& faults = options.device.faults;
+  faults.corrupt_byte_rate = args.number("corrupt", 0.0, 1.0).value_or(0.0);
+  faults.drop_byte_rate = args.number("drop", 0.0, 1.0).value_or(0.0);
+  faults.lost_packet_rate = args.number("lose-packets", 0.0, 1.0).value_or(0.0);
+  faults.stall_ms = args.integer("stall-ms", 0, 3'600'000).value_or(0);
+  faults.stall_every_ms = args.integer("stall-every-ms", 0, 86'400'000).value_or(0);
+  if ((faults.stall_ms > 0) != (faults.stall_every_ms > 0))
+    throw UsageError("--stall-ms and --stall-every-ms go together: give both or neither");
+  faults.health_bits = static_cast<std::uint8_t>(args.integer("health-bits", 0, 255).value_or(0));
+  faults.junk_before_reply = static_cast<std::uint32_t>(args.integer("junk", 0, 4096).value_or(0));
+  options.unplug_after = std::chrono::milliseconds(args.integer("unplug-after-ms", 0, 86'400'000).value_or(0));
+  options.replug_after = std::chrono::milliseconds(args.integer("replug-after-ms", 0, 86'400'000).value_or(0));
+  if (options.replug_after.count() > 0 && options.unplug_after.count() == 0)
+    throw UsageError("--replug-after-ms needs --unplug-after-ms");
+  options.zero_packet_log = args.value("zero-log").value_or("");
+
+  if (args.has("pty")) {
+    options.transport = SimTransport::Pty;
+    options.pty_link = args.required("pty");
+    if (options.pty_link.empty()) throw UsageError("--pty needs a path for the link, such as /tmp/lidar");
+  } else {
+    options.transport = SimTransport::Tcp;
+    std::tie(options.tcp_host, options.tcp_port) = parse_host_port(args.required("tcp"));
+  }
+  if (args.has("verbose")) options.on_log = [](std::string_view line) { std::cerr << line << std::endl; };
+
+  // Block the stop signals before the server thread starts, so it inherits the mask and this thread
+  // alone takes them with sigwait: no handler, no race with the serving thread.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  SimServer server(options);
+  server.start();
+  std::cout << "ready " << server.device_path() << std::endl;
+  int signal_number = 0;
+  sigwait(&stop_signals, &signal_number);
+  if (args.has("verbose")) std::cerr << "stopping on signal " << signal_number << std::endl;
+  server.stop();
+  return kExitOk;
+}
+
+const RegisterCliCommand registration{
+    {"sim", "serve a virtual lidar on a pseudo-terminal or TCP port", kHelpText, &run_sim}};
+
+}  // namespace
+}  // namespace ydscope::cli
