@@ -1,0 +1,262 @@
+#include "core/link/replay_link.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <utility>
+#include <vector>
+
+#include <boost/asio/post.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "core/record/recording_reader.h"
+
+namespace ydscope {
+
+// The playback state. Lives on the io_context's thread; controls reach it through posted
+// handlers that hold a shared_ptr, so a control racing the link's destruction stays safe.
+class ReplayLink::Core : public std::enable_shared_from_this<Core> {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  Core(boost::asio::io_context& io, std::unique_ptr<RecordingReader> reader, const ReplayOptions& options,
+       std::int64_t duration_ns)
+      : io_(io), timer_(io), reader_(std::move(reader)), speed_(std::max(0.0, options.speed)),
+        paused_(options.paused), loop_(options.loop), anchor_wall_(Clock::now()) {
+    status_duration_.store(duration_ns);
+    publish();
+  }
+
+  boost::asio::io_context::executor_type executor() { return io_.get_executor(); }
+
+  void read(std::span<std::uint8_t> buffer, IoHandler handler) {
+    if (closed_) {
+      complete(std::move(handler), boost::asio::error::operation_aborted, 0);
+      return;
+    }
+    read_buffer_ = buffer;
+    read_handler_ = std::move(handler);
+    pump();
+  }
+
+  void close() {
+    closed_ = true;
+    ++wait_generation_;
+    timer_.cancel();
+    if (read_handler_) complete(std::exchange(read_handler_, nullptr), boost::asio::error::operation_aborted, 0);
+  }
+
+  void set_speed(double speed) {
+    rebase();
+    speed_ = std::max(0.0, speed);
+    reschedule();
+  }
+  void set_paused(bool paused) {
+    if (paused == paused_) return;
+    rebase();
+    paused_ = paused;
+    reschedule();
+  }
+  void set_loop(bool loop) {
+    loop_ = loop;
+    publish();
+  }
+  void restart() {
+    reader_->rewind();
+    have_chunk_ = false;
+    finished_ = false;
+    anchor_position_ = 0;
+    anchor_wall_ = Clock::now();
+    reschedule();
+  }
+
+  // Status, any thread.
+  ReplayStatus status() const {
+    ReplayStatus status;
+    status.position_ns = status_position_.load(std::memory_order_relaxed);
+    status.duration_ns = status_duration_.load(std::memory_order_relaxed);
+    status.speed = status_speed_.load(std::memory_order_relaxed);
+    status.paused = status_paused_.load(std::memory_order_relaxed);
+    status.loop = status_loop_.load(std::memory_order_relaxed);
+    status.finished = status_finished_.load(std::memory_order_relaxed);
+    status.loops = status_loops_.load(std::memory_order_relaxed);
+    status.bytes = status_bytes_.load(std::memory_order_relaxed);
+    return status;
+  }
+
+ private:
+  std::int64_t position_now() const {
+    if (paused_ || speed_ == 0.0) return anchor_position_;
+    const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - anchor_wall_).count();
+    return anchor_position_ + static_cast<std::int64_t>(static_cast<double>(elapsed) * speed_);
+  }
+  // Freezes the playback point so the next speed or pause state continues from it.
+  void rebase() {
+    anchor_position_ = position_now();
+    anchor_wall_ = Clock::now();
+  }
+  void reschedule() {
+    ++wait_generation_;
+    timer_.cancel();
+    publish();
+    pump();
+  }
+
+  // Next device->host record into chunk_; false at the end of the recording.
+  bool load_next() {
+    RecordView record;
+    while (reader_->next(record)) {
+      if (record.type != RecordType::DeviceToHost || record.payload.empty()) continue;
+      chunk_.assign(record.payload.begin(), record.payload.end());
+      chunk_offset_ = 0;
+      chunk_t_ = record.t_ns;
+      have_chunk_ = true;
+      return true;
+    }
+    return false;
+  }
+
+  void pump() {
+    if (!read_handler_ || closed_) return;
+    if (!have_chunk_ && !finished_ && !load_next()) {
+      if (loop_ && pass_bytes_ > 0) {  // a recording without device bytes would spin
+        reader_->rewind();
+        pass_bytes_ = 0;
+        anchor_position_ = 0;
+        anchor_wall_ = Clock::now();
+        status_loops_.fetch_add(1, std::memory_order_relaxed);
+        load_next();
+      } else {
+        finished_ = true;
+      }
+    }
+    if (finished_) {
+      publish();
+      complete(std::exchange(read_handler_, nullptr), boost::asio::error::eof, 0);
+      return;
+    }
+    if (paused_) return;  // set_paused(false) pumps again
+    const std::int64_t ahead_ns = chunk_t_ - position_now();
+    if (speed_ == 0.0 || ahead_ns <= 0) {
+      deliver();
+      return;
+    }
+    const auto wait = std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(ahead_ns) / speed_));
+    timer_.expires_after(wait);
+    const std::uint64_t generation = ++wait_generation_;
+    timer_.async_wait([self = shared_from_this(), generation](const boost::system::error_code& ec) {
+      if (!ec && generation == self->wait_generation_) self->pump();
+    });
+  }
+
+  void deliver() {
+    const std::size_t n = std::min(read_buffer_.size(), chunk_.size() - chunk_offset_);
+    std::memcpy(read_buffer_.data(), chunk_.data() + chunk_offset_, n);
+    chunk_offset_ += n;
+    if (chunk_offset_ == chunk_.size()) have_chunk_ = false;
+    if (speed_ == 0.0) anchor_position_ = chunk_t_;
+    pass_bytes_ += n;
+    status_bytes_.fetch_add(n, std::memory_order_relaxed);
+    publish();
+    complete(std::exchange(read_handler_, nullptr), {}, n);
+  }
+
+  // Handlers never run inside the call that started the operation.
+  void complete(IoHandler handler, boost::system::error_code ec, std::size_t n) {
+    boost::asio::post(io_, [handler = std::move(handler), ec, n] { handler(ec, n); });
+  }
+
+  void publish() {
+    status_position_.store(std::max<std::int64_t>(0, position_now()), std::memory_order_relaxed);
+    status_speed_.store(speed_, std::memory_order_relaxed);
+    status_paused_.store(paused_, std::memory_order_relaxed);
+    status_loop_.store(loop_, std::memory_order_relaxed);
+    status_finished_.store(finished_, std::memory_order_relaxed);
+  }
+
+  boost::asio::io_context& io_;
+  boost::asio::steady_timer timer_;
+  std::unique_ptr<RecordingReader> reader_;
+  std::vector<std::uint8_t> chunk_;
+  std::size_t chunk_offset_ = 0;
+  std::int64_t chunk_t_ = 0;
+  bool have_chunk_ = false;
+  std::span<std::uint8_t> read_buffer_;
+  IoHandler read_handler_;
+  double speed_;
+  bool paused_;
+  bool loop_;
+  bool finished_ = false;
+  bool closed_ = false;
+  std::int64_t anchor_position_ = 0;
+  Clock::time_point anchor_wall_;
+  std::uint64_t wait_generation_ = 0;
+  std::uint64_t pass_bytes_ = 0;
+
+  std::atomic<std::int64_t> status_position_{0};
+  std::atomic<std::int64_t> status_duration_{0};
+  std::atomic<double> status_speed_{1.0};
+  std::atomic<bool> status_paused_{false};
+  std::atomic<bool> status_loop_{false};
+  std::atomic<bool> status_finished_{false};
+  std::atomic<std::uint64_t> status_loops_{0};
+  std::atomic<std::uint64_t> status_bytes_{0};
+};
+
+ReplayLink::ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::string warning)
+    : core_(std::move(core)), path_(std::move(path)), metadata_(std::move(metadata)), warning_(std::move(warning)) {}
+
+ReplayLink::~ReplayLink() { core_->close(); }
+
+std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const std::string& path,
+                                             ReplayOptions options, std::string& error) {
+  const auto summary = summarize_recording(path, error);
+  if (!summary) return nullptr;
+  if (summary->device_bytes == 0) {
+    error = path + " holds no bytes from a device; nothing to replay";
+    return nullptr;
+  }
+  auto reader = RecordingReader::open(path, error);
+  if (!reader) return nullptr;
+  auto core = std::make_shared<Core>(io, std::move(reader), options, summary->duration_ns);
+  const std::string& warning = summary->error.empty() ? summary->warning : summary->error;
+  return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, warning));
+}
+
+void ReplayLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {
+  core_->read(buffer, std::move(handler));
+}
+
+void ReplayLink::async_write(std::span<const std::uint8_t> bytes, IoHandler handler) {
+  const std::size_t n = bytes.size();
+  boost::asio::post(core_->executor(), [handler = std::move(handler), n] { handler({}, n); });
+}
+
+void ReplayLink::close() { core_->close(); }
+
+bool ReplayLink::set_baud(std::uint32_t /*baud*/, std::string& error) {
+  error = describe() + " has no line rate to set";
+  return false;
+}
+
+std::string ReplayLink::describe() const {
+  return "replay of " + std::filesystem::path(path_).filename().string();
+}
+
+void ReplayLink::set_speed(double speed) {
+  boost::asio::post(core_->executor(), [core = core_, speed] { core->set_speed(speed); });
+}
+void ReplayLink::set_paused(bool paused) {
+  boost::asio::post(core_->executor(), [core = core_, paused] { core->set_paused(paused); });
+}
+void ReplayLink::set_loop(bool loop) {
+  boost::asio::post(core_->executor(), [core = core_, loop] { core->set_loop(loop); });
+}
+void ReplayLink::restart() {
+  boost::asio::post(core_->executor(), [core = core_] { core->restart(); });
+}
+
+ReplayStatus ReplayLink::status() const { return core_->status(); }
+
+}  // namespace ydscope

@@ -1,0 +1,81 @@
+#pragma once
+// ReplayLink: a ByteLink that plays back the device->host bytes of a recording (.ydrec), with
+// the original timing scaled by a speed (1 = as recorded, 4 = four times faster, 0 = as fast as
+// the reader takes them), pause/resume and loop. There is no device behind it: writes are
+// accepted and dropped, accepts_commands() is false, set_baud() is refused.
+//
+// Threads: the ByteLink calls (async_read_some, async_write, close) belong to the thread running
+// the io_context, like every ByteLink. The controls (set_speed, set_paused, set_loop, restart)
+// may be called from any thread: they are posted to the io_context. status() may be read from
+// any thread (atomics).
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <boost/asio/io_context.hpp>
+
+#include "core/link/byte_link.h"
+#include "core/record/recording_metadata.h"
+
+namespace ydscope {
+
+struct ReplayOptions {
+  double speed = 1.0;  // 1 original timing, >1 faster, <1 slower, 0 as fast as possible
+  bool loop = false;   // start again at the end instead of reporting end-of-file
+  bool paused = false;
+};
+
+struct ReplayStatus {
+  std::int64_t position_ns = 0;  // recording time of the playback point
+  std::int64_t duration_ns = 0;  // recording time of the last record
+  double speed = 1.0;
+  bool paused = false;
+  bool loop = false;
+  bool finished = false;         // reached the end without loop (reads now see end-of-file)
+  std::uint64_t loops = 0;       // times playback wrapped around
+  std::uint64_t bytes = 0;       // device->host bytes delivered
+};
+
+class ReplayLink final : public ByteLink {
+ public:
+  // Opens the recording and reads its metadata (a pass over the file). Null plus one sentence
+  // in `error` when it is missing, not a recording, or has no device->host bytes at all.
+  static std::unique_ptr<ReplayLink> open(boost::asio::io_context& io, const std::string& path,
+                                          ReplayOptions options, std::string& error);
+  ~ReplayLink() override;
+
+  // Completes with the next recorded bytes when their time comes; boost::asio::error::eof after
+  // the last one (unless looping); operation_aborted after close().
+  void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override;
+  // Completes at once with every byte "written"; they go nowhere.
+  void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override;
+  void close() override;
+  bool set_baud(std::uint32_t baud, std::string& error) override;
+  bool accepts_commands() const override { return false; }
+  std::string describe() const override;
+
+  // Controls, any thread.
+  void set_speed(double speed);  // negative values are treated as 0
+  void set_paused(bool paused);
+  void set_loop(bool loop);
+  void restart();  // back to the start of the recording, keeping speed/pause/loop
+
+  ReplayStatus status() const;
+  // The recording's metadata, every metadata record merged (model, baud, device info...).
+  const RecordingMetadata& metadata() const { return metadata_; }
+  // A truncated or corrupt tail found while opening, as a sentence (empty when the file is whole).
+  const std::string& warning() const { return warning_; }
+
+  class Core;
+
+ private:
+  ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::string warning);
+
+  std::shared_ptr<Core> core_;
+  std::string path_;
+  RecordingMetadata metadata_;
+  std::string warning_;
+};
+
+}  // namespace ydscope

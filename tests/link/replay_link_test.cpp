@@ -1,0 +1,255 @@
+// ReplayLink: plays back exactly the recorded device->host bytes, pauses, loops, ignores writes,
+// and takes its controls from another thread.
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/post.hpp>
+#include <gtest/gtest.h>
+
+#include "core/link/replay_link.h"
+#include "core/record/recording_writer.h"
+
+namespace ydscope {
+namespace {
+
+namespace fs = std::filesystem;
+using Bytes = std::vector<std::uint8_t>;
+constexpr auto kHangGuard = std::chrono::seconds(10);
+
+class ReplayLinkTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    path_ = (fs::temp_directory_path() /
+             ("ydscope-replay-" + std::to_string(::getpid()) + "-" +
+              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ydrec"))
+                .string();
+  }
+  void TearDown() override { fs::remove(path_); }
+
+  // Device chunks at 1 ms steps, interleaved with commands that must not be replayed.
+  Bytes write_recording(int chunks, std::int64_t step_ns = 1'000'000) {
+    RecordingMetadata metadata;
+    metadata.model = "G1";
+    metadata.baud = 230400;
+    std::string error;
+    auto writer = RecordingWriter::create(path_, metadata, 0, error);
+    EXPECT_TRUE(writer) << error;
+    Bytes device;
+    const Bytes command{0xA5, 0x60};
+    writer->append(Direction::HostToDevice, command, 0);
+    for (int i = 0; i < chunks; ++i) {
+      Bytes chunk(static_cast<std::size_t>(7 + i % 5));
+      for (std::size_t j = 0; j < chunk.size(); ++j) chunk[j] = static_cast<std::uint8_t>(i * 31 + j);
+      writer->append(Direction::DeviceToHost, chunk, step_ns * (i + 1));
+      if (i % 4 == 0) writer->append(Direction::HostToDevice, command, step_ns * (i + 1));
+      device.insert(device.end(), chunk.begin(), chunk.end());
+    }
+    writer->close();
+    return device;
+  }
+
+  // Reads until `want` bytes or an error; returns the bytes and the error that ended it.
+  static std::pair<Bytes, boost::system::error_code> read_until(boost::asio::io_context& io, ByteLink& link,
+                                                                std::size_t want, std::size_t buffer_size = 5) {
+    Bytes got;
+    boost::system::error_code end;
+    std::vector<std::uint8_t> buffer(buffer_size);
+    std::function<void()> more = [&] {
+      link.async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
+        got.insert(got.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
+        if (ec) {
+          end = ec;
+          return;
+        }
+        if (got.size() < want) more();
+      });
+    };
+    more();
+    io.restart();
+    io.run_for(kHangGuard);
+    return {got, end};
+  }
+
+  std::string path_;
+};
+
+TEST_F(ReplayLinkTest, FastestSpeedReturnsExactlyTheDeviceBytesThenEof) {
+  const Bytes device = write_recording(40);
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 0}, error);
+  ASSERT_TRUE(link) << error;
+  EXPECT_FALSE(link->accepts_commands());
+  EXPECT_EQ(link->metadata().model, "G1");
+  EXPECT_EQ(link->metadata().baud, 230400u);
+  EXPECT_TRUE(link->warning().empty());
+  EXPECT_EQ(link->describe(), "replay of " + fs::path(path_).filename().string());
+
+  const auto [bytes, end] = read_until(io, *link, SIZE_MAX, 5);
+  EXPECT_EQ(bytes, device);
+  EXPECT_EQ(end, boost::asio::error::eof);
+  const auto status = link->status();
+  EXPECT_TRUE(status.finished);
+  EXPECT_EQ(status.bytes, device.size());
+  EXPECT_EQ(status.duration_ns, 40'000'000);
+  EXPECT_EQ(status.position_ns, 40'000'000);
+}
+
+TEST_F(ReplayLinkTest, OriginalTimingDeliversTheSameBytes) {
+  const Bytes device = write_recording(10, 200'000);  // 2 ms of recording
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 1.0}, error);
+  ASSERT_TRUE(link) << error;
+  const auto [bytes, end] = read_until(io, *link, SIZE_MAX, 64);
+  EXPECT_EQ(bytes, device);
+  EXPECT_EQ(end, boost::asio::error::eof);
+}
+
+TEST_F(ReplayLinkTest, PausedPlaybackDeliversNothingUntilResumed) {
+  const Bytes device = write_recording(5);
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 0, .paused = true}, error);
+  ASSERT_TRUE(link) << error;
+  std::array<std::uint8_t, 64> buffer{};
+  std::size_t delivered = 0;
+  bool called = false;
+  link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
+    EXPECT_FALSE(ec);
+    delivered = n;
+    called = true;
+  });
+  io.run_for(std::chrono::milliseconds(100));
+  EXPECT_FALSE(called);
+  EXPECT_TRUE(link->status().paused);
+
+  link->set_paused(false);
+  io.restart();
+  io.run_for(kHangGuard);
+  ASSERT_TRUE(called);
+  EXPECT_EQ(Bytes(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(delivered)),
+            Bytes(device.begin(), device.begin() + 7));
+  EXPECT_FALSE(link->status().paused);
+}
+
+TEST_F(ReplayLinkTest, LoopStartsOverAndStopsWhenLoopIsTurnedOff) {
+  const Bytes device = write_recording(6);
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 0, .loop = true}, error);
+  ASSERT_TRUE(link) << error;
+  auto [bytes, end] = read_until(io, *link, device.size() * 3, 3);
+  EXPECT_FALSE(end);
+  ASSERT_GE(bytes.size(), device.size() * 3);
+  for (int pass = 0; pass < 3; ++pass)
+    EXPECT_EQ(Bytes(bytes.begin() + pass * static_cast<std::ptrdiff_t>(device.size()),
+                    bytes.begin() + (pass + 1) * static_cast<std::ptrdiff_t>(device.size())),
+              device)
+        << "pass " << pass;
+  EXPECT_GE(link->status().loops, 2u);
+
+  link->set_loop(false);
+  std::tie(bytes, end) = read_until(io, *link, SIZE_MAX, 64);
+  EXPECT_EQ(end, boost::asio::error::eof);
+  EXPECT_LE(bytes.size(), device.size());  // at most the rest of the current pass
+}
+
+TEST_F(ReplayLinkTest, RestartPlaysFromTheBeginningAgain) {
+  const Bytes device = write_recording(4);
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 0}, error);
+  ASSERT_TRUE(link) << error;
+  auto [first, end1] = read_until(io, *link, SIZE_MAX, 64);
+  EXPECT_EQ(end1, boost::asio::error::eof);
+  link->restart();  // posted: let the io_context apply it before the next read
+  io.restart();
+  io.poll();
+  auto [second, end2] = read_until(io, *link, SIZE_MAX, 64);
+  EXPECT_EQ(second, device);
+  EXPECT_EQ(end2, boost::asio::error::eof);
+}
+
+TEST_F(ReplayLinkTest, WritesAreAcceptedAndIgnored) {
+  write_recording(2);
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {}, error);
+  ASSERT_TRUE(link) << error;
+  const std::array<std::uint8_t, 2> stop{0xA5, 0x65};
+  std::size_t written = 0;
+  link->async_write(stop, [&](const boost::system::error_code& ec, std::size_t n) {
+    EXPECT_FALSE(ec);
+    written = n;
+  });
+  io.run_for(kHangGuard);
+  EXPECT_EQ(written, 2u);
+  EXPECT_FALSE(link->set_baud(512000, error));
+  EXPECT_NE(error.find("no line rate"), std::string::npos);
+}
+
+TEST_F(ReplayLinkTest, CloseAbortsAWaitingRead) {
+  write_recording(2, 60'000'000'000);  // first bytes a minute in
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 1.0}, error);
+  ASSERT_TRUE(link) << error;
+  std::array<std::uint8_t, 8> buffer{};
+  boost::system::error_code seen;
+  link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t) { seen = ec; });
+  boost::asio::post(io, [&] { link->close(); });
+  io.run_for(kHangGuard);
+  EXPECT_EQ(seen, boost::asio::error::operation_aborted);
+}
+
+TEST_F(ReplayLinkTest, ControlsFromAnotherThreadWhileItPlays) {
+  const Bytes device = write_recording(200, 50'000);
+  boost::asio::io_context io;
+  std::string error;
+  auto link = ReplayLink::open(io, path_, {.speed = 4.0, .loop = true}, error);
+  ASSERT_TRUE(link) << error;
+  std::atomic<bool> stop{false};
+  std::thread ui([&] {  // what the UI does: flip controls and read the status every frame
+    for (int i = 0; !stop.load() && i < 2000; ++i) {
+      link->set_speed(i % 3 == 0 ? 0.0 : 8.0);
+      link->set_paused(i % 7 == 3);
+      const auto status = link->status();
+      EXPECT_LE(status.position_ns, status.duration_ns + 1'000'000'000);
+      std::this_thread::yield();
+    }
+    link->set_paused(false);
+    link->set_speed(0.0);
+  });
+  const auto [bytes, end] = read_until(io, *link, device.size() * 2, 16);
+  stop = true;
+  ui.join();
+  EXPECT_FALSE(end);
+  ASSERT_GE(bytes.size(), device.size() * 2);
+  EXPECT_EQ(Bytes(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(device.size())), device);
+}
+
+TEST_F(ReplayLinkTest, OpenErrorsAreSentences) {
+  boost::asio::io_context io;
+  std::string error;
+  EXPECT_FALSE(ReplayLink::open(io, path_ + ".missing", {}, error));
+  EXPECT_NE(error.find("cannot open recording"), std::string::npos) << error;
+
+  std::string create_error;
+  auto writer = RecordingWriter::create(path_, {}, 0, create_error);
+  ASSERT_TRUE(writer) << create_error;
+  const Bytes command{0xA5, 0x90};
+  writer->append(Direction::HostToDevice, command, 10);
+  writer->close();
+  EXPECT_FALSE(ReplayLink::open(io, path_, {}, error));
+  EXPECT_NE(error.find("holds no bytes from a device"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace ydscope
