@@ -1,0 +1,133 @@
+// PortDiscovery over a fake /dev and /sys tree shaped like the kernel's: by-id links, ttyUSB
+// (usb-serial: port -> interface -> device) and ttyACM (interface -> device) layouts.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/link/port_discovery.h"
+
+namespace ydscope {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FakeSystem : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("ydscope-ports-" + std::to_string(::getpid()) + "-" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(root_);
+    fs::create_directories(dev());
+    fs::create_directories(sys());
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  fs::path dev() const { return root_ / "dev"; }
+  fs::path sys() const { return root_ / "sys"; }
+
+  void node(const std::string& name) { std::ofstream(dev() / name).put('\0'); }
+  static void attribute(const fs::path& file, const std::string& value) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << value << "\n";
+  }
+  // A USB device folder with its identity attributes.
+  fs::path usb_device(const std::string& bus_path, const std::string& vid, const std::string& pid,
+                      const std::string& manufacturer, const std::string& product, const std::string& serial) {
+    const fs::path dir = sys() / "devices" / "pci0000:00" / "0000:00:14.0" / "usb1" / bus_path;
+    attribute(dir / "idVendor", vid);
+    attribute(dir / "idProduct", pid);
+    if (!manufacturer.empty()) attribute(dir / "manufacturer", manufacturer);
+    if (!product.empty()) attribute(dir / "product", product);
+    if (!serial.empty()) attribute(dir / "serial", serial);
+    return dir;
+  }
+  // /sys/class/tty/<name>/device -> target (relative link, as the kernel makes them).
+  void class_tty(const std::string& name, const fs::path& target, const std::string& driver) {
+    const fs::path dir = sys() / "class" / "tty" / name;
+    fs::create_directories(dir);
+    fs::create_directories(target);
+    fs::create_symlink(fs::relative(target, dir), dir / "device");
+    if (!driver.empty()) fs::create_symlink("../../../../bus/usb-serial/drivers/" + driver, target / "driver");
+  }
+  void by_id(const std::string& link_name, const std::string& target) {
+    fs::create_directories(dev() / "serial" / "by-id");
+    fs::create_symlink(target, dev() / "serial" / "by-id" / link_name);
+  }
+
+  fs::path root_;
+};
+
+TEST_F(FakeSystem, ListsUsbSerialPortsWithTheirIdentityKnownBridgesFirst) {
+  for (const char* name : {"ttyUSB0", "ttyUSB1", "ttyUSB10", "ttyACM0", "ttyS0", "ttyUSBx", "tty1", "null"}) node(name);
+  const fs::path cp2102 = usb_device("1-1", "10c4", "ea60", "Silicon Labs", "CP2102 USB to UART Bridge Controller", "0001");
+  class_tty("ttyUSB1", cp2102 / "1-1:1.0" / "ttyUSB1", "cp210x");
+  const fs::path ch340 = usb_device("1-3", "1a86", "7523", "", "USB Serial", "");
+  class_tty("ttyUSB0", ch340 / "1-3:1.0" / "ttyUSB0", "ch341-uart");
+  const fs::path arduino = usb_device("1-2", "2341", "0043", "Arduino (www.arduino.cc)", "Uno", "7573");
+  class_tty("ttyACM0", arduino / "1-2:1.0", "");
+  by_id("usb-Silicon_Labs_CP2102_USB_to_UART_Bridge_Controller_0001-if00-port0", "../../ttyUSB1");
+  by_id("usb-gone-if00-port0", "../../ttyUSB7");  // dangling: unplugged a moment ago
+
+  const auto ports = PortDiscovery(dev().string(), sys().string()).list();
+  ASSERT_EQ(ports.size(), 4u);
+  EXPECT_EQ(ports[0].name, "ttyUSB0");
+  EXPECT_EQ(ports[1].name, "ttyUSB1");
+  EXPECT_EQ(ports[2].name, "ttyACM0");
+  EXPECT_EQ(ports[3].name, "ttyUSB10");
+
+  EXPECT_TRUE(ports[0].known_lidar_bridge);
+  EXPECT_EQ(ports[0].usb_id(), "1a86:7523");
+  EXPECT_EQ(ports[0].driver, "ch341-uart");
+  EXPECT_EQ(ports[0].preferred_path(), (dev() / "ttyUSB0").string());
+
+  const auto& cp = ports[1];
+  EXPECT_TRUE(cp.known_lidar_bridge);
+  EXPECT_EQ(cp.path, (dev() / "ttyUSB1").string());
+  EXPECT_EQ(cp.by_id, (dev() / "serial" / "by-id" / "usb-Silicon_Labs_CP2102_USB_to_UART_Bridge_Controller_0001-if00-port0").string());
+  EXPECT_EQ(cp.preferred_path(), cp.by_id);
+  EXPECT_EQ(cp.vendor_id, 0x10c4);
+  EXPECT_EQ(cp.product_id, 0xea60);
+  EXPECT_EQ(cp.manufacturer, "Silicon Labs");
+  EXPECT_EQ(cp.product, "CP2102 USB to UART Bridge Controller");
+  EXPECT_EQ(cp.serial, "0001");
+  EXPECT_EQ(cp.driver, "cp210x");
+  EXPECT_EQ(cp.description(), "Silicon Labs CP2102 USB to UART Bridge Controller (10c4:ea60)");
+
+  EXPECT_FALSE(ports[2].known_lidar_bridge);
+  EXPECT_EQ(ports[2].usb_id(), "2341:0043");  // ttyACM: identity one level up from the interface
+  EXPECT_EQ(ports[2].serial, "7573");
+
+  EXPECT_FALSE(ports[3].vendor_id);  // no sysfs entry
+  EXPECT_EQ(ports[3].description(), "");
+
+  const auto first = first_lidar_candidate(ports);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->name, "ttyUSB0");
+}
+
+TEST_F(FakeSystem, ByIdLinkAloneStillNamesThePort) {
+  by_id("usb-WCH_USB_Serial-if00-port0", "../../ttyUSB3");
+  node("ttyUSB3");
+  const auto ports = PortDiscovery(dev().string(), sys().string()).list();
+  ASSERT_EQ(ports.size(), 1u);
+  EXPECT_EQ(ports[0].name, "ttyUSB3");
+  EXPECT_EQ(ports[0].by_id, (dev() / "serial/by-id/usb-WCH_USB_Serial-if00-port0").string());
+}
+
+TEST_F(FakeSystem, NoPortsAndMissingFoldersAreJustEmpty) {
+  EXPECT_TRUE(PortDiscovery(dev().string(), sys().string()).list().empty());
+  EXPECT_TRUE(PortDiscovery((root_ / "nope").string(), (root_ / "nosys").string()).list().empty());
+  EXPECT_FALSE(first_lidar_candidate({}));
+}
+
+TEST(LidarBridges, KnownChips) {
+  EXPECT_TRUE(is_known_lidar_bridge(0x10c4, 0xea60));
+  EXPECT_TRUE(is_known_lidar_bridge(0x1a86, 0x7523));
+  EXPECT_FALSE(is_known_lidar_bridge(0x0403, 0x6001));  // FTDI: could be anything
+}
+
+}  // namespace
+}  // namespace ydscope
