@@ -98,42 +98,66 @@ void PacketDecoder::emit(const std::uint8_t* p, std::int64_t first_rx_ns, std::i
   sink.on_packet(packet);
 }
 
+void PacketDecoder::drop_pending(std::size_t count) {
+  const auto* rest = pending_.data() + count;
+  const std::size_t rest_size = pending_size_ - count;
+  const auto* next = static_cast<const std::uint8_t*>(std::memchr(rest, kPacketHeader0, rest_size));
+  const std::size_t junk = next ? static_cast<std::size_t>(next - rest) : rest_size;
+  skip(rest, junk);
+  pending_size_ = rest_size - junk;
+  if (pending_size_ > 0) std::memmove(pending_.data(), rest + junk, pending_size_);
+}
+
+bool PacketDecoder::settle_pending(std::int64_t rx_ns, PacketSink& sink) {
+  std::size_t size = 0;
+  switch (check(pending_.data(), pending_size_, size)) {
+    case Check::NeedMore: return false;
+    case Check::Packet:
+      emit(pending_.data(), pending_rx_ns_, rx_ns, sink);
+      drop_pending(size);
+      return true;
+    case Check::BadChecksum:
+      ++counters_.checksum_errors;
+      sink.on_checksum_error();
+      [[fallthrough]];
+    case Check::Bad:
+      skip(pending_.data(), 1);
+      drop_pending(1);
+      return true;
+  }
+  return true;
+}
+
 // Works off the bytes held from earlier chunks, topping them up from `bytes` only as far as a
 // decision needs, so the rest of the chunk can still be checked in place.
 void PacketDecoder::drain_buffer(std::span<const std::uint8_t>& bytes, std::int64_t rx_ns, PacketSink& sink) {
   while (pending_size_ > 0) {
-    std::size_t size = 0;
-    const Check verdict = check(pending_.data(), pending_size_, size);
-    std::size_t drop = 0;
-    if (verdict == Check::NeedMore) {
-      const std::size_t need = bytes_to_decide(pending_.data(), pending_size_);
-      const std::size_t take = std::min(need - pending_size_, bytes.size());
-      if (take == 0) return;
-      std::memcpy(pending_.data() + pending_size_, bytes.data(), take);
-      pending_size_ += take;
-      bytes = bytes.subspan(take);
-      continue;
-    }
-    if (verdict == Check::Packet) {
-      emit(pending_.data(), pending_rx_ns_, rx_ns, sink);
-      drop = size;
-    } else {
-      if (verdict == Check::BadChecksum) {
-        ++counters_.checksum_errors;
-        sink.on_checksum_error();
-      }
-      skip(pending_.data(), 1);
-      drop = 1;
-    }
-    // Keep what follows, realigned on the next AA (anything before it is junk).
-    const auto* rest = pending_.data() + drop;
-    const std::size_t rest_size = pending_size_ - drop;
-    const auto* next = static_cast<const std::uint8_t*>(std::memchr(rest, kPacketHeader0, rest_size));
-    const std::size_t junk = next ? static_cast<std::size_t>(next - rest) : rest_size;
-    skip(rest, junk);
-    pending_size_ = rest_size - junk;
-    if (pending_size_ > 0) std::memmove(pending_.data(), rest + junk, pending_size_);
+    if (settle_pending(rx_ns, sink)) continue;
+    const std::size_t need = bytes_to_decide(pending_.data(), pending_size_);
+    const std::size_t take = std::min(need - pending_size_, bytes.size());
+    if (take == 0) return;
+    std::memcpy(pending_.data() + pending_size_, bytes.data(), take);
+    pending_size_ += take;
+    bytes = bytes.subspan(take);
   }
+}
+
+void PacketDecoder::finish(PacketSink& sink) {
+  while (pending_size_ > 0) {
+    if (settle_pending(pending_rx_ns_, sink)) continue;
+    // The front candidate is incomplete for good. Resync past it only if a whole valid packet
+    // follows inside the held bytes; otherwise the bytes are a real cut-off packet.
+    std::size_t later = 0;
+    for (std::size_t at = 1; at < pending_size_ && later == 0; ++at) {
+      std::size_t size = 0;
+      if (pending_[at] == kPacketHeader0 && check(pending_.data() + at, pending_size_ - at, size) == Check::Packet)
+        later = at;
+    }
+    if (later == 0) break;
+    skip(pending_.data(), later);
+    drop_pending(later);
+  }
+  counters_.pending_bytes = pending_size_;
 }
 
 void PacketDecoder::feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, PacketSink& sink) {

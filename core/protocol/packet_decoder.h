@@ -65,6 +65,11 @@ class PacketDecoder {
   // rx_ns is the receive time of this chunk (any monotonic clock; 0 if unknown).
   void feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, PacketSink& sink);
 
+  // The stream has ended: a held candidate can never complete. If valid packets hide behind it
+  // (a false AA 55 inside damaged bytes claimed a long packet), they are emitted now. A real
+  // cut-off packet stays counted in pending_bytes.
+  void finish(PacketSink& sink);
+
   const PacketCounters& counters() const { return counters_; }
   // Forget buffered bytes and counters (e.g. after a reconnect).
   void reset();
@@ -75,6 +80,10 @@ class PacketDecoder {
   void emit(const std::uint8_t* p, std::int64_t first_rx_ns, std::int64_t rx_ns, PacketSink& sink);
   void skip(const std::uint8_t* p, std::size_t count);
   void drain_buffer(std::span<const std::uint8_t>& bytes, std::int64_t rx_ns, PacketSink& sink);
+  // Removes `count` already-accounted bytes from the front of pending_, then skips to the next AA.
+  void drop_pending(std::size_t count);
+  // Handles a decided candidate at the front of pending_; false when it needs more bytes.
+  bool settle_pending(std::int64_t rx_ns, PacketSink& sink);
 
   bool last_crc_before_zero_;
   PacketCounters counters_;

@@ -30,6 +30,11 @@ void ScanDecoder::feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, 
   packets_.feed(bytes, rx_ns, sink);
 }
 
+void ScanDecoder::finish(LapCallback on_lap) {
+  AssemblingSink sink(assembler_, on_lap);
+  packets_.finish(sink);
+}
+
 DecoderCounters ScanDecoder::counters() const {
   const PacketCounters& p = packets_.counters();
   const LapCounters& l = assembler_.counters();

@@ -38,6 +38,9 @@ class ScanDecoder {
   // valid only during the call (copy it, e.g. into a LapQueue).
   void feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, LapCallback on_lap);
 
+  // End of stream (file decoding): lets packets hidden behind an incomplete false start out.
+  void finish(LapCallback on_lap);
+
   DecoderCounters counters() const;
   const ModelProfile& profile() const { return *profile_; }
   double distance_scale() const { return assembler_.distance_scale(); }

@@ -1,0 +1,237 @@
+// ydscope-cli decode: raw lidar bytes (a file or stdin) -> laps as JSON lines, or just the counts.
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/cli/arguments.h"
+#include "app/cli/cli_command.h"
+#include "core/protocol/function_ref.h"
+#include "core/protocol/interference_filter.h"
+#include "core/protocol/model_profile.h"
+#include "core/protocol/scan_decoder.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli decode --model MODEL [--format jsonl|summary] [--filter LIST]
+                          [--distance-scale X] FILE|-
+
+Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete laps.
+
+  FILE                 the bytes exactly as read from the lidar's port, or - for standard input.
+                       They may start with the scan reply header (A5 5A 05 00 00 40 81) and may hold
+                       junk; junk is skipped and counted, packets with a bad checksum are dropped.
+  --model MODEL        G1, G6, TG15, TG30 or TG50 (any letter case). Picks the distance formula
+                       (G1: S>>2 mm with the interference flag in S&3; G6: S/4 mm; TG: S/2 mm, as
+                       the manuals give them) and, on G1, the CT information and LastCRC byte.
+  --format FORMAT      jsonl (default): one JSON object per complete lap, then a summary line.
+                       summary: only the summary line.
+  --filter LIST        drop G1 points flagged as interference: specular (flag 2), ambient
+                       (flag 3), or both as specular,ambient. Only the lap points change.
+  --distance-scale X   millimetres per raw distance unit (after the flag bits), overriding the
+                       model's value (G1 1, G6 0.25, TG 0.5). Some vendor-SDK firmware uses other
+                       scales (G6 0.5; TG firmware above 1.2 uses 1).
+
+A lap runs from a zero packet (CT bit 0 set), inclusive, to the next one, exclusive. Bytes before
+the first zero packet and a cut-off packet at the end are not part of any lap.
+
+jsonl schema, one object per line:
+  {"type":"lap","index":I,"points":[[angle_deg,range_mm,flag],...],"scan_hz":F|null,
+   "health":H|null,"crc_ok":true|false|null,"packets":N,"checksum_errors":E}
+    index            0 for the first complete lap
+    points           in received order; angle corrected (both levels of the manuals) in [0,360)
+                     with 4 decimals, range in mm with up to 2 decimals (0 = no return), flag S&3 on
+                     G1 and 0 otherwise
+    scan_hz, health  G1 CT information (scan frequency of the zero packet, health bits of packet 3);
+                     null on other models, when the packet was missing, or when crc_ok is false
+    crc_ok           G1: whether the CRC8 of the lap's CT bytes matched the LastCRC byte; else null
+    packets          valid packets in the lap
+    checksum_errors  packets of this lap dropped for a bad checksum
+  {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L}
+    bytes            bytes read; packets: packets with a valid checksum; zero_packets: those with
+                     CT bit 0 set; laps: complete laps
+
+exit status: 0 the input was read to the end; 1 reading failed; 2 usage error (unknown model,
+missing file, bad option).
+
+examples:
+  ydscope-cli decode --model G6 scan.bin
+  ydscope-cli decode --model g1 --filter specular,ambient --format jsonl - < capture.bin
+  ydscope-cli decode --model TG15 --distance-scale 1 --format summary tg.bin
+)";
+
+constexpr std::size_t kReadChunk = 1 << 20;
+constexpr std::size_t kFlushAt = 1 << 16;
+
+// Calls on_chunk for every chunk of the input, in order. Usage error when the file does not exist.
+void read_input(const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
+  std::FILE* file = stdin;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> owned(nullptr, &std::fclose);
+  if (path != "-") {
+    file = std::fopen(path.c_str(), "rb");
+    if (!file) {
+      if (errno == ENOENT) throw UsageError("input file '" + path + "' was not found");
+      throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
+    }
+    owned.reset(file);
+  }
+  std::vector<std::uint8_t> buffer(kReadChunk);
+  for (;;) {
+    const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file);
+    if (got > 0) on_chunk({buffer.data(), got});
+    if (got < buffer.size()) {
+      if (std::ferror(file))
+        throw std::runtime_error("reading '" + path + "' failed: " + std::strerror(errno));
+      if (std::feof(file)) return;
+    }
+  }
+}
+
+// Appends numbers with std::to_chars: fast, locale-free and byte-for-byte deterministic.
+class JsonOut {
+ public:
+  explicit JsonOut(std::FILE* file) : file_(file) { text_.reserve(2 * kFlushAt); }
+  ~JsonOut() { flush(); }
+
+  void raw(std::string_view text) { text_.append(text); }
+  void integer(std::uint64_t value) {
+    std::array<char, 24> digits;
+    const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
+    text_.append(digits.data(), end);
+  }
+  // value rounded to `decimals` places, trailing zeros (and a bare point) removed: 7161.25, 1000.
+  void fixed(double value, int decimals) {
+    std::array<char, 48> digits;
+    auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value, std::chars_format::fixed, decimals).ptr;
+    if (decimals > 0) {
+      while (end[-1] == '0') --end;
+      if (end[-1] == '.') --end;
+    }
+    std::string_view text(digits.data(), static_cast<std::size_t>(end - digits.data()));
+    if (text == "-0") text = "0";
+    text_.append(text);
+  }
+  void maybe_flush() {
+    if (text_.size() >= kFlushAt) flush();
+  }
+  void flush() {
+    if (!text_.empty() && std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size())
+      throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
+    text_.clear();
+  }
+
+ private:
+  std::FILE* file_;
+  std::string text_;
+};
+
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
+  out.raw(R"({"type":"lap","index":)");
+  out.integer(lap.index);
+  out.raw(R"(,"points":[)");
+  bool first = true;
+  for (const LapPoint& point : lap.points) {
+    out.raw(first ? "[" : ",[");
+    first = false;
+    // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
+    const auto degrees = static_cast<double>(point.angle_deg);
+    out.fixed(degrees >= 359.99995 ? 0.0 : degrees, 4);
+    out.raw(",");
+    out.fixed(point.range_mm, 2);
+    out.raw(",");
+    out.integer(static_cast<std::uint64_t>(point.flag));
+    out.raw("]");
+  }
+  const bool trusted = lap.ct_info_trusted();
+  out.raw(R"(],"scan_hz":)");
+  if (g1_info && trusted && lap.scan_hz) out.fixed(*lap.scan_hz, 2);
+  else out.raw("null");
+  out.raw(R"(,"health":)");
+  if (g1_info && trusted && lap.health_bits) out.integer(*lap.health_bits);
+  else out.raw("null");
+  out.raw(R"(,"crc_ok":)");
+  out.raw(lap.crc == CrcVerdict::Ok ? "true" : lap.crc == CrcVerdict::Mismatch ? "false" : "null");
+  out.raw(R"(,"packets":)");
+  out.integer(lap.packets);
+  out.raw(R"(,"checksum_errors":)");
+  out.integer(lap.checksum_errors);
+  out.raw("}\n");
+  out.maybe_flush();
+}
+
+void write_summary(JsonOut& out, const DecoderCounters& c) {
+  out.raw(R"({"type":"summary","bytes":)");
+  out.integer(c.bytes);
+  out.raw(R"(,"packets":)");
+  out.integer(c.packets);
+  out.raw(R"(,"checksum_errors":)");
+  out.integer(c.checksum_errors);
+  out.raw(R"(,"zero_packets":)");
+  out.integer(c.zero_packets);
+  out.raw(R"(,"laps":)");
+  out.integer(c.laps);
+  out.raw("}\n");
+}
+
+InterferenceFilter parse_filter(const std::string& list) {
+  InterferenceFilter filter;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string item = list.substr(start, comma - start);
+    if (item == "specular") filter.specular = true;
+    else if (item == "ambient") filter.ambient_light = true;
+    else throw UsageError("--filter takes specular, ambient or specular,ambient, not '" + list + "'");
+    start = comma + 1;
+  }
+  return filter;
+}
+
+int run_decode(std::span<const std::string> raw) {
+  const Arguments args(raw, {"model", "format", "filter", "distance-scale"}, {});
+  if (args.help_requested()) {
+    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
+    return kExitOk;
+  }
+  const std::string model = args.required("model");
+  const ModelProfile* profile = find_profile(model);
+  if (!profile)
+    throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
+  const std::string format = args.value("format").value_or("jsonl");
+  if (format != "jsonl" && format != "summary")
+    throw UsageError("--format must be jsonl or summary, not '" + format + "'");
+  const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
+  const auto scale = args.number("distance-scale", 1e-6, 1e6);
+  const std::string path = args.single_positional("FILE (or - for standard input)");
+
+  ScanDecoder decoder(*profile, scale);
+  JsonOut out(stdout);
+  const bool jsonl = format == "jsonl";
+  Lap filtered;
+  const auto on_lap = [&](const Lap& lap) {
+    if (!jsonl) return;
+    if (!filter.any()) return write_lap(out, lap, profile->ct_carries_info);
+    filtered = lap;
+    filter_interference(filtered, filter);
+    write_lap(out, filtered, profile->ct_carries_info);
+  };
+  read_input(path, [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, on_lap); });
+  decoder.finish(on_lap);
+  write_summary(out, decoder.counters());
+  out.flush();
+  if (std::fflush(stdout) != 0) throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
+  return kExitOk;
+}
+
+const RegisterCliCommand registration{
+    {"decode", "decode raw lidar bytes into laps (JSON lines or a summary)", kHelpText, &run_decode}};
+
+}  // namespace
+}  // namespace ydscope::cli
