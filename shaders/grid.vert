@@ -1,6 +1,0 @@
-#version 330 core
-// A full-viewport triangle; the grid itself is computed per pixel in grid.frag.
-void main() {
-  vec2 corners[3] = vec2[3](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
-  gl_Position = vec4(corners[gl_VertexID], 0.0, 1.0);
-}
