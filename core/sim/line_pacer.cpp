@@ -7,9 +7,10 @@ namespace ydscope {
 
 LinePacer::LinePacer(std::uint32_t baud) : ns_per_byte_(10.0 * 1e9 / static_cast<double>(baud)) {}
 
-void LinePacer::enqueue(std::int64_t ready_ns, std::span<const std::uint8_t> bytes, std::size_t zero_end) {
+void LinePacer::enqueue(std::int64_t ready_ns, std::span<const std::uint8_t> bytes, std::size_t zero_end,
+                        bool is_packet) {
   if (bytes.empty()) return;
-  chunks_.push_back({ready_ns, bytes.size(), 0, zero_end});
+  chunks_.push_back({ready_ns, bytes.size(), 0, zero_end, is_packet});
   bytes_.insert(bytes_.end(), bytes.begin(), bytes.end());
 }
 
@@ -30,6 +31,7 @@ void LinePacer::drain(std::int64_t now_ns, std::vector<std::uint8_t>& out, std::
     chunk.sent += n;
     line_free_ns_ = start + static_cast<double>(n) * ns_per_byte_;
     if (chunk.sent < chunk.size) break;
+    packets_sent_ += chunk.is_packet ? 1 : 0;
     chunks_.pop_front();
   }
 }

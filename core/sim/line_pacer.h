@@ -20,8 +20,10 @@ class LinePacer {
   explicit LinePacer(std::uint32_t baud);
 
   // Queues bytes ready at ready_ns (non-decreasing). zero_end: offset in `bytes` just past a zero
-  // packet's last byte, reported by drain() so the server can time-stamp it.
-  void enqueue(std::int64_t ready_ns, std::span<const std::uint8_t> bytes, std::size_t zero_end = kNoZeroEnd);
+  // packet's last byte, reported by drain() so the server can time-stamp it. is_packet: count the
+  // chunk in packets_sent() once its last byte is out.
+  void enqueue(std::int64_t ready_ns, std::span<const std::uint8_t> bytes, std::size_t zero_end = kNoZeroEnd,
+               bool is_packet = false);
   // Appends every byte fully sent by now_ns to out; zero_ends gets offsets in out (see enqueue).
   void drain(std::int64_t now_ns, std::vector<std::uint8_t>& out, std::vector<std::size_t>* zero_ends);
   // When the front chunk will have fully left the line; kNever when nothing is queued.
@@ -31,6 +33,7 @@ class LinePacer {
   void clear();
   bool empty() const { return chunks_.empty(); }
   std::size_t queued_bytes() const { return bytes_.size(); }
+  std::uint64_t packets_sent() const { return packets_sent_; }
 
  private:
   struct Chunk {
@@ -38,11 +41,13 @@ class LinePacer {
     std::size_t size;
     std::size_t sent;
     std::size_t zero_end;
+    bool is_packet;
   };
   double ns_per_byte_;
   double line_free_ns_ = -1e300;  // when the last byte handed out finished
   std::deque<Chunk> chunks_;
   std::deque<std::uint8_t> bytes_;
+  std::uint64_t packets_sent_ = 0;
 };
 
 }  // namespace ydscope

@@ -13,7 +13,9 @@ namespace ydscope {
 namespace {
 // Where the correction sits for distant targets; the first guess of the fixed-point iteration.
 const double kFarCorrectionDeg = angle_correction_deg(1e9);
-constexpr int kFixedPointSteps = 3;
+constexpr int kFixedPointSteps = 4;
+constexpr int kBisectionSteps = 14;
+constexpr double kConvergedDeg = 0.01;
 }  // namespace
 
 ScanStream::ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene,
@@ -64,7 +66,8 @@ std::uint8_t ScanStream::packet_ct(std::uint32_t index) const {
   }
 }
 
-StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth) {
+StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth,
+                              std::vector<float>* scene_angles) {
   const bool zero = next_sample_ == 0;
   const std::uint32_t first = next_sample_;
   const std::uint32_t last =
@@ -97,25 +100,62 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
 
   samples_.clear();
   if (truth) truth->clear();
+  if (scene_angles) scene_angles->clear();
   const bool flags = profile_->flag_bits > 0;
   for (std::uint32_t i = 0; i < lsn; ++i) {
     const double level1 = lsn > 1 ? fsa_deg + diff * i / (lsn - 1) : fsa_deg;
     const std::int64_t t = sample_time_ns(first + i) - scene_epoch_ns_;
-    double theta = level1 + kFarCorrectionDeg;
     std::uint16_t word = 0;
     PointFlag flag = PointFlag::None;
     double range = 0.0;
-    for (int k = 0; k < kFixedPointSteps; ++k) {
-      const SceneReturn ret = scene_->sample(normalize_degrees(theta), t);
+    double sampled_at = 0.0;
+    // The direction the host will compute for a range r is level1 + correction(r); find theta with
+    // theta == level1 + correction(range at theta). Returns theta - that (0 at a solution).
+    const auto residual = [&](double theta) {
+      sampled_at = normalize_degrees(theta);
+      const SceneReturn ret = scene_->sample(sampled_at, t);
       range = ret.range_mm > 0.0 && ret.range_mm <= max_range_mm_ ? ret.range_mm : 0.0;
       flag = flags && range > 0.0 ? ret.flag : PointFlag::None;
       word = encode_sample(range, flag, profile_->flag_bits, distance_scale_);
       range = static_cast<double>(word >> profile_->flag_bits) * distance_scale_;
-      theta = level1 + angle_correction_deg(range);
+      return theta - (level1 + angle_correction_deg(range));
+    };
+    // Fixed-point steps settle almost every sample; steep surfaces (where the range changes fast
+    // with the direction) fall back to bisection over the correction's span.
+    double theta = level1 + kFarCorrectionDeg;
+    bool converged = false;
+    for (int k = 0; k < kFixedPointSteps && !converged; ++k) {
+      const double r = residual(theta);
+      converged = range == 0.0 || std::fabs(r) < kConvergedDeg;
+      theta -= r;
+    }
+    if (!converged) {
+      double lo = level1 + kFarCorrectionDeg - 0.2;  // residual < 0: no correction is below -8 degrees
+      double hi = level1 + 1.0;                     // residual > 0 for any range beyond ~140 mm
+      if (residual(lo) < 0.0 && residual(hi) > 0.0) {
+        for (int k = 0; k < kBisectionSteps; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          (residual(mid) < 0.0 ? lo : hi) = mid;
+        }
+        const double r = residual(hi);
+        converged = range > 0.0 && std::fabs(r) < kConvergedDeg;
+        theta = hi - r;
+      }
+    }
+    if (!converged) {
+      // No solution: the direction straddles an edge (near and far surfaces trade places as the
+      // correction moves it). Report no return, as real triangulation lidars drop mixed pixels.
+      word = 0;
+      range = 0.0;
+      flag = PointFlag::None;
+      theta = level1;
+    } else if (range == 0.0) {
+      theta = level1;  // no return: the host applies no correction
     }
     samples_.push_back(word);
     if (truth)
       truth->push_back({static_cast<float>(normalize_degrees(theta)), static_cast<float>(range), flag});
+    if (scene_angles) scene_angles->push_back(static_cast<float>(sampled_at));
   }
 
   packet.packet_offset = bytes.size();

@@ -40,8 +40,10 @@ class ScanStream {
   void start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz);
   void set_health(std::uint8_t bits) { health_ = bits; }
   std::int64_t next_ready_ns() const;
-  // Appends the next packet's bytes to `bytes`; fills `truth` (cleared first) when not null.
-  StreamPacket next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth);
+  // Appends the next packet's bytes to `bytes`. When truth is not null, fills it (cleared first)
+  // with what the host decodes, and scene_angles with the directions the scene was sampled at.
+  StreamPacket next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth,
+                    std::vector<float>* scene_angles = nullptr);
   std::uint32_t samples_per_lap() const { return samples_per_lap_; }
 
  private:

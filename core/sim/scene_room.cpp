@@ -100,9 +100,11 @@ SceneReturn RoomScene::sample(double angle_deg, std::int64_t t_ns) const {
     case Surface::Window: {
       // Sunlight through the glass: no laser return, but the sensor sees bright spots at random
       // ranges for some directions, changing every 50 ms.
+      // Spots are 0.5 degree wide so each has a direction the lidar can resolve.
       const std::int64_t bucket = t_ns / 50'000'000;
-      if (hash_unit(seed_ ^ 0x51u, angle_key / 500, bucket) < 0.35) {
-        out.range_mm = 400 + 2600 * hash_unit(seed_ ^ 0x52u, angle_key, time_key);
+      const std::int64_t spot = angle_key / 500;
+      if (hash_unit(seed_ ^ 0x51u, spot, bucket) < 0.35) {
+        out.range_mm = 400 + 2600 * hash_unit(seed_ ^ 0x52u, spot, bucket);
         out.flag = PointFlag::AmbientLight;
       }
       return out;

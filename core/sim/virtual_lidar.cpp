@@ -271,13 +271,13 @@ void VirtualLidar::advance(std::int64_t now_ns) {
 
 void VirtualLidar::generate_packet() {
   packet_.clear();
-  std::vector<LapPoint> truth_points;
-  const StreamPacket sp = stream_->next(packet_, truth_ ? &truth_points : nullptr);
+  TruthPacket truth;
+  const StreamPacket sp =
+      stream_->next(packet_, truth_ ? &truth.points : nullptr, truth_ ? &truth.scene_angle_deg : nullptr);
   ++counters_.packets;
   if (sp.index == 0) ++counters_.zero_packets;
   counters_.points += sp.lsn;
 
-  TruthPacket truth;
   if (in_stall(sp.ready_ns)) {
     ++fault_counters_.stalled_packets;
     fault_counters_.stalled_bytes += packet_.size();
@@ -299,14 +299,13 @@ void VirtualLidar::generate_packet() {
       ++fault_counters_.corrupted_packets;
       truth.corrupted = true;
     }
-    pacer_->enqueue(sp.ready_ns, packet_, sp.index == 0 ? packet_.size() : LinePacer::kNoZeroEnd);
+    pacer_->enqueue(sp.ready_ns, packet_, sp.index == 0 ? packet_.size() : LinePacer::kNoZeroEnd, true);
   }
   if (truth_) {
     truth.lap = sp.lap;
     truth.index = sp.index;
     truth.ct = sp.ct;
     truth.ready_ns = sp.ready_ns;
-    truth.points = std::move(truth_points);
     truth_(truth);
   }
 }
@@ -331,6 +330,7 @@ void VirtualLidar::produce(std::int64_t now_ns, std::vector<std::uint8_t>& out,
     out.resize(write);
   }
   counters_.bytes_out += out.size() - base;
+  counters_.packets_sent = pacer_->packets_sent();
 }
 
 std::int64_t VirtualLidar::next_event_ns() const {

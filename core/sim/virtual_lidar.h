@@ -72,6 +72,7 @@ struct DeviceCounters {
   std::uint64_t restarts = 0;
   std::uint64_t packets = 0;              // scan packets generated (including those faults kept off the line)
   std::uint64_t zero_packets = 0;
+  std::uint64_t packets_sent = 0;         // scan packets whose last byte has gone out on the line
   std::uint64_t points = 0;
   std::uint64_t bytes_out = 0;            // bytes handed out by produce()
 };
@@ -85,6 +86,9 @@ struct TruthPacket {
   bool corrupted = false;       // sent with a broken checksum
   std::int64_t ready_ns = 0;    // when its last sample was measured
   std::vector<LapPoint> points; // corrected angle in [0, 360), range in mm, flag
+  // Direction the scene was sampled at for each point; equals the point's angle once the
+  // fixed-point iteration converged (it may not at an object's edge).
+  std::vector<float> scene_angle_deg;
 };
 
 class VirtualLidar {
