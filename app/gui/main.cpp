@@ -67,7 +67,8 @@ int run(const ydscope::gui::AppOptions& options) {
       }
       // Screenshot mode: at least N frames, and at least a few laps drawn, but never forever.
       constexpr std::uint64_t kLapsBeforeScreenshot = 5;
-      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+      const auto started = std::chrono::steady_clock::now();
+      const auto deadline = started + std::chrono::seconds(30);
       int frames = 0;
       while (exit_code == 0 && !glfwWindowShouldClose(window) && !app->quit_requested()) {
         // Wait for input or the session's wake-up; the timeout keeps the statistics ticking.
@@ -81,6 +82,10 @@ int run(const ydscope::gui::AppOptions& options) {
             int w = 0, h = 0;
             glfwGetFramebufferSize(window, &w, &h);
             const std::string error = save_framebuffer_png(options.screenshot_path, w, h);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            std::printf("ydscope: wrote %s after %d frames and %llu laps in %.2f s (%.1f ms per frame)\n",
+                        options.screenshot_path.c_str(), frames, static_cast<unsigned long long>(app->laps_shown()), seconds,
+                        1e3 * seconds / frames);
             if (!error.empty()) {
               std::fprintf(stderr, "ydscope: %s\n", error.c_str());
               exit_code = 1;

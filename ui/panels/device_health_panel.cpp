@@ -1,5 +1,6 @@
 // Device (what the lidar says it is) and Health (what it says about itself, bit by bit).
 #include <cstdio>
+#include <optional>
 
 #include <imgui.h>
 
@@ -18,19 +19,44 @@ void row(const char* name, const char* value) {
   ImGui::TextUnformatted(value);
 }
 
-// One lamp per G1 bit: lit red when set.
-void bit_lamps(Model model, std::uint8_t bits, bool trusted) {
+// A round lamp in the current line: red when the bit is set (amber when untrusted), green when clear,
+// grey when unknown.
+void lamp(std::optional<bool> set, bool trusted) {
+  const float r = ImGui::GetTextLineHeight() * 0.32f;
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const ImVec2 c{p.x + r + 2.0f, p.y + ImGui::GetTextLineHeight() * 0.5f};
+  ImU32 colour = IM_COL32(90, 95, 105, 255);
+  if (set) colour = *set ? (trusted ? IM_COL32(255, 80, 70, 255) : IM_COL32(230, 160, 60, 255)) : IM_COL32(70, 200, 110, 255);
+  ImGui::GetWindowDrawList()->AddCircleFilled(c, r, colour, 16);
+  ImGui::Dummy({2.0f * r + 4.0f, ImGui::GetTextLineHeight()});
+}
+
+// G1: one row per module bit, with the live CT value and the A5 92 answer side by side.
+void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std::optional<std::uint8_t> answer) {
+  if (!ImGui::BeginTable("bits", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) return;
+  ImGui::TableSetupColumn("module");
+  ImGui::TableSetupColumn("CT");
+  ImGui::TableSetupColumn("A5 92");
+  ImGui::TableHeadersRow();
   for (const HealthBitInfo& info : health_bits(model)) {
-    const bool set = (bits >> info.bit) & 1u;
-    const ImVec4 lit = trusted ? ImVec4{1.0f, 0.35f, 0.30f, 1.0f} : ImVec4{0.85f, 0.6f, 0.3f, 1.0f};
-    ImGui::TextColored(set ? lit : ImVec4{0.30f, 0.75f, 0.45f, 1.0f}, set ? "\xE2\x80\xA2" : "\xE2\x80\xA2");
-    ImGui::SameLine();
-    ImGui::Text("bit %u %s", static_cast<unsigned>(info.bit), std::string(info.name).c_str());
-    if (set) {
-      ImGui::SameLine();
-      ImGui::TextColored(lit, "SET");
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::Text("%u %s", static_cast<unsigned>(info.bit), std::string(info.name).c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("when set: %s", std::string(info.meaning).c_str());
+    ImGui::TableSetColumnIndex(1);
+    lamp(ct ? std::optional<bool>(((*ct >> info.bit) & 1u) != 0) : std::nullopt, ct_trusted);
+    ImGui::TableSetColumnIndex(2);
+    lamp(answer ? std::optional<bool>(((*answer >> info.bit) & 1u) != 0) : std::nullopt, true);
+  }
+  ImGui::EndTable();
+  // Spell out what is wrong, so nobody has to hover to find out.
+  const std::uint8_t any = static_cast<std::uint8_t>(ct.value_or(0) | answer.value_or(0));
+  for (const HealthBitInfo& info : health_bits(model)) {
+    if ((any >> info.bit) & 1u) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", std::string(info.name).c_str(), std::string(info.meaning).c_str());
+      ImGui::PopTextWrapPos();
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(info.meaning).c_str());
   }
 }
 
@@ -85,34 +111,28 @@ void draw_health_panel(UiModel& m, Session& session) {
   const Model model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
 
   if (reports_health_bits(model)) {
-    section("live, from CT (every lap)");
-    if (m.ct_health) {
-      if (!m.ct_health_trusted) {
-        ImGui::TextColored({1.0f, 0.7f, 0.3f, 1.0f}, "untrusted: this lap's CRC8 failed");
-        help_marker("G1 spreads health over the packets of a lap; when the LastCRC byte disagrees a packet was lost, so the CT information may belong to another index.");
-      }
-      bit_lamps(model, *m.ct_health, m.ct_health_trusted);
-    } else {
-      ImGui::TextDisabled("no lap has carried health yet");
+    std::optional<std::uint8_t> answer;
+    if (s.health) answer = s.health->status;
+    bit_table(model, m.ct_health, m.ct_health_trusted, answer);
+    if (m.ct_health && !m.ct_health_trusted) {
+      ImGui::TextColored({1.0f, 0.7f, 0.3f, 1.0f}, "CT health untrusted: the lap's CRC8 failed");
+      help_marker("G1 spreads health over the packets of a lap; when the LastCRC byte disagrees a packet was lost, so the CT information may belong to another index.");
     }
-  }
-
-  section(s.health ? (s.health->command == Command::HealthStatusBits ? "A5 92 answer" : "A5 91 answer") : "health command");
-  if (s.health) {
+    ImGui::TextDisabled("CT: live, every lap.  A5 92: asked at connect.");
+  } else if (s.health) {
     const HealthReport& h = *s.health;
-    if (reports_health_bits(model)) {
-      bit_lamps(model, h.status, true);
-    } else {
-      const HealthStatusInfo info = health_status_info(h.status);
-      ImGui::TextColored(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f}, "status %u: %s",
-                         static_cast<unsigned>(h.status), std::string(info.name).c_str());
-      ImGui::TextDisabled("%s", std::string(info.meaning).c_str());
-      ImGui::Text("error code 0x%04X", static_cast<unsigned>(h.error_code));
-    }
-    if (!h.summary.empty()) ImGui::TextDisabled("device says: %s", h.summary.c_str());
+    const HealthStatusInfo info = health_status_info(h.status);
+    lamp(info.is_problem, true);
+    ImGui::SameLine();
+    ImGui::TextColored(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f}, "%s status %u: %s",
+                       h.command == Command::HealthStatusBits ? "A5 92" : "A5 91", static_cast<unsigned>(h.status),
+                       std::string(info.name).c_str());
+    ImGui::TextDisabled("%s", std::string(info.meaning).c_str());
+    ImGui::Text("error code 0x%04X", static_cast<unsigned>(h.error_code));
   } else {
     ImGui::TextDisabled("not asked yet");
   }
+  if (s.health && !s.health->summary.empty()) ImGui::TextDisabled("device says: %s", s.health->summary.c_str());
   const bool connected = link_state_connected(s.state);
   if (!connected || s.busy) ImGui::BeginDisabled();
   if (ImGui::Button("Ask health now")) session.refresh_health();

@@ -70,35 +70,38 @@ float draw_sidebar(UiModel& m, ViewSettings& v, Session& session) {
 }
 
 void draw_view_header(const UiModel& m, float view_left, float view_width) {
+  // Along the bottom of the view, clear of the spoke labels at the edges: state line on the left,
+  // the banner (why this source) centred above it.
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float pad = 14.0f;
-  float y = pad;
+  const float pad = 44.0f;
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float bottom = ImGui::GetMainViewport()->WorkSize.y;
   const SessionSnapshot& s = m.snap;
-  char line[256];
-  const char* model = s.device && s.device->profile ? s.device->profile->name.data() : nullptr;
+  char text[256];
+  const char* model = s.device && s.device->profile ? s.device->profile->name.data() : "";
   const auto measured = m.scan_rate.hz();
-  std::snprintf(line, sizeof line, "%s%s%s   %s", model ? model : "", model ? "   " : "",
-                std::string(link_state_name(s.state)).c_str(), measured ? "" : "");
-  if (measured) {
-    char rate[32];
-    std::snprintf(rate, sizeof rate, "%.1f Hz   %zu pts", *measured, m.points_in_lap);
-    std::snprintf(line + std::strlen(line), sizeof line - std::strlen(line), "%s", rate);
-  }
+  int n = std::snprintf(text, sizeof text, "%s%s%s", model, *model ? "  \xE2\x80\xA2  " : "",
+                        std::string(link_state_name(s.state)).c_str());
+  if (measured && n > 0) std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured, m.points_in_lap);
   const ImU32 state_colour = s.state == LinkState::Scanning ? IM_COL32(110, 230, 150, 255)
                              : (s.state == LinkState::Failed ? IM_COL32(255, 110, 100, 255) : IM_COL32(255, 200, 90, 255));
-  draw->AddText({view_left + pad, y}, state_colour, line);
-  y += ImGui::GetTextLineHeightWithSpacing();
+  float y = bottom - pad;
+  draw->AddText({view_left + 16.0f, y}, state_colour, text);
+  if (s.state != LinkState::Scanning && !s.message.empty()) {
+    y -= line;
+    draw->AddText({view_left + 16.0f, y}, IM_COL32(255, 200, 120, 255), s.message.c_str());
+  }
+  if (m.paused_view) {
+    y -= line;
+    draw->AddText({view_left + 16.0f, y}, IM_COL32(255, 255, 255, 220), "frozen (P to resume)");
+  }
   if (!m.banner.empty()) {
     const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str());
     const float x = view_left + (view_width - size.x) * 0.5f;
-    draw->AddRectFilled({x - 12.0f, y - 4.0f}, {x + size.x + 12.0f, y + size.y + 6.0f}, IM_COL32(20, 40, 70, 200), 6.0f);
-    draw->AddText({x, y}, IM_COL32(200, 225, 255, 255), m.banner.c_str());
-    y += size.y + 12.0f;
+    const float by = 44.0f;
+    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, 215), 8.0f);
+    draw->AddText({x, by}, IM_COL32(210, 230, 255, 255), m.banner.c_str());
   }
-  if (s.state != LinkState::Scanning && !s.message.empty()) {
-    draw->AddText({view_left + pad, y}, IM_COL32(255, 200, 120, 255), s.message.c_str());
-  }
-  if (m.paused_view) draw->AddText({view_left + pad, y + 22.0f}, IM_COL32(255, 255, 255, 200), "frozen (P to resume)");
 }
 
 }  // namespace ydscope::ui

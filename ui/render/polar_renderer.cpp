@@ -2,51 +2,71 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "ui/embedded_shaders.h"
 
 namespace ydscope::ui {
+namespace {
+
+// GL takes attribute offsets as pointers by its API's convention.
+const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(bytes)); }
+
+}  // namespace
 
 PolarRenderer::PolarRenderer()
-    : points_("point", shaders::k_points_vert, shaders::k_points_frag),
-      grid_("grid", shaders::k_grid_vert, shaders::k_grid_frag) {
-  glGenVertexArrays(1, &points_vao_);
-  glGenBuffers(1, &points_vbo_);
-  glBindVertexArray(points_vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, points_vbo_);
+    : point_program_("point", shaders::k_points_vert, shaders::k_points_frag),
+      line_program_("grid line", shaders::k_lines_vert, shaders::k_lines_frag) {
+  glGenVertexArrays(1, &points_.vao);
+  glGenBuffers(1, &points_.vbo);
+  glBindVertexArray(points_.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, points_.vbo);
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(PointVertex), nullptr);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(PointVertex), offset(offsetof(PointVertex, x)));
   glEnableVertexAttribArray(1);
-  // The colour follows the two floats; GL takes the offset as a pointer by its API's convention.
-  glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointVertex),
-                        reinterpret_cast<const void*>(offsetof(PointVertex, colour)));
+  glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointVertex), offset(offsetof(PointVertex, colour)));
+
+  glGenVertexArrays(1, &lines_.vao);
+  glGenBuffers(1, &lines_.vbo);
+  glBindVertexArray(lines_.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, lines_.vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(LineVertex), offset(offsetof(LineVertex, x)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(LineVertex), offset(offsetof(LineVertex, edge_px)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LineVertex), offset(offsetof(LineVertex, colour)));
   glBindVertexArray(0);
-  glGenVertexArrays(1, &empty_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 PolarRenderer::~PolarRenderer() {
-  glDeleteBuffers(1, &points_vbo_);
-  glDeleteVertexArrays(1, &points_vao_);
-  glDeleteVertexArrays(1, &empty_vao_);
+  for (Buffer* b : {&points_, &lines_}) {
+    glDeleteBuffers(1, &b->vbo);
+    glDeleteVertexArrays(1, &b->vao);
+  }
+}
+
+void PolarRenderer::upload(Buffer& buffer, const void* data, std::size_t bytes, std::size_t count) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
+  if (bytes > buffer.capacity_bytes) buffer.capacity_bytes = std::max(bytes, buffer.capacity_bytes * 2);
+  // Orphan the old storage so the driver need not wait for the previous frame's draw.
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(buffer.capacity_bytes), nullptr, GL_STREAM_DRAW);
+  if (bytes > 0) glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  buffer.count = count;
 }
 
 void PolarRenderer::upload_points(std::span<const PointVertex> points) {
-  glBindBuffer(GL_ARRAY_BUFFER, points_vbo_);
-  const std::size_t bytes = points.size_bytes();
-  if (bytes > capacity_bytes_) {
-    capacity_bytes_ = std::max(bytes, capacity_bytes_ * 2);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity_bytes_), nullptr, GL_STREAM_DRAW);
-  } else {
-    // Orphan the old storage so the driver need not wait for the previous frame's draw.
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(capacity_bytes_), nullptr, GL_STREAM_DRAW);
-  }
-  if (bytes > 0) glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), points.data());
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  count_ = points.size();
+  upload(points_, points.data(), points.size_bytes(), points.size());
 }
 
-void PolarRenderer::draw(const ViewTransform& view, const GridLayout& grid, const PolarStyle& style,
-                         float framebuffer_scale, int framebuffer_height) const {
+void PolarRenderer::upload_grid(std::span<const LineVertex> lines) {
+  upload(lines_, lines.data(), lines.size_bytes(), lines.size());
+}
+
+void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
+                         int framebuffer_height) const {
   const Vec2 origin = view.viewport_origin() * framebuffer_scale;
   const Vec2 size = view.viewport_size() * framebuffer_scale;
   const auto x = static_cast<GLint>(std::lround(origin.x));
@@ -58,33 +78,23 @@ void PolarRenderer::draw(const ViewTransform& view, const GridLayout& grid, cons
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
+  const NdcTransform ndc = view.ndc_transform();
 
-  if (style.show_grid) {
-    grid_.use();
-    const Vec2 centre_fb{static_cast<float>(x) + 0.5f * static_cast<float>(w),
-                         static_cast<float>(y) + 0.5f * static_cast<float>(h)};
-    glUniform2f(grid_.uniform("u_centre_px"), centre_fb.x, centre_fb.y);
-    glUniform2f(grid_.uniform("u_centre_world"), view.centre_world().x, view.centre_world().y);
-    glUniform1f(grid_.uniform("u_px_per_mm"), view.px_per_mm() * framebuffer_scale);
-    glUniform1f(grid_.uniform("u_ring_step_mm"), grid.ring_step_mm);
-    glUniform1f(grid_.uniform("u_spoke_step_deg"),
-                grid.spoke_angles_deg.size() > 1 ? grid.spoke_angles_deg[1] - grid.spoke_angles_deg[0] : 30.0f);
-    glUniform1f(grid_.uniform("u_max_ring_mm"), grid.ring_radii_mm.empty() ? 0.0f : grid.ring_radii_mm.back());
-    glUniform4fv(grid_.uniform("u_ring_colour"), 1, style.ring_rgba);
-    glUniform4fv(grid_.uniform("u_spoke_colour"), 1, style.spoke_rgba);
-    glUniform4fv(grid_.uniform("u_glow_colour"), 1, style.glow_rgba);
-    glBindVertexArray(empty_vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (style.show_grid && lines_.count > 0) {
+    line_program_.use();
+    glUniform4f(line_program_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);
+    glUniform1f(line_program_.uniform("u_half_width_px"), 0.5f * style.grid.line_width_px);  // edge_px is in window pixels too
+    glBindVertexArray(lines_.vao);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines_.count));
   }
 
-  if (count_ > 0) {
+  if (points_.count > 0) {
     glEnable(GL_PROGRAM_POINT_SIZE);
-    points_.use();
-    const NdcTransform ndc = view.ndc_transform();
-    glUniform4f(points_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);
-    glUniform1f(points_.uniform("u_point_size"), style.point_size_px * framebuffer_scale);
-    glBindVertexArray(points_vao_);
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count_));
+    point_program_.use();
+    glUniform4f(point_program_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);
+    glUniform1f(point_program_.uniform("u_point_size"), style.point_size_px * framebuffer_scale);
+    glBindVertexArray(points_.vao);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_.count));
   }
   glBindVertexArray(0);
   glUseProgram(0);

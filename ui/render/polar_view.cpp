@@ -1,6 +1,8 @@
 #include "ui/render/polar_view.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <imgui.h>
 
@@ -48,7 +50,7 @@ void PolarView::handle_input(ViewSettings& settings) {
 
 void PolarView::auto_range(const LapHistory& history, const ViewSettings& settings) {
   if (!settings.auto_range || history.empty()) return;
-  const float target = robust_max_range_mm(history.newest().points) * 1.08f;
+  const float target = robust_max_range_mm(history.newest().points, 0.93f) * 1.1f;
   if (target <= 0.0f) return;
   // Refit only on a real change, so the rings do not breathe with every lap's noise.
   if (!fitted_once_ || std::fabs(target - fitted_range_mm_) > 0.15f * fitted_range_mm_) {
@@ -71,11 +73,19 @@ const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const 
 
 void PolarView::draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale,
                      int framebuffer_height) {
-  const GridLayout grid = layout_grid(view_);
   PolarStyle style;
   style.point_size_px = settings.point_size_px;
   style.show_grid = settings.show_grid;
-  renderer_.draw(view_, grid, style, framebuffer_scale, framebuffer_height);
+  const float key[5] = {view_.px_per_mm(), view_.centre_world().x, view_.centre_world().y, view_.viewport_size().x,
+                        view_.viewport_size().y};
+  if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
+    std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
+    grid_ = layout_grid(view_);
+    build_grid_geometry(view_, grid_, style.grid, grid_lines_);
+    renderer_.upload_grid(grid_lines_);
+  }
+  const GridLayout& grid = grid_;
+  renderer_.draw(view_, style, framebuffer_scale, framebuffer_height);
 
   OverlayInput overlay;
   overlay.view = &view_;

@@ -40,6 +40,10 @@ class PolarView {
   ViewTransform view_;
   Ruler ruler_;
   std::vector<PointVertex> vertices_;
+  std::vector<LineVertex> grid_lines_;
+  GridLayout grid_;
+  // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height).
+  float grid_key_[5] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
   bool dirty_ = true;
   bool fitted_once_ = false;

@@ -1,0 +1,134 @@
+// Frame cost of the polar view under whatever OpenGL the display offers (Mesa llvmpipe under
+// xvfb-run in CI): the analytic grid pass, the point pass at 2k / 20k / 200k points, and the CPU
+// side that builds the vertex array. Run: xvfb-run -a -s "-screen 0 1280x800x24" bench_frame
+// Each GPU iteration ends with glFinish so the time is the work, not the queueing.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "ui/render/polar_renderer.h"
+#include "ui/view/grid_geometry.h"
+#include "ui/view/grid_layout.h"
+#include "ui/view/lap_history.h"
+#include "ui/view/point_cloud.h"
+
+namespace {
+
+using namespace ydscope;
+using namespace ydscope::ui;
+
+constexpr int kWidth = 1280;
+constexpr int kHeight = 800;
+
+// One hidden 1280x800 GL 3.3 core window for the whole run.
+struct GlWindow {
+  GLFWwindow* window = nullptr;
+  std::unique_ptr<PolarRenderer> renderer;
+  GlWindow() {
+    if (!std::getenv("DISPLAY") || !glfwInit()) return;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    window = glfwCreateWindow(kWidth, kHeight, "bench", nullptr, nullptr);
+    if (!window) return;
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(0);
+    renderer = std::make_unique<PolarRenderer>();
+  }
+  ~GlWindow() {
+    renderer.reset();
+    if (window) glfwDestroyWindow(window);
+    glfwTerminate();
+  }
+};
+
+GlWindow& gl() {
+  static GlWindow instance;
+  return instance;
+}
+
+// A room-like lap of `n` points: walls at 3-6 m with some texture.
+Lap make_lap(std::size_t n, std::uint64_t index) {
+  Lap lap;
+  lap.index = index;
+  lap.points.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float a = 360.0f * static_cast<float>(i) / static_cast<float>(n);
+    const float r = 3000.0f + 1500.0f * std::fabs(std::sin(a * 0.05f)) + 40.0f * std::sin(a * 3.1f + static_cast<float>(index));
+    lap.points[i] = {a, r, PointFlag::None};
+  }
+  return lap;
+}
+
+ViewTransform make_view() {
+  ViewTransform view;
+  view.set_viewport({430.0f, 0.0f}, {static_cast<float>(kWidth - 430), static_cast<float>(kHeight)});
+  view.fit_range(6500.0f);
+  return view;
+}
+
+// `points` in total spread over 10 laps of persistence, as the app shows them.
+void fill_history(LapHistory& history, std::size_t points) {
+  history.set_depth(10);
+  for (std::uint64_t i = 0; i < 10; ++i) history.push(make_lap(points / 10, i));
+}
+
+void BM_BuildCloud(benchmark::State& state) {
+  LapHistory history;
+  fill_history(history, static_cast<std::size_t>(state.range(0)));
+  std::vector<PointVertex> out;
+  for (auto _ : state) {
+    build_point_cloud(history, ColourParams{}, InterferenceSettings{}, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_BuildCloud)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
+
+// draw_grid: 0 points only, 1 grid + points. Uploads a fresh cloud every frame, as with a new lap.
+void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
+  GlWindow& g = gl();
+  if (!g.renderer) {
+    state.SkipWithError("no OpenGL 3.3 window (no DISPLAY?); run under xvfb-run");
+    return;
+  }
+  LapHistory history;
+  fill_history(history, static_cast<std::size_t>(state.range(0)));
+  std::vector<PointVertex> cloud;
+  build_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+  const ViewTransform view = make_view();
+  const GridLayout grid = layout_grid(view);
+  PolarStyle style;
+  style.show_grid = draw_grid;
+  std::vector<LineVertex> lines;
+  build_grid_geometry(view, grid, style.grid, lines);
+  g.renderer->upload_grid(lines);
+  if (!draw_points) cloud.clear();
+  for (auto _ : state) {
+    glViewport(0, 0, kWidth, kHeight);
+    glClearColor(0.03f, 0.04f, 0.06f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    g.renderer->upload_points(cloud);
+    g.renderer->draw(view, style, 1.0f, kHeight);
+    glFinish();
+  }
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_GridOnly(benchmark::State& state) { frame_bench(state, true, false); }
+void BM_PointsOnly(benchmark::State& state) { frame_bench(state, false, true); }
+void BM_GridAndPoints(benchmark::State& state) { frame_bench(state, true, true); }
+BENCHMARK(BM_GridOnly)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PointsOnly)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GridAndPoints)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,92 @@
+// The real app under the display CTest provides (scripts/test wraps ctest in xvfb-run): render
+// frames with laps arriving, write a screenshot, exit 0; the PNG must show points and panels.
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace {
+
+#ifdef YDSCOPE_APP_PATH
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::unique_ptr<unsigned char, void (*)(void*)> pixels{nullptr, stbi_image_free};
+  const unsigned char* at(int x, int y) const { return pixels.get() + (static_cast<std::size_t>(y) * width + x) * 3; }
+};
+
+Image load_png(const std::string& path) {
+  Image image;
+  int channels = 0;
+  image.pixels.reset(stbi_load(path.c_str(), &image.width, &image.height, &channels, 3));
+  return image;
+}
+
+// A saturated, bright pixel: a scan point (the grid and panels are greys and dim blues).
+bool is_point_pixel(const unsigned char* p) {
+  const int hi = std::max({p[0], p[1], p[2]});
+  const int lo = std::min({p[0], p[1], p[2]});
+  return hi > 140 && hi - lo > 70;
+}
+
+bool is_text_pixel(const unsigned char* p) { return p[0] > 150 && p[1] > 150 && p[2] > 150; }
+
+int run_app(const std::string& arguments) {
+  const std::filesystem::path home = std::filesystem::path(testing::TempDir()) / "ydscope-ui-home";
+  std::filesystem::create_directories(home);
+  const std::string command = "XDG_CONFIG_HOME='" + home.string() + "' '" + YDSCOPE_APP_PATH + "' " + arguments;
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void expect_scan_and_panels(const std::string& png) {
+  const Image image = load_png(png);
+  ASSERT_TRUE(image.pixels) << "the app did not write a readable PNG at " << png;
+  ASSERT_GE(image.width, 640);
+  ASSERT_GE(image.height, 400);
+  // Panels: the sidebar takes the left third and holds light text.
+  int text = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width / 3; ++x) text += is_text_pixel(image.at(x, y));
+  EXPECT_GT(text, 500) << "no panel text in the left third";
+  // Points: bright coloured pixels in the view, within the rings around its centre.
+  const int view_left = image.width * 35 / 100;
+  const int cx = (view_left + image.width) / 2;
+  const int cy = image.height / 2;
+  const int radius = std::min(image.width - view_left, image.height) / 2;
+  int points = 0;
+  int far_background = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = view_left; x < image.width; ++x) {
+      const int dx = x - cx;
+      const int dy = y - cy;
+      if (dx * dx + dy * dy <= radius * radius) points += is_point_pixel(image.at(x, y));
+      const unsigned char* p = image.at(x, y);
+      far_background += (p[0] < 40 && p[1] < 40 && p[2] < 50);
+    }
+  }
+  EXPECT_GT(points, 300) << "no lidar points drawn inside the rings";
+  EXPECT_GT(far_background, (image.width - view_left) * image.height / 3) << "the view is not the dark background";
+}
+
+TEST(AppSmoke, VirtualG6RendersAScreenshot) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-sim.png";
+  std::filesystem::remove(png);
+  ASSERT_EQ(run_app("--sim G6 --screenshot '" + png + "' --frames 120"), 0);
+  expect_scan_and_panels(png);
+}
+
+TEST(AppSmoke, BadOptionsExitWithUsageError) {
+  EXPECT_EQ(run_app("--sim NOPE --screenshot x.png 2>/dev/null"), 2);
+  EXPECT_EQ(run_app("--frames 3 2>/dev/null"), 2);
+}
+
+#endif
+
+}  // namespace
