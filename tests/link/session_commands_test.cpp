@@ -52,7 +52,7 @@ TEST(SessionCommands, ScanFrequencyOutsideTheModelRangeIsRefusedWithASentence) {
 
 TEST(SessionCommands, RangingTargetIsReachedByCycling) {
   Scanning tg(Model::TG15);
-  for (const std::uint16_t target : {4, 8, 9, 4}) {
+  for (const std::uint16_t target : std::initializer_list<std::uint16_t>{4, 8, 9, 4}) {
     const CommandResult r = run_command([&](CommandCallback done) { tg.session.set_ranging_khz(target, done); });
     ASSERT_TRUE(r.ok) << r.what << ": " << r.message;
     EXPECT_EQ(r.ranging_khz, target);

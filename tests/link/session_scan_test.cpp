@@ -1,0 +1,121 @@
+// Scanning through the session: the laps in the queue are the laps the virtual lidar sent, point
+// for point; corrupted and dropped bytes are counted and never stop the stream.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+#include "session_test_support.h"
+
+namespace ydscope {
+namespace {
+
+using namespace test;
+
+// Every point the virtual lidar generated, by lap, as a correct host must decode it.
+class Truth {
+ public:
+  void attach(SimServer& server) {
+    server.with_device([this](VirtualLidar& d) {
+      d.set_truth([this](const TruthPacket& packet) {
+        std::lock_guard lock(mutex_);
+        auto& lap = laps_[packet.lap];
+        lap.insert(lap.end(), packet.points.begin(), packet.points.end());
+      });
+    });
+  }
+  std::vector<LapPoint> lap(std::uint64_t index) {
+    std::lock_guard lock(mutex_);
+    return laps_[index];
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::uint64_t, std::vector<LapPoint>> laps_;
+};
+
+class ScanEveryModel : public ::testing::TestWithParam<Model> {};
+
+TEST_P(ScanEveryModel, LapsEqualWhatTheVirtualLidarSent) {
+  SimOnPty sim(GetParam());
+  Truth truth;
+  truth.attach(sim.server());
+  Session session(64);
+  session.connect(config_for(sim.port(), GetParam()));
+  std::vector<Lap> laps;
+  ASSERT_EQ(take_laps(session, 12, &laps), 12u) << describe_snapshot(session.snapshot());
+  session.disconnect();
+  wait_for_state(session, LinkState::Idle);
+  for (std::size_t i = 0; i < laps.size(); ++i) {
+    const Lap& lap = laps[i];
+    EXPECT_EQ(lap.index, i);
+    const std::vector<LapPoint> expected = truth.lap(lap.index);
+    ASSERT_EQ(lap.points.size(), expected.size()) << "lap " << lap.index;
+    for (std::size_t p = 0; p < expected.size(); ++p) {
+      ASSERT_NEAR(lap.points[p].range_mm, expected[p].range_mm, 0.3) << "lap " << lap.index << " point " << p;
+      const double angle_error = std::fabs(lap.points[p].angle_deg - expected[p].angle_deg);
+      ASSERT_LT(std::min(angle_error, 360.0 - angle_error), 0.02) << "lap " << lap.index << " point " << p;
+      ASSERT_EQ(lap.points[p].flag, expected[p].flag) << "lap " << lap.index << " point " << p;
+    }
+    EXPECT_EQ(lap.checksum_errors, 0u);
+    if (GetParam() == Model::G1) {
+      EXPECT_EQ(lap.crc, CrcVerdict::Ok) << "lap " << lap.index;
+    }
+  }
+  const CounterSnapshot c = session.snapshot().counters;
+  EXPECT_EQ(c.checksum_errors, 0u);
+  EXPECT_EQ(c.crc8_failures, 0u);
+  EXPECT_EQ(c.queue_drops, 0u);
+  EXPECT_GE(c.laps, 12u);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllModels, ScanEveryModel,
+                         ::testing::Values(Model::G1, Model::G6, Model::TG15, Model::TG30, Model::TG50),
+                         [](const auto& param_info) { return std::string(profile_for(param_info.param).name); });
+
+TEST(SessionScan, CorruptedAndDroppedBytesAreCountedAndTheStreamGoesOn) {
+  SimOnPty sim(Model::G1, [](SimServerOptions& o) {
+    o.device.faults.corrupt_byte_rate = 0.002;
+    o.device.faults.drop_byte_rate = 0.0005;
+    o.device.seed = 7;
+  });
+  Session session(64);
+  session.connect(config_for(sim.port(), Model::G1));
+  ASSERT_EQ(take_laps(session, 20), 20u) << describe_snapshot(session.snapshot());
+  EXPECT_EQ(session.snapshot().state, LinkState::Scanning);
+  session.disconnect();
+  wait_for_state(session, LinkState::Idle);
+  const CounterSnapshot c = session.snapshot().counters;
+  const FaultCounters injected = sim.counters().faults;
+  EXPECT_GT(c.checksum_errors, 0u);
+  EXPECT_LE(c.checksum_errors, injected.corrupted_packets + injected.dropped_bytes);
+  EXPECT_GT(c.resync_bytes, 0u);
+  EXPECT_GT(c.crc8_failures, 0u) << "a dropped byte loses a packet, so that lap's CT CRC8 fails";
+}
+
+TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
+  SimOnPty sim(Model::TG15);
+  Session session(64);
+  session.connect(config_for(sim.port(), Model::TG15));
+  std::vector<Lap> before;
+  ASSERT_EQ(take_laps(session, 2, &before), 2u);
+  session.set_distance_scale(1.0);  // the vendor SDK's TG scale for newer firmware: twice the manual's
+  ASSERT_TRUE(session.wait_until([](const SessionSnapshot& s) { return s.distance_scale == 1.0; }, kPatience)
+                  .distance_scale == 1.0);
+  Lap lap;
+  while (session.laps().try_pop(lap)) {
+  }
+  std::vector<Lap> after;
+  ASSERT_EQ(take_laps(session, 2, &after), 2u);
+  // The room does not move much between laps: compare the largest range.
+  const auto max_range = [](const Lap& l) {
+    float m = 0;
+    for (const auto& p : l.points) m = std::max(m, p.range_mm);
+    return m;
+  };
+  EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 2.0, 0.2);
+}
+
+}  // namespace
+}  // namespace ydscope
