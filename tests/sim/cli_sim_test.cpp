@@ -1,0 +1,193 @@
+// `ydscope-cli sim` run as a user would: a subprocess, its stdout, its symlink, and signals.
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "sim/host_port.h"
+
+extern char** environ;
+
+namespace ydscope {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A child process with its stdout and stderr on pipes.
+class Child {
+ public:
+  explicit Child(std::vector<std::string> args) {
+    args.insert(args.begin(), YDSCOPE_CLI_PATH);
+    int out[2];
+    int err[2];
+    EXPECT_EQ(::pipe(out), 0);
+    EXPECT_EQ(::pipe(err), 0);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+    posix_spawn_file_actions_adddup2(&actions, err[1], 2);
+    posix_spawn_file_actions_addclose(&actions, out[0]);
+    posix_spawn_file_actions_addclose(&actions, err[0]);
+    std::vector<char*> argv;
+    for (auto& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    EXPECT_EQ(::posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ), 0);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(out[1]);
+    ::close(err[1]);
+    out_ = out[0];
+    err_ = err[0];
+  }
+  ~Child() {
+    if (pid_ > 0 && !reaped_) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+    ::close(out_);
+    ::close(err_);
+  }
+
+  // One line of stdout, or "" after the timeout.
+  std::string read_line(std::chrono::milliseconds timeout) {
+    std::string line;
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < end) {
+      pollfd p{out_, POLLIN, 0};
+      if (::poll(&p, 1, 50) <= 0) continue;
+      char c = 0;
+      if (::read(out_, &c, 1) != 1) break;
+      if (c == '\n') return line;
+      line += c;
+    }
+    return "";
+  }
+
+  // Everything the child wrote (call after it exited).
+  std::string read_stdout() { return read_all(out_); }
+  std::string read_stderr() { return read_all(err_); }
+
+  void signal(int number) { ::kill(pid_, number); }
+
+  // Exit status, or -1 if it did not exit within the timeout.
+  int wait(std::chrono::milliseconds timeout) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < end) {
+      int status = 0;
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        reaped_ = true;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      }
+      std::this_thread::sleep_for(10ms);
+    }
+    return -1;
+  }
+
+ private:
+  static std::string read_all(int fd) {
+    std::string text;
+    char buffer[512];
+    ssize_t n = 0;
+    while ((n = ::read(fd, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
+    return text;
+  }
+
+  pid_t pid_ = -1;
+  int out_ = -1;
+  int err_ = -1;
+  bool reaped_ = false;
+};
+
+std::filesystem::path temp_dir() {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("ydscope-cli-sim-test-" + std::to_string(::getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(CliSim, PtyReadyLinkAndCleanExitOnSigterm) {
+  const auto dir = temp_dir();
+  const std::string link = (dir / "lidar").string();
+  Child child({"sim", "--model", "g6", "--pty", link, "--scene", "room", "--seed", "3"});
+  const std::string line = child.read_line(10s);
+  ASSERT_EQ(line.rfind("ready /dev/pts/", 0), 0u) << "stdout: '" << line << "'";
+  const std::string device = line.substr(6);
+  EXPECT_EQ(std::filesystem::read_symlink(link).string(), device);
+
+  test::HostPort host;  // it is a working lidar
+  ASSERT_TRUE(host.open_device(link));
+  ASSERT_TRUE(host.send({0xA5, 0x90}));
+  const auto reply = host.read(27, 3s);
+  ASSERT_EQ(reply.size(), 27u);
+  EXPECT_EQ(reply[7], 13);  // G6
+  host.close();
+
+  child.signal(SIGTERM);
+  EXPECT_EQ(child.wait(10s), 0);
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(link)));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliSim, SigintAlsoExitsCleanlyOnTcp) {
+  Child child({"sim", "--model", "TG15", "--tcp", "127.0.0.1:0"});
+  const std::string line = child.read_line(10s);
+  ASSERT_EQ(line.rfind("ready tcp://127.0.0.1:", 0), 0u) << line;
+  const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
+  test::HostPort host;
+  ASSERT_TRUE(host.connect_tcp(port));
+  ASSERT_TRUE(host.send({0xA5, 0x90}));
+  const auto reply = host.read(27, 3s);
+  ASSERT_EQ(reply.size(), 27u);
+  EXPECT_EQ(reply[7], 100);  // TG15
+  child.signal(SIGINT);
+  EXPECT_EQ(child.wait(10s), 0);
+}
+
+TEST(CliSim, UnknownModelListsTheValidOnes) {
+  Child child({"sim", "--model", "X4", "--pty", "/tmp/never-made"});
+  EXPECT_EQ(child.wait(10s), 2);
+  const std::string err = child.read_stderr();
+  EXPECT_NE(err.find("unknown model 'X4'"), std::string::npos) << err;
+  EXPECT_NE(err.find("G1, G6, TG15, TG30, TG50"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
+}
+
+TEST(CliSim, ExistingLinkPathIsRefusedAndKept) {
+  const auto dir = temp_dir();
+  const std::string link = (dir / "file").string();
+  std::ofstream(link) << "keep";
+  Child child({"sim", "--model", "G1", "--pty", link});
+  EXPECT_EQ(child.wait(10s), 1);
+  EXPECT_NE(child.read_stderr().find("already exists"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::is_regular_file(link));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliSim, NeedsExactlyOneTransport) {
+  Child neither({"sim", "--model", "G1"});
+  EXPECT_EQ(neither.wait(10s), 2);
+  EXPECT_NE(neither.read_stderr().find("exactly one of --pty"), std::string::npos);
+  Child both({"sim", "--model", "G1", "--pty", "/tmp/x", "--tcp", "127.0.0.1:0"});
+  EXPECT_EQ(both.wait(10s), 2);
+}
+
+TEST(CliSim, HelpExplainsEveryFaultOption) {
+  Child child({"sim", "--help"});
+  EXPECT_EQ(child.wait(10s), 0);
+  const std::string help = child.read_stdout();
+  for (const char* option : {"--corrupt", "--drop", "--lose-packets", "--stall-ms", "--stall-every-ms", "--health-bits",
+                             "--junk", "--unplug-after-ms", "--replug-after-ms", "--zero-log", "--scene", "--seed"})
+    EXPECT_NE(help.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace ydscope
