@@ -9,12 +9,15 @@ namespace ydscope {
 
 namespace {
 
-// Into [0, 360) without fmod in the common case (at most one turn out of range).
+// Into [0, 360). The hot path is branch-free: an interpolated and corrected angle is at most one
+// turn out of range (first-level angles < 512, corrections within (-90, 90)); anything else
+// (only possible from a corrupted-but-valid-checksum packet) takes the slow path.
 float wrap_degrees(double degrees) {
-  if (degrees >= 360.0) degrees -= 360.0;
-  else if (degrees < 0.0) degrees += 360.0;
-  if (degrees < 0.0 || degrees >= 360.0) degrees = normalize_degrees(degrees);
-  auto narrow = static_cast<float>(degrees);
+  degrees += degrees < 0.0 ? 360.0 : 0.0;
+  degrees -= degrees >= 360.0 ? 360.0 : 0.0;
+  if (degrees < 0.0 || degrees >= 360.0) [[unlikely]]
+    degrees = normalize_degrees(degrees);
+  const auto narrow = static_cast<float>(degrees);
   // 359.99999... can round up to 360.0f.
   return narrow >= 360.0f ? 0.0f : narrow;
 }
@@ -109,12 +112,18 @@ void LapAssembler::add_points(const PacketView& packet) {
   const unsigned flag_bits = profile_->flag_bits;
   const unsigned flag_mask = (1u << flag_bits) - 1u;
   const auto scale = static_cast<float>(distance_scale_);
+  // Grow once per packet and write in place: no per-point capacity checks.
+  std::vector<LapPoint>& points = building_.points;
+  const std::size_t base = points.size();
+  points.resize(base + count);
+  LapPoint* out = points.data() + base;
+  const std::uint8_t* bytes = packet.sample_bytes;
   for (std::size_t i = 0; i < count; ++i) {
-    const std::uint16_t sample = packet.sample(i);
+    const auto sample = static_cast<std::uint16_t>(bytes[2 * i] | (bytes[2 * i + 1] << 8));
     const auto raw_distance = static_cast<std::uint16_t>(sample >> flag_bits);
     const double angle = first + step * static_cast<double>(i) + corrections_[raw_distance];
-    building_.points.push_back(LapPoint{wrap_degrees(angle), static_cast<float>(raw_distance) * scale,
-                                        static_cast<PointFlag>(sample & flag_mask)});
+    out[i] = LapPoint{wrap_degrees(angle), static_cast<float>(raw_distance) * scale,
+                      static_cast<PointFlag>(sample & flag_mask)};
   }
 }
 
