@@ -12,6 +12,7 @@
 
 #include "app/cli/arguments.h"
 #include "app/cli/cli_command.h"
+#include "app/cli/lap_json.h"
 #include "core/protocol/function_ref.h"
 #include "core/protocol/interference_filter.h"
 #include "core/protocol/model_profile.h"
@@ -68,7 +69,6 @@ examples:
 )";
 
 constexpr std::size_t kReadChunk = 1 << 20;
-constexpr std::size_t kFlushAt = 1 << 16;
 
 // Calls on_chunk for every chunk of the input, in order. Usage error when the file does not exist.
 void read_input(const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
@@ -92,92 +92,6 @@ void read_input(const std::string& path, FunctionRef<void(std::span<const std::u
       if (std::feof(file)) return;
     }
   }
-}
-
-// Appends numbers with std::to_chars: fast, locale-free and byte-for-byte deterministic.
-class JsonOut {
- public:
-  explicit JsonOut(std::FILE* file) : file_(file) { text_.reserve(2 * kFlushAt); }
-  ~JsonOut() { flush(); }
-
-  void raw(std::string_view text) { text_.append(text); }
-  void integer(std::uint64_t value) {
-    std::array<char, 24> digits;
-    const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
-    text_.append(digits.data(), end);
-  }
-  // value rounded to `decimals` places, trailing zeros (and a bare point) removed: 7161.25, 1000.
-  void fixed(double value, int decimals) {
-    std::array<char, 48> digits;
-    auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value, std::chars_format::fixed, decimals).ptr;
-    if (decimals > 0) {
-      while (end[-1] == '0') --end;
-      if (end[-1] == '.') --end;
-    }
-    std::string_view text(digits.data(), static_cast<std::size_t>(end - digits.data()));
-    if (text == "-0") text = "0";
-    text_.append(text);
-  }
-  void maybe_flush() {
-    if (text_.size() >= kFlushAt) flush();
-  }
-  void flush() {
-    if (!text_.empty() && std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size())
-      throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
-    text_.clear();
-  }
-
- private:
-  std::FILE* file_;
-  std::string text_;
-};
-
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
-  out.raw(R"({"type":"lap","index":)");
-  out.integer(lap.index);
-  out.raw(R"(,"points":[)");
-  bool first = true;
-  for (const LapPoint& point : lap.points) {
-    out.raw(first ? "[" : ",[");
-    first = false;
-    // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
-    const auto degrees = static_cast<double>(point.angle_deg);
-    out.fixed(degrees >= 359.99995 ? 0.0 : degrees, 4);
-    out.raw(",");
-    out.fixed(point.range_mm, 2);
-    out.raw(",");
-    out.integer(static_cast<std::uint64_t>(point.flag));
-    out.raw("]");
-  }
-  const bool trusted = lap.ct_info_trusted();
-  out.raw(R"(],"scan_hz":)");
-  if (g1_info && trusted && lap.scan_hz) out.fixed(*lap.scan_hz, 2);
-  else out.raw("null");
-  out.raw(R"(,"health":)");
-  if (g1_info && trusted && lap.health_bits) out.integer(*lap.health_bits);
-  else out.raw("null");
-  out.raw(R"(,"crc_ok":)");
-  out.raw(lap.crc == CrcVerdict::Ok ? "true" : lap.crc == CrcVerdict::Mismatch ? "false" : "null");
-  out.raw(R"(,"packets":)");
-  out.integer(lap.packets);
-  out.raw(R"(,"checksum_errors":)");
-  out.integer(lap.checksum_errors);
-  out.raw("}\n");
-  out.maybe_flush();
-}
-
-void write_summary(JsonOut& out, const DecoderCounters& c) {
-  out.raw(R"({"type":"summary","bytes":)");
-  out.integer(c.bytes);
-  out.raw(R"(,"packets":)");
-  out.integer(c.packets);
-  out.raw(R"(,"checksum_errors":)");
-  out.integer(c.checksum_errors);
-  out.raw(R"(,"zero_packets":)");
-  out.integer(c.zero_packets);
-  out.raw(R"(,"laps":)");
-  out.integer(c.laps);
-  out.raw("}\n");
 }
 
 InterferenceFilter parse_filter(const std::string& list) {

@@ -273,7 +273,7 @@ void Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std::int64_t 
     if (wake_) wake_();
   });
   const DecoderCounters c = decoder_->counters();
-  counters_.set_decoder_totals(c.packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches);
+  counters_.set_decoder_totals({c.packets, c.zero_packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches});
 }
 
 // ---- the tick: rates, stall watchdog, power-down keepalive ----------------------------------

@@ -2,18 +2,19 @@
 
 namespace ydscope {
 
-void SessionCounters::set_decoder_totals(std::uint64_t packets, std::uint64_t laps, std::uint64_t checksum_errors,
-                                         std::uint64_t resync_bytes, std::uint64_t crc8_failures) {
-  current_ = {packets, laps, checksum_errors, resync_bytes, crc8_failures};
-  packets_.store(base_.packets + packets, std::memory_order_relaxed);
-  laps_.store(base_.laps + laps, std::memory_order_relaxed);
-  checksum_errors_.store(base_.checksum_errors + checksum_errors, std::memory_order_relaxed);
-  resync_bytes_.store(base_.resync_bytes + resync_bytes, std::memory_order_relaxed);
-  crc8_failures_.store(base_.crc8_failures + crc8_failures, std::memory_order_relaxed);
+void SessionCounters::set_decoder_totals(const DecoderTotals& totals) {
+  current_ = totals;
+  packets_.store(base_.packets + totals.packets, std::memory_order_relaxed);
+  zero_packets_.store(base_.zero_packets + totals.zero_packets, std::memory_order_relaxed);
+  laps_.store(base_.laps + totals.laps, std::memory_order_relaxed);
+  checksum_errors_.store(base_.checksum_errors + totals.checksum_errors, std::memory_order_relaxed);
+  resync_bytes_.store(base_.resync_bytes + totals.resync_bytes, std::memory_order_relaxed);
+  crc8_failures_.store(base_.crc8_failures + totals.crc8_failures, std::memory_order_relaxed);
 }
 
 void SessionCounters::close_decoder_epoch() {
   base_.packets += current_.packets;
+  base_.zero_packets += current_.zero_packets;
   base_.laps += current_.laps;
   base_.checksum_errors += current_.checksum_errors;
   base_.resync_bytes += current_.resync_bytes;
@@ -42,6 +43,7 @@ CounterSnapshot SessionCounters::read(std::int64_t now_ns) const {
   s.bytes_received = bytes_received_.load(std::memory_order_relaxed);
   s.bytes_sent = bytes_sent_.load(std::memory_order_relaxed);
   s.packets = packets_.load(std::memory_order_relaxed);
+  s.zero_packets = zero_packets_.load(std::memory_order_relaxed);
   s.laps = laps_.load(std::memory_order_relaxed);
   s.checksum_errors = checksum_errors_.load(std::memory_order_relaxed);
   s.resync_bytes = resync_bytes_.load(std::memory_order_relaxed);

@@ -12,6 +12,7 @@ struct CounterSnapshot {
   std::uint64_t bytes_received = 0;
   std::uint64_t bytes_sent = 0;
   std::uint64_t packets = 0;          // valid scan packets
+  std::uint64_t zero_packets = 0;     // of which CT bit 0 was set
   std::uint64_t laps = 0;             // laps pushed or dropped
   std::uint64_t checksum_errors = 0;  // scan packets dropped for a bad XOR checksum
   std::uint64_t resync_bytes = 0;     // bytes skipped while hunting a packet header
@@ -39,8 +40,10 @@ class SessionCounters {
   void add_refused() { bump(refused_commands_, 1); }
   void add_queue_drop() { bump(queue_drops_, 1); }
   // The decoder's totals for the current link are added to what earlier links decoded.
-  void set_decoder_totals(std::uint64_t packets, std::uint64_t laps, std::uint64_t checksum_errors,
-                          std::uint64_t resync_bytes, std::uint64_t crc8_failures);
+  struct DecoderTotals {
+    std::uint64_t packets = 0, zero_packets = 0, laps = 0, checksum_errors = 0, resync_bytes = 0, crc8_failures = 0;
+  };
+  void set_decoder_totals(const DecoderTotals& totals);
   // Folds the current link's decoder totals into the base before a new decoder starts at zero.
   void close_decoder_epoch();
   // Once a second: recompute the rates from the totals.
@@ -54,13 +57,10 @@ class SessionCounters {
   static void bump(std::atomic<std::uint64_t>& counter, std::uint64_t n) {
     counter.store(counter.load(std::memory_order_relaxed) + n, std::memory_order_relaxed);
   }
-  struct DecoderTotals {
-    std::uint64_t packets = 0, laps = 0, checksum_errors = 0, resync_bytes = 0, crc8_failures = 0;
-  };
 
   std::atomic<std::uint64_t> bytes_received_{0}, bytes_sent_{0}, drained_bytes_{0}, reconnects_{0},
       refused_commands_{0}, queue_drops_{0};
-  std::atomic<std::uint64_t> packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0}, crc8_failures_{0};
+  std::atomic<std::uint64_t> packets_{0}, zero_packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0}, crc8_failures_{0};
   std::atomic<std::int64_t> last_byte_ns_{0};
   std::atomic<double> bytes_per_s_{0}, packets_per_s_{0}, laps_per_s_{0};
   // I/O thread only.

@@ -1,0 +1,59 @@
+// ydscope-cli info: what the lidar on a port says about itself, as one JSON object.
+#include <cstdio>
+#include <string>
+
+#include "app/cli/arguments.h"
+#include "app/cli/cli_command.h"
+#include "app/cli/lap_json.h"
+#include "app/cli/session_cli.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli info --port PATH [--model auto|MODEL] [--baud B|auto]
+
+Stops the lidar if it was scanning, asks for its device info, health, scan frequency and ranging
+frequency, and prints them as one JSON object on one line.
+
+options:
+  --port PATH     serial port (/dev/ttyUSB0, a pseudo-terminal) or tcp://host:port (ser2net)
+  --model MODEL   auto (default: detected from the device-info model code), G1, G6, TG15, TG30, TG50
+  --baud B        line rate; default the model's (G1 230400, G6/TG 512000; both tried when the
+                  model is auto); auto tries 230400, 512000, 128000 and 115200
+
+output:
+  {"model":"G6","model_code":13,"firmware":"1.2","hardware":1,"serial":"...",
+   "health":{"command":"A5 91","status":0,"error_code":0,"summary":"ok"}|null,
+   "scan_hz":8|null,"ranging_khz":9|null,"port":"/dev/ttyUSB0 at 512000 baud","baud":512000,
+   "distance_scale":0.25}
+  health, scan_hz and ranging_khz are null when the device did not answer that question.
+
+exit status: 0 the device answered; 1 it could not be opened or did not answer (one sentence on
+stderr says which and what to try); 2 usage error.
+
+example:
+  ydscope-cli info --port /dev/ttyUSB0
+)";
+
+int run_info(std::span<const std::string> raw) {
+  const Arguments args(raw, session_value_options({}), {});
+  if (args.help_requested()) {
+    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
+    return kExitOk;
+  }
+  const SessionConfig config = session_config_from(args, /*scan=*/false);
+  Session session(1);
+  const SessionSnapshot s = connect_or_throw(session, config);
+  JsonOut out(stdout);
+  out.raw("{");
+  write_device_fields(out, s);
+  out.raw("}\n");
+  out.flush();
+  return std::fflush(stdout) == 0 ? kExitOk : kExitFailure;
+}
+
+const RegisterCliCommand registration{
+    {"info", "print a lidar's model, firmware, serial, health and frequencies as JSON", kHelpText, &run_info}};
+
+}  // namespace
+}  // namespace ydscope::cli

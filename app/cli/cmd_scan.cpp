@@ -1,0 +1,126 @@
+// ydscope-cli scan: N laps from a live lidar, as decode prints them.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "app/cli/arguments.h"
+#include "app/cli/cli_command.h"
+#include "app/cli/lap_json.h"
+#include "app/cli/session_cli.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli scan --port PATH [--model auto|MODEL] [--baud B|auto] --laps N [--format jsonl|summary]
+
+Starts the lidar scanning, prints N complete laps and a summary, then stops the lidar.
+Ctrl-C stops early (the lidar is stopped and the summary printed).
+
+options:
+  --port PATH           serial port or tcp://host:port
+  --model MODEL         auto (default), G1, G6, TG15, TG30, TG50
+  --baud B              line rate, or auto to probe (see `ydscope-cli info --help`)
+  --laps N              laps to print (1 to 1000000)
+  --format FORMAT       jsonl (default): one JSON object per lap, then the summary; summary: only it
+  --distance-scale MM   mm per distance count, overriding the model's (see `decode --help`)
+
+output: the schema of `ydscope-cli decode --help` (lap objects, then one summary object, whose
+bytes count everything the lidar sent, replies included).
+
+exit status: 0 N laps were printed; 1 the device failed or stopped sending (one sentence on
+stderr); 2 usage error.
+
+example:
+  ydscope-cli scan --port /dev/ttyUSB0 --laps 10 --format jsonl
+)";
+
+std::atomic<bool> interrupted{false};
+extern "C" void on_signal(int) { interrupted.store(true); }
+
+// The I/O thread calls wake() after every lap it queues; the main thread sleeps until then.
+struct LapBell {
+  std::mutex mutex;
+  std::condition_variable rang;
+  bool pending = false;
+  void ring() {
+    {
+      std::lock_guard lock(mutex);
+      pending = true;
+    }
+    rang.notify_one();
+  }
+  void wait(std::chrono::milliseconds at_most) {
+    std::unique_lock lock(mutex);
+    rang.wait_for(lock, at_most, [this] { return pending; });
+    pending = false;
+  }
+};
+
+int run_scan(std::span<const std::string> raw) {
+  const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {});
+  if (args.help_requested()) {
+    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
+    return kExitOk;
+  }
+  const auto laps_wanted = args.integer("laps", 1, 1'000'000);
+  if (!laps_wanted) throw UsageError("--laps N is required (how many laps to print)");
+  const std::string format = args.value("format").value_or("jsonl");
+  if (format != "jsonl" && format != "summary")
+    throw UsageError("--format must be jsonl or summary, not '" + format + "'");
+  SessionConfig config = session_config_from(args, /*scan=*/true);
+  config.distance_scale = args.number("distance-scale", 1e-6, 1e6);
+
+  LapBell bell;
+  Session session(64, [&bell] { bell.ring(); });
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  const SessionSnapshot started = connect_or_throw(session, config);
+  if (config.distance_scale) session.set_distance_scale(config.distance_scale);
+  const bool g1_info = started.device && started.device->profile && started.device->profile->ct_carries_info;
+  const bool jsonl = format == "jsonl";
+
+  JsonOut out(stdout);
+  Lap lap;
+  std::int64_t printed = 0;
+  std::string failure;
+  while (printed < *laps_wanted && !interrupted.load()) {
+    if (session.laps().try_pop(lap)) {
+      if (jsonl) write_lap(out, lap, g1_info);
+      ++printed;
+      continue;
+    }
+    out.flush();
+    const SessionSnapshot s = session.snapshot();
+    if (s.state != LinkState::Scanning && s.state != LinkState::CommandInProgress) {
+      failure = s.message.empty() ? "the scan stopped (" + describe_snapshot(s) + ")" : s.message;
+      break;
+    }
+    bell.wait(std::chrono::milliseconds(200));
+  }
+  session.disconnect();  // stops the lidar before the summary
+  const SessionSnapshot end = session.wait_until(
+      [](const SessionSnapshot& s) { return s.state == LinkState::Idle || s.state == LinkState::Failed; },
+      std::chrono::seconds(3));
+  DecoderCounters summary;
+  summary.bytes = end.counters.bytes_received;
+  summary.packets = end.counters.packets;
+  summary.checksum_errors = end.counters.checksum_errors;
+  summary.zero_packets = end.counters.zero_packets;
+  summary.laps = end.counters.laps;
+  write_summary(out, summary);
+  out.flush();
+  std::fflush(stdout);
+  if (!failure.empty()) throw std::runtime_error(failure);
+  return kExitOk;
+}
+
+const RegisterCliCommand registration{
+    {"scan", "print N laps from a live lidar (JSON lines or a summary)", kHelpText, &run_scan}};
+
+}  // namespace
+}  // namespace ydscope::cli

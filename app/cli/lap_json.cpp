@@ -1,0 +1,109 @@
+#include "app/cli/lap_json.h"
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <stdexcept>
+
+namespace ydscope::cli {
+
+JsonOut::~JsonOut() {
+  try {
+    flush();
+  } catch (...) {
+  }
+}
+
+void JsonOut::integer(std::uint64_t value) {
+  std::array<char, 24> digits;
+  const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
+  text_.append(digits.data(), end);
+}
+
+void JsonOut::fixed(double value, int decimals) {
+  std::array<char, 48> digits;
+  auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value, std::chars_format::fixed, decimals).ptr;
+  if (decimals > 0) {
+    while (end[-1] == '0') --end;
+    if (end[-1] == '.') --end;
+  }
+  std::string_view text(digits.data(), static_cast<std::size_t>(end - digits.data()));
+  if (text == "-0") text = "0";
+  text_.append(text);
+}
+
+void JsonOut::string(std::string_view text) {
+  text_.push_back('"');
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      text_.push_back('\\');
+      text_.push_back(c);
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      text_.append(escaped);
+    } else {
+      text_.push_back(c);
+    }
+  }
+  text_.push_back('"');
+}
+
+void JsonOut::flush() {
+  if (!text_.empty() && std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size()) {
+    text_.clear();
+    throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
+  }
+  text_.clear();
+}
+
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
+  out.raw(R"({"type":"lap","index":)");
+  out.integer(lap.index);
+  out.raw(R"(,"points":[)");
+  bool first = true;
+  for (const LapPoint& point : lap.points) {
+    out.raw(first ? "[" : ",[");
+    first = false;
+    // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
+    const auto degrees = static_cast<double>(point.angle_deg);
+    out.fixed(degrees >= 359.99995 ? 0.0 : degrees, 4);
+    out.raw(",");
+    out.fixed(point.range_mm, 2);
+    out.raw(",");
+    out.integer(static_cast<std::uint64_t>(point.flag));
+    out.raw("]");
+  }
+  const bool trusted = lap.ct_info_trusted();
+  out.raw(R"(],"scan_hz":)");
+  if (g1_info && trusted && lap.scan_hz) out.fixed(*lap.scan_hz, 2);
+  else out.raw("null");
+  out.raw(R"(,"health":)");
+  if (g1_info && trusted && lap.health_bits) out.integer(*lap.health_bits);
+  else out.raw("null");
+  out.raw(R"(,"crc_ok":)");
+  out.raw(lap.crc == CrcVerdict::Ok ? "true" : lap.crc == CrcVerdict::Mismatch ? "false" : "null");
+  out.raw(R"(,"packets":)");
+  out.integer(lap.packets);
+  out.raw(R"(,"checksum_errors":)");
+  out.integer(lap.checksum_errors);
+  out.raw("}\n");
+  out.maybe_flush();
+}
+
+void write_summary(JsonOut& out, const DecoderCounters& c) {
+  out.raw(R"({"type":"summary","bytes":)");
+  out.integer(c.bytes);
+  out.raw(R"(,"packets":)");
+  out.integer(c.packets);
+  out.raw(R"(,"checksum_errors":)");
+  out.integer(c.checksum_errors);
+  out.raw(R"(,"zero_packets":)");
+  out.integer(c.zero_packets);
+  out.raw(R"(,"laps":)");
+  out.integer(c.laps);
+  out.raw("}\n");
+}
+
+}  // namespace ydscope::cli

@@ -1,0 +1,45 @@
+#pragma once
+// The JSON lines `decode` defined for laps and its summary (schema in `ydscope-cli decode --help`),
+// shared by every subcommand that prints laps (decode, scan) so they all speak one schema.
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "core/protocol/lap.h"
+#include "core/protocol/scan_decoder.h"
+
+namespace ydscope::cli {
+
+// Appends numbers with std::to_chars: fast, locale-free and byte-for-byte deterministic.
+class JsonOut {
+ public:
+  static constexpr std::size_t kFlushAt = 1 << 16;
+
+  explicit JsonOut(std::FILE* file) : file_(file) { text_.reserve(2 * kFlushAt); }
+  ~JsonOut();  // flushes; a failure there is lost, so call flush() yourself to see it
+
+  void raw(std::string_view text) { text_.append(text); }
+  void integer(std::uint64_t value);
+  // value rounded to `decimals` places, trailing zeros (and a bare point) removed: 7161.25, 1000.
+  void fixed(double value, int decimals);
+  // A JSON string literal with quotes and escapes.
+  void string(std::string_view text);
+  void maybe_flush() {
+    if (text_.size() >= kFlushAt) flush();
+  }
+  // Throws std::runtime_error with a sentence when writing fails.
+  void flush();
+
+ private:
+  std::FILE* file_;
+  std::string text_;
+};
+
+// {"type":"lap",...} and a newline; g1_info: the model carries CT information (scan_hz, health).
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info);
+// {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L} and a newline.
+void write_summary(JsonOut& out, const DecoderCounters& counters);
+
+}  // namespace ydscope::cli

@@ -1,0 +1,96 @@
+#include "app/cli/session_cli.h"
+
+#include <stdexcept>
+
+#include "core/link/device_probe.h"
+#include "core/link/link_address.h"
+
+namespace ydscope::cli {
+
+namespace {
+// Baud probing at 4 rates with retries and start-up commands stays well inside this.
+constexpr std::chrono::seconds kConnectPatience{60};
+}  // namespace
+
+std::set<std::string> session_value_options(std::set<std::string> more) {
+  more.insert({"port", "model", "baud"});
+  return more;
+}
+
+SessionConfig session_config_from(const Arguments& args, bool scan) {
+  SessionConfig config;
+  config.address = args.required("port");
+  std::string error;
+  if (!parse_link_address(config.address, error)) throw UsageError(error);
+  const std::string model = args.value("model").value_or("auto");
+  if (model != "auto") {
+    const ModelProfile* profile = find_profile(model);
+    if (!profile)
+      throw UsageError("unknown model '" + model + "'; valid models are auto, " + std::string(model_names()));
+    config.model = profile->model;
+  }
+  const std::string baud = args.value("baud").value_or("");
+  if (baud == "auto") {
+    config.probe_baud = true;
+  } else if (!baud.empty()) {
+    config.baud = static_cast<std::uint32_t>(*args.integer("baud", 50, 4'000'000));
+  }
+  config.scan = scan;
+  config.reconnect = false;  // a command-line run reports a fault instead of waiting it out
+  return config;
+}
+
+SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config) {
+  session.connect(config);
+  const LinkState goal = config.scan ? LinkState::Scanning : LinkState::Ready;
+  const SessionSnapshot s = session.wait_until(
+      [goal](const SessionSnapshot& x) { return x.state == goal || x.state == LinkState::Failed; }, kConnectPatience);
+  if (s.state == goal) return s;
+  if (s.state == LinkState::Failed) throw std::runtime_error(s.message);
+  throw std::runtime_error("gave up after " + std::to_string(kConnectPatience.count()) + " s waiting for " +
+                           config.address + " (" + describe_snapshot(s) + ")");
+}
+
+void write_device_fields(JsonOut& out, const SessionSnapshot& s) {
+  out.raw(R"("model":)");
+  if (s.device && s.device->profile) out.string(s.device->profile->name);
+  else out.raw("null");
+  if (s.device) {
+    out.raw(R"(,"model_code":)");
+    out.integer(s.device->model_code);
+    out.raw(R"(,"firmware":)");
+    out.string(std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor));
+    out.raw(R"(,"hardware":)");
+    out.integer(s.device->hardware);
+    out.raw(R"(,"serial":)");
+    out.string(s.device->serial);
+  }
+  out.raw(R"(,"health":)");
+  if (s.health) {
+    out.raw(R"({"command":)");
+    out.string(command_bytes_text(s.health->command));
+    out.raw(R"(,"status":)");
+    out.integer(s.health->status);
+    out.raw(R"(,"error_code":)");
+    out.integer(s.health->error_code);
+    out.raw(R"(,"summary":)");
+    out.string(s.health->summary);
+    out.raw("}");
+  } else {
+    out.raw("null");
+  }
+  out.raw(R"(,"scan_hz":)");
+  if (s.scan_hz) out.fixed(*s.scan_hz, 2);
+  else out.raw("null");
+  out.raw(R"(,"ranging_khz":)");
+  if (s.ranging_khz) out.integer(*s.ranging_khz);
+  else out.raw("null");
+  out.raw(R"(,"port":)");
+  out.string(s.link);
+  out.raw(R"(,"baud":)");
+  out.integer(s.baud);
+  out.raw(R"(,"distance_scale":)");
+  out.fixed(s.distance_scale, 6);
+}
+
+}  // namespace ydscope::cli

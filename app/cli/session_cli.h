@@ -1,0 +1,28 @@
+#pragma once
+// What info, scan and set share: --port/--model/--baud into a SessionConfig, connecting with one
+// clear sentence on failure, and the device's details as JSON fields.
+#include <chrono>
+#include <set>
+#include <string>
+
+#include "app/cli/arguments.h"
+#include "app/cli/lap_json.h"
+#include "core/link/session.h"
+
+namespace ydscope::cli {
+
+// The options every device subcommand takes (value options).
+std::set<std::string> session_value_options(std::set<std::string> more);
+
+// --port PATH|tcp://host:port (required), --model auto|MODEL, --baud B|auto. UsageError on mistakes.
+SessionConfig session_config_from(const Arguments& args, bool scan);
+
+// Connects and waits for the device to be Ready (or Scanning when config.scan); throws
+// std::runtime_error with the session's sentence when it fails.
+SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config);
+
+// "model":...,"model_code":...,"firmware":...,"hardware":...,"serial":...,"health":{...}|null,
+// "scan_hz":...|null,"ranging_khz":...|null,"port":...,"baud":...,"distance_scale":... (no braces).
+void write_device_fields(JsonOut& out, const SessionSnapshot& snapshot);
+
+}  // namespace ydscope::cli
