@@ -122,7 +122,8 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
     };
     // Fixed-point steps settle almost every sample; steep surfaces (where the range changes fast
     // with the direction) fall back to bisection over the correction's span.
-    double theta = level1 + kFarCorrectionDeg;
+    // Start from the previous sample's correction: neighbours usually see the same surface.
+    double theta = level1 + last_correction_deg_;
     bool converged = false;
     for (int k = 0; k < kFixedPointSteps && !converged; ++k) {
       const double r = residual(theta);
@@ -151,6 +152,8 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
       theta = level1;
     } else if (range == 0.0) {
       theta = level1;  // no return: the host applies no correction
+    } else {
+      last_correction_deg_ = theta - level1;
     }
     samples_.push_back(word);
     if (truth)

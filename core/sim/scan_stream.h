@@ -69,6 +69,7 @@ class ScanStream {
   std::uint32_t packet_index_ = 0;
   std::uint8_t crc_ = 0;            // G1 CRC8 over this lap's CT bytes so far
   bool first_zero_ = true;
+  double last_correction_deg_ = -8.0;  // first guess of the next sample's angle correction
   std::vector<std::uint16_t> samples_;
 };
 

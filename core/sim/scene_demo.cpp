@@ -13,7 +13,6 @@ using namespace scene_geometry;
 
 constexpr int kPetals = 6;
 constexpr double kFlowerTurnDegPerS = 12.0;
-constexpr int kMoons = 6;
 constexpr double kMoonOrbitMm = 2900;
 constexpr double kMoonRadiusMm = 190;
 constexpr double kMoonTurnDegPerS = -21.0;
@@ -29,6 +28,21 @@ double wrap180(double degrees) {
 }
 
 }  // namespace
+
+const DemoScene::Moons& DemoScene::moons_at(std::int64_t t_ns) const {
+  const std::int64_t ms = t_ns / 1'000'000;
+  if (moons_.ms == ms) return moons_;
+  const double t = static_cast<double>(ms) * 1e-3;
+  const double phase = 360.0 * hash_unit(seed_, 3, 4);
+  for (int i = 0; i < kMoons; ++i) {
+    const double a = (phase + 360.0 * i / kMoons + kMoonTurnDegPerS * t) * kPi / 180.0;
+    const double orbit = kMoonOrbitMm + 250 * std::sin(2 * kPi * t / 5.0 + i);
+    moons_.xy[2 * i] = orbit * std::cos(a);
+    moons_.xy[2 * i + 1] = orbit * std::sin(a);
+  }
+  moons_.ms = ms;
+  return moons_;
+}
 
 SceneReturn DemoScene::sample(double angle_deg, std::int64_t t_ns) const {
   const double t = static_cast<double>(t_ns) * 1e-9;
@@ -49,13 +63,10 @@ SceneReturn DemoScene::sample(double angle_deg, std::int64_t t_ns) const {
 
   // Moons orbiting the other way, visible between the petals.
   const Vec dir = direction(angle_deg);
+  const Moons& moons = moons_at(t_ns);
   double nearest = kNoHit;
-  for (int i = 0; i < kMoons; ++i) {
-    const double a = (phase + 360.0 * i / kMoons + kMoonTurnDegPerS * t) * kPi / 180.0;
-    const double wobble = 250 * std::sin(2 * kPi * t / 5.0 + i);
-    const Vec centre{(kMoonOrbitMm + wobble) * std::cos(a), (kMoonOrbitMm + wobble) * std::sin(a)};
-    nearest = std::min(nearest, hit_circle({0, 0}, dir, centre, kMoonRadiusMm));
-  }
+  for (int i = 0; i < kMoons; ++i)
+    nearest = std::min(nearest, hit_circle({0, 0}, dir, {moons.xy[2 * i], moons.xy[2 * i + 1]}, kMoonRadiusMm));
   if (nearest != kNoHit) {
     out.range_mm = nearest + noise;
     return out;
