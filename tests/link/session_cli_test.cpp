@@ -1,0 +1,100 @@
+// ydscope-cli info, scan and set, run as a user would against the virtual lidar on a
+// pseudo-terminal: one JSON object (or N laps and a summary), and a sentence plus exit 1 on failure.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+#include "session_test_support.h"
+
+namespace ydscope {
+namespace {
+
+using namespace test;
+
+struct CliRun {
+  int status = -1;
+  std::string out;
+};
+
+// Runs the CLI with stderr folded into the output.
+CliRun run_cli(const std::string& arguments) {
+  CliRun run;
+  const std::string command = std::string(YDSCOPE_CLI_PATH) + " " + arguments + " 2>&1";
+  std::FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+  const int status = pclose(pipe);
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(SessionCli, InfoPrintsOneJsonObjectWithTheDeviceDetails) {
+  SimOnPty sim(Model::TG50);
+  const CliRun run = run_cli("info --port " + sim.port());
+  ASSERT_EQ(run.status, 0) << run.out;
+  EXPECT_EQ(count(run.out, "\n"), 1u) << run.out;
+  for (const char* field : {"\"model\":\"TG50\"", "\"model_code\":102", "\"firmware\":\"1.2\"", "\"hardware\":1",
+                            "\"serial\":", "\"summary\":\"ok\"", "\"scan_hz\":", "\"ranging_khz\":9"})
+    EXPECT_NE(run.out.find(field), std::string::npos) << field << " in " << run.out;
+}
+
+TEST(SessionCli, ScanPrintsNLapsAndTheSummary) {
+  SimOnPty sim(Model::G1);
+  const CliRun run = run_cli("scan --port " + sim.port() + " --model G1 --laps 4");
+  ASSERT_EQ(run.status, 0) << run.out.substr(0, 400);
+  EXPECT_EQ(count(run.out, "{\"type\":\"lap\""), 4u);
+  EXPECT_EQ(count(run.out, "{\"type\":\"summary\""), 1u);
+  EXPECT_NE(run.out.find("\"crc_ok\":true"), std::string::npos);
+  DeviceMode mode = DeviceMode::Scanning;
+  sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
+  EXPECT_EQ(mode, DeviceMode::Idle) << "scan leaves the lidar stopped";
+}
+
+TEST(SessionCli, SetReachesTheTargetAndPrintsTheReadBack) {
+  SimOnPty sim(Model::G6);
+  const CliRun hz = run_cli("set --port " + sim.port() + " --scan-hz 9.4");
+  ASSERT_EQ(hz.status, 0) << hz.out;
+  EXPECT_NE(hz.out.find("\"scan_hz\":9.4"), std::string::npos) << hz.out;
+  const CliRun khz = run_cli("set --port " + sim.port() + " --ranging-khz 4");
+  ASSERT_EQ(khz.status, 0) << khz.out;
+  EXPECT_NE(khz.out.find("\"ranging_khz\":4"), std::string::npos) << khz.out;
+  std::uint32_t centihz = 0;
+  std::uint16_t ranging = 0;
+  sim.server().with_device([&](VirtualLidar& d) {
+    centihz = d.scan_centihz();
+    ranging = d.ranging_khz();
+  });
+  EXPECT_EQ(centihz, 940u);
+  EXPECT_EQ(ranging, 4u);
+}
+
+TEST(SessionCli, SetExitsOneWhenTheTargetCannotBeReached) {
+  SimOnPty sim(Model::G1);
+  const CliRun run = run_cli("set --port " + sim.port() + " --ranging-khz 8");
+  EXPECT_EQ(run.status, 1) << run.out;
+  EXPECT_NE(run.out.find("read-only"), std::string::npos) << run.out;
+}
+
+TEST(SessionCli, FailuresAreOneSentenceAndANonZeroExit) {
+  const CliRun missing = run_cli("info --port /dev/ydscope-no-such-port");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_EQ(count(missing.out, "\n"), 1u) << missing.out;
+  EXPECT_NE(missing.out.find("/dev/ydscope-no-such-port"), std::string::npos) << missing.out;
+  EXPECT_EQ(run_cli("info --port tcp://nowhere").status, 2);
+  EXPECT_EQ(run_cli("info --port /dev/null --model G7").status, 2);
+  EXPECT_EQ(run_cli("scan --port /dev/null").status, 2) << "--laps is required";
+  EXPECT_EQ(run_cli("set --port /dev/null").status, 2) << "a target is required";
+}
+
+}  // namespace
+}  // namespace ydscope
