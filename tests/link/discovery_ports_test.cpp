@@ -1,6 +1,10 @@
 // PortDiscovery over a fake /dev and /sys tree shaped like the kernel's: by-id links, ttyUSB
 // (usb-serial: port -> interface -> device) and ttyACM (interface -> device) layouts.
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <array>
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -121,6 +125,40 @@ TEST_F(FakeSystem, NoPortsAndMissingFoldersAreJustEmpty) {
   EXPECT_TRUE(PortDiscovery(dev().string(), sys().string()).list().empty());
   EXPECT_TRUE(PortDiscovery((root_ / "nope").string(), (root_ / "nosys").string()).list().empty());
   EXPECT_FALSE(first_lidar_candidate({}));
+}
+
+// Runs the CLI and returns its standard output and exit status.
+std::pair<std::string, int> run_cli(const std::string& arguments) {
+  const std::string command = std::string(YDSCOPE_CLI_PATH) + " " + arguments + " 2>/dev/null";
+  std::FILE* pipe = ::popen(command.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> chunk{};
+  std::size_t got = 0;
+  while ((got = std::fread(chunk.data(), 1, chunk.size(), pipe)) > 0) out.append(chunk.data(), got);
+  const int status = ::pclose(pipe);
+  return {out, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
+}
+
+TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
+  node("ttyUSB0");
+  const fs::path cp2102 = usb_device("1-1", "10c4", "ea60", "Silicon Labs", "CP2102 \"Bridge\"", "0001");
+  class_tty("ttyUSB0", cp2102 / "1-1:1.0" / "ttyUSB0", "cp210x");
+  const std::string roots = "--dev-root " + dev().string() + " --sys-root " + sys().string();
+
+  const auto [table, table_status] = run_cli("ports " + roots);
+  EXPECT_EQ(table_status, 0);
+  EXPECT_NE(table.find("PORT"), std::string::npos) << table;
+  EXPECT_NE(table.find((dev() / "ttyUSB0").string() + "  likely   10c4:ea60"), std::string::npos) << table;
+
+  const auto [json, json_status] = run_cli("ports --format json " + roots);
+  EXPECT_EQ(json_status, 0);
+  EXPECT_EQ(json, "[\n  {\"path\":\"" + (dev() / "ttyUSB0").string() +
+                      "\",\"by_id\":null,\"name\":\"ttyUSB0\",\"vendor_id\":\"10c4\",\"product_id\":\"ea60\","
+                      "\"manufacturer\":\"Silicon Labs\",\"product\":\"CP2102 \\\"Bridge\\\"\",\"serial\":\"0001\","
+                      "\"driver\":\"cp210x\",\"known_lidar_bridge\":true}\n]\n");
+
+  EXPECT_EQ(run_cli("ports --format json --dev-root " + (root_ / "none").string()).first, "[]\n");
+  EXPECT_EQ(run_cli("ports --format xml").second, 2);
 }
 
 TEST(LidarBridges, KnownChips) {
