@@ -17,6 +17,9 @@
 namespace ydscope::gui {
 namespace {
 
+// How long the automatic start waits for laps from a discovered port before showing the sim.
+constexpr double kAutoProbeSeconds = 8.0;
+
 std::int64_t steady_ns() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -85,6 +88,8 @@ std::string App::start_source() {
   model_.source_text = source_.description();
   model_.sim_active = source_.sim_active();
   model_.replay.available = source_.replay_active();
+  model_.status_message = error;
+  if (!error.empty()) model_.banner = error;
   return error;
 }
 
@@ -111,6 +116,17 @@ void App::drain_laps() {
 void App::update_model() {
   model_.now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   model_.snap = session_.snapshot();
+  if (source_.auto_probing()) {
+    // The automatic choice found a port: keep it once laps flow, else show the virtual lidar.
+    if (model_.snap.state == LinkState::Scanning) {
+      source_.auto_probe_done();
+      model_.banner.clear();
+    } else if (model_.now_s > kAutoProbeSeconds) {
+      model_.banner = source_.fall_back_to_sim();
+      model_.source_text = source_.description();
+      model_.snap = session_.snapshot();
+    }
+  }
   model_.sim_active = source_.sim_active();
   const SessionSnapshot& s = model_.snap;
   model_.timeline.observe("link", static_cast<std::uint32_t>(s.state), model_.now_s, std::string(link_state_name(s.state)));
@@ -250,6 +266,19 @@ void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
     history_.clear();
     view_->invalidate();
     m.replay.available = source_.replay_active();
+  }
+  if (m.replay.available) {
+    ReplayHandle& replay = source_.replay();
+    if (m.replay.changed) {
+      replay.set_paused(m.replay.paused);
+      replay.set_speed(static_cast<double>(m.replay.speed));
+      replay.set_loop(m.replay.loop);
+      m.replay.changed = false;
+    }
+    if (const auto status = replay.status()) {
+      m.replay.position_s = static_cast<double>(status->position_ns) * 1e-9;
+      m.replay.duration_s = static_cast<double>(status->duration_ns) * 1e-9;
+    }
   }
   if (m.sim_faults_request) {
     if (SimServer* sim = source_.sim()) sim->set_faults(*m.sim_faults_request);

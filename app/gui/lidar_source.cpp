@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/link/port_discovery.h"
 #include "core/protocol/model_profile.h"
 
 namespace ydscope::gui {
@@ -72,30 +73,58 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       description_ = "virtual " + std::string(profile->name) + " (" + request.scene + " scene) on " + sim_->device_path();
       break;
     }
-    case ui::ConnectRequest::Kind::Replay:
-      return "replay of " + request.address + " is not available in this build yet.";
+    case ui::ConnectRequest::Kind::Replay: {
+      std::string error;
+      replay_handle_ = std::make_shared<ReplayHandle>();
+      ReplayOptions options;
+      options.loop = true;
+      auto replay = replay_config(request.address, options, replay_handle_, error);
+      if (!replay) return error;
+      config = std::move(*replay);
+      replay_ = true;
+      description_ = "recording " + std::filesystem::path(request.address).filename().string();
+      break;
+    }
   }
   session_.connect(config);
   return {};
 }
 
 std::string LidarSource::start_auto() {
-  const std::vector<ui::PortEntry> ports = discover_ports();
-  if (!ports.empty()) {
+  // Known lidar USB bridges come first; the app watches whether laps arrive (see auto_probing).
+  if (const auto candidate = first_lidar_candidate(PortDiscovery().list())) {
     ui::ConnectRequest request;
     request.kind = ui::ConnectRequest::Kind::Port;
-    request.address = ports.front().path;
-    if (start(request).empty()) return {};
+    request.address = candidate->preferred_path();
+    if (start(request).empty()) {
+      auto_probing_ = true;
+      return "Looking for a lidar on " + request.address + "\xE2\x80\xA6";
+    }
   }
+  return fall_back_to_sim();
+}
+
+std::string LidarSource::fall_back_to_sim() {
+  const std::string tried = auto_probing_ ? description_ : std::string();
+  auto_probing_ = false;
   ui::ConnectRequest sim;
   sim.kind = ui::ConnectRequest::Kind::Sim;
   sim.model = "G6";
   sim.scene = "demo";
   const std::string error = start(sim);
   if (!error.empty()) return "No lidar found, and " + error;
+  if (!tried.empty()) return "No lidar answered on " + tried + " \xE2\x80\x94 showing the virtual G6 (demo scene)";
   return "No lidar found \xE2\x80\x94 showing the virtual G6 (demo scene)";
 }
 
-std::vector<ui::PortEntry> discover_ports() { return {}; }
+std::vector<ui::PortEntry> discover_ports() {
+  std::vector<ui::PortEntry> entries;
+  for (const SerialPortInfo& port : PortDiscovery().list()) {
+    std::string label = port.preferred_path();
+    if (const std::string what = port.description(); !what.empty()) label += " \xE2\x80\x94 " + what;
+    entries.push_back({port.preferred_path(), label});
+  }
+  return entries;
+}
 
 }  // namespace ydscope::gui

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/replay_source.h"
 #include "core/link/session.h"
 #include "core/sim/sim_server.h"
 #include "ui/panels/ui_model.h"
@@ -20,20 +21,28 @@ class LidarSource {
   // Starts the request; on failure leaves the session idle and returns one sentence.
   std::string start(const ui::ConnectRequest& request);
   // No source named: the first lidar the port discovery finds, else the virtual G6 (demo scene).
-  // Returns the banner to show (empty when a real lidar was found).
+  // Returns the banner to show. When a port was found, auto_probing() stays true until the app
+  // sees laps or gives up and calls fall_back_to_sim().
   std::string start_auto();
+  bool auto_probing() const { return auto_probing_; }
+  void auto_probe_done() { auto_probing_ = false; }
+  // The port named no lidar after all: stop it and show the virtual G6. Returns the banner.
+  std::string fall_back_to_sim();
   void stop();
 
   std::string description() const { return description_; }
   bool sim_active() const { return sim_ != nullptr; }
   SimServer* sim() { return sim_.get(); }
   bool replay_active() const { return replay_; }
+  ReplayHandle& replay() { return *replay_handle_; }
 
  private:
   Session& session_;
   std::unique_ptr<SimServer> sim_;
   std::string description_;
   bool replay_ = false;
+  bool auto_probing_ = false;
+  std::shared_ptr<ReplayHandle> replay_handle_ = std::make_shared<ReplayHandle>();
 };
 
 // Candidate serial ports with their USB names, for the Connection panel.

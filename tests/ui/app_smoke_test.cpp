@@ -82,6 +82,23 @@ TEST(AppSmoke, VirtualG6RendersAScreenshot) {
   expect_scan_and_panels(png);
 }
 
+TEST(AppSmoke, DemoRecordingReplaysIntoAScreenshot) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::string recording = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+  ASSERT_TRUE(std::filesystem::exists(recording)) << recording;
+  EXPECT_LT(std::filesystem::file_size(recording), 1'000'000u) << "keep the committed demo recording small";
+  const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-replay.png";
+  std::filesystem::remove(png);
+  ASSERT_EQ(run_app("--replay '" + recording + "' --screenshot '" + png + "' --frames 60"), 0);
+  expect_scan_and_panels(png);
+}
+
+TEST(AppSmoke, MissingRecordingFailsWithASentence) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-missing.png";
+  EXPECT_EQ(run_app("--replay /nonexistent/none.ydrec --screenshot '" + png + "' 2>/dev/null"), 1);
+}
+
 TEST(AppSmoke, BadOptionsExitWithUsageError) {
   EXPECT_EQ(run_app("--sim NOPE --screenshot x.png 2>/dev/null"), 2);
   EXPECT_EQ(run_app("--frames 3 2>/dev/null"), 2);

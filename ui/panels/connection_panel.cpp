@@ -120,6 +120,10 @@ void replay_section(UiModel& m) {
     }
     m.replay.changed |= ImGui::SliderFloat("speed", &m.replay.speed, 0.25f, 8.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
     m.replay.changed |= ImGui::Checkbox("loop", &m.replay.loop);
+    const float fraction = m.replay.duration_s > 0.0 ? static_cast<float>(m.replay.position_s / m.replay.duration_s) : 0.0f;
+    char text[48];
+    std::snprintf(text, sizeof text, "%.1f / %.1f s", m.replay.position_s, m.replay.duration_s);
+    ImGui::ProgressBar(fraction, {-1.0f, 0.0f}, text);
   }
 }
 
@@ -130,7 +134,7 @@ void record_section(UiModel& m, const SessionSnapshot& s, Session& session) {
     ImGui::TextColored({1.0f, 0.35f, 0.35f, 1.0f}, "\xE2\x80\xA2 REC");
     ImGui::SameLine();
     ImGui::Text("%.1f s, %.2f MB", m.now_s - m.record_started_s, ec ? 0.0 : static_cast<double>(bytes) / 1e6);
-    ImGui::TextWrapped("%s", s.recording_path.c_str());
+    wrapped_text(s.recording_path.c_str());
     if (ImGui::Button("Stop recording")) session.stop_recording();
   } else {
     if (m.record_text[0] == '\0') std::snprintf(m.record_text, sizeof m.record_text, "ydscope-recording.ydrec");
@@ -170,6 +174,12 @@ void link_state_text(LinkState state, const char* message) {
   }
 }
 
+void wrapped_text(const char* text) {
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(text);
+  ImGui::PopTextWrapPos();
+}
+
 void section(const char* title) {
   ImGui::Spacing();
   ImGui::TextDisabled("%s", title);
@@ -193,7 +203,7 @@ void draw_connection_panel(UiModel& m, Session& session) {
   const SessionSnapshot& s = m.snap;
   ImGui::TextDisabled("source");
   ImGui::SameLine();
-  ImGui::TextWrapped("%s", m.source_text.empty() ? "none" : m.source_text.c_str());
+  wrapped_text(m.source_text.empty() ? "none" : m.source_text.c_str());
   link_state_text(s.state, s.message.c_str());
   if (!s.link.empty()) ImGui::TextDisabled("%s", s.link.c_str());
   if (ImGui::BeginTabBar("sources")) {

@@ -29,7 +29,8 @@ void busy_and_result(const SessionSnapshot& s, double now_s) {
 void draw_frequency_panels(UiModel& m, Session& session) {
   const SessionSnapshot& s = m.snap;
   const ModelProfile* profile = s.device ? s.device->profile : nullptr;
-  const bool can_command = link_state_connected(s.state) && !s.busy && profile;
+  // A replay has no device behind it to command.
+  const bool can_command = link_state_connected(s.state) && !s.busy && profile && !m.replay.available;
 
   if (ImGui::CollapsingHeader("Scan frequency", ImGuiTreeNodeFlags_DefaultOpen)) {
     const auto measured = m.scan_rate.hz();
@@ -63,7 +64,7 @@ void draw_frequency_panels(UiModel& m, Session& session) {
     }
     ImGui::NewLine();
     ImGui::SetNextItemWidth(110.0f);
-    ImGui::InputFloat("##target", &m.scan_target_hz, 0.0f, 0.0f, "%.1f Hz");
+    ImGui::InputFloat("Hz##target", &m.scan_target_hz, 0.0f, 0.0f, "%.1f");
     ImGui::SameLine();
     if (ImGui::Button("Set target")) session.set_scan_hz(static_cast<double>(m.scan_target_hz));
     if (!can_command) ImGui::EndDisabled();
@@ -131,17 +132,17 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   if (ImGui::Button("Screenshot")) m.screenshot_request = true;
   ImGui::SameLine();
   if (ImGui::Button("Export CSV")) m.csv_request = true;
-  if (!m.status_message.empty()) ImGui::TextWrapped("%s", m.status_message.c_str());
+  if (!m.status_message.empty()) wrapped_text(m.status_message.c_str());
 }
 
 void draw_filter_panel(UiModel& m, ViewSettings& v) {
   if (!ImGui::CollapsingHeader("Interference filter")) return;
   ImGui::Checkbox("drop specular (flag 2)", &v.interference.drop_specular);
   ImGui::SameLine();
-  ImGui::TextDisabled("%zu / lap", m.cloud.newest_specular_removed);
+  ImGui::TextDisabled("%d / lap", static_cast<int>(m.cloud.newest_specular_removed));
   ImGui::Checkbox("drop ambient light (flag 3)", &v.interference.drop_ambient);
   ImGui::SameLine();
-  ImGui::TextDisabled("%zu / lap", m.cloud.newest_ambient_removed);
+  ImGui::TextDisabled("%d / lap", static_cast<int>(m.cloud.newest_ambient_removed));
   ImGui::Checkbox("show removed as ghosts", &v.interference.show_ghosts);
   help_marker("G1 marks samples hit by a mirror-like reflection (2) or strong ambient light (3). G6 and TG never set these flags.");
 }

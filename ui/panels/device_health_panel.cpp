@@ -133,12 +133,12 @@ void draw_health_panel(UiModel& m, Session& session) {
     ImGui::TextDisabled("not asked yet");
   }
   if (s.health && !s.health->summary.empty()) ImGui::TextDisabled("device says: %s", s.health->summary.c_str());
-  const bool connected = link_state_connected(s.state);
-  if (!connected || s.busy) ImGui::BeginDisabled();
+  const bool can_ask = link_state_connected(s.state) && !s.busy && !m.replay.available;
+  if (!can_ask) ImGui::BeginDisabled();
   if (ImGui::Button("Ask health now")) session.refresh_health();
-  if (!connected || s.busy) ImGui::EndDisabled();
+  if (!can_ask) ImGui::EndDisabled();
 
-  if (ImGui::TreeNode("timeline", "timeline (%zu changes)", m.timeline.events().size())) {
+  if (ImGui::TreeNode("timeline", "timeline (%d changes)", static_cast<int>(m.timeline.events().size()))) {
     if (ImGui::BeginChild("timeline", {0.0f, 120.0f}, true)) {
       const auto& events = m.timeline.events();
       for (auto it = events.rbegin(); it != events.rend(); ++it) {

@@ -25,6 +25,8 @@ void draw_view_header(const UiModel& model, float view_left, float view_width);
 
 // Small helpers shared by the panels.
 void help_marker(const char* text);
+// Text wrapped at the panel edge, unformatted (this ImGui build drops some TextWrapped("%s") text).
+void wrapped_text(const char* text);
 // A dim title over a thin rule (ImGui 1.86 has no SeparatorText).
 void section(const char* title);
 void link_state_text(LinkState state, const char* message);

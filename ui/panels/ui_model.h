@@ -36,6 +36,8 @@ struct ReplayControl {
   bool paused = false;
   bool loop = true;
   float speed = 1.0f;
+  double position_s = 0.0;  // filled by the app from the replay's status
+  double duration_s = 0.0;
   bool changed = false;    // set by the panel when the user touched a control
 };
 

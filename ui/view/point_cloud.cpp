@@ -7,6 +7,7 @@ PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams&
   out.clear();
   PointCloudStats stats;
   const std::size_t laps = history.size();
+  const InterferenceFilter interference = filter.filter();
   // Oldest first so the newest lap is drawn last, on top.
   for (std::size_t age = laps; age-- > 0;) {
     const float age_fraction = laps > 1 ? static_cast<float>(age) / static_cast<float>(laps - 1) : 0.0f;
@@ -16,8 +17,7 @@ PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams&
         if (newest) ++stats.newest_no_return;
         continue;
       }
-      const bool removed = (filter.drop_specular && p.flag == PointFlag::Specular) ||
-                           (filter.drop_ambient && p.flag == PointFlag::AmbientLight);
+      const bool removed = interference.removes(p.flag);
       if (removed && newest) {
         if (p.flag == PointFlag::Specular) ++stats.newest_specular_removed;
         else ++stats.newest_ambient_removed;

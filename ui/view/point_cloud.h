@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/protocol/interference_filter.h"
 #include "ui/view/colour_map.h"
 #include "ui/view/lap_history.h"
 
@@ -19,6 +20,8 @@ struct InterferenceSettings {
   bool drop_specular = false;  // G1 flag 2
   bool drop_ambient = false;   // G1 flag 3
   bool show_ghosts = true;     // draw removed points faintly instead of hiding them
+  // The protocol's filter (shared with the CLI) decides which points go.
+  InterferenceFilter filter() const { return {drop_specular, drop_ambient}; }
   friend bool operator==(const InterferenceSettings&, const InterferenceSettings&) = default;
 };
 

@@ -1,0 +1,79 @@
+#include "app/gui/replay_source.h"
+
+#include "core/protocol/model_profile.h"
+#include "core/record/recording_reader.h"
+
+namespace ydscope::gui {
+namespace {
+
+// The session owns its link as a unique_ptr; this forwards to a shared ReplayLink so the UI can
+// reach the replay controls through a weak pointer without owning the link.
+class SharedReplayLink final : public ByteLink {
+ public:
+  explicit SharedReplayLink(std::shared_ptr<ReplayLink> link) : link_(std::move(link)) {}
+  void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override {
+    link_->async_read_some(buffer, std::move(handler));
+  }
+  void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override {
+    link_->async_write(bytes, std::move(handler));
+  }
+  void close() override { link_->close(); }
+  bool set_baud(std::uint32_t baud, std::string& error) override { return link_->set_baud(baud, error); }
+  bool accepts_commands() const override { return link_->accepts_commands(); }
+  std::string describe() const override { return link_->describe(); }
+
+ private:
+  std::shared_ptr<ReplayLink> link_;
+};
+
+}  // namespace
+
+void ReplayHandle::set(const std::shared_ptr<ReplayLink>& link) {
+  std::lock_guard lock(mutex_);
+  link_ = link;
+}
+
+std::shared_ptr<ReplayLink> ReplayHandle::lock() const {
+  std::lock_guard lock(mutex_);
+  return link_.lock();
+}
+
+std::optional<ReplayStatus> ReplayHandle::status() const {
+  if (auto link = lock()) return link->status();
+  return std::nullopt;
+}
+
+void ReplayHandle::set_paused(bool paused) {
+  if (auto link = lock()) link->set_paused(paused);
+}
+
+void ReplayHandle::set_speed(double speed) {
+  if (auto link = lock()) link->set_speed(speed);
+}
+
+void ReplayHandle::set_loop(bool loop) {
+  if (auto link = lock()) link->set_loop(loop);
+}
+
+std::optional<SessionConfig> replay_config(const std::string& path, ReplayOptions options,
+                                           std::shared_ptr<ReplayHandle> handle, std::string& error) {
+  const auto summary = summarize_recording(path, error);
+  if (!summary) return std::nullopt;
+  SessionConfig config;
+  config.address = path;
+  const ModelProfile* profile = summary->metadata.model ? find_profile(*summary->metadata.model) : nullptr;
+  config.model = profile ? profile->model : Model::G6;
+  config.distance_scale = summary->metadata.distance_scale;
+  // A replay that ends is finished, not a fault to reconnect from.
+  config.reconnect = options.loop;
+  config.open_link = [path, options, handle](boost::asio::io_context& io, std::uint32_t, std::string& open_error)
+      -> std::unique_ptr<ByteLink> {
+    std::shared_ptr<ReplayLink> link = ReplayLink::open(io, path, options, open_error);
+    if (!link) return nullptr;
+    handle->set(link);
+    return std::make_unique<SharedReplayLink>(std::move(link));
+  };
+  return config;
+}
+
+}  // namespace ydscope::gui
