@@ -56,6 +56,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
 }
 
 App::~App() {
+  if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
   source_.stop();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
 }

@@ -73,7 +73,7 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   // Along the bottom of the view, clear of the spoke labels at the edges: state line on the left,
   // the banner (why this source) centred above it.
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float pad = 44.0f;
+  const float pad = 72.0f;  // above the spoke labels that sit in the bottom corners
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bottom = ImGui::GetMainViewport()->WorkSize.y;
   const SessionSnapshot& s = m.snap;

@@ -1,5 +1,6 @@
 #include "ui/render/polar_overlay.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <imgui.h>
@@ -19,10 +20,17 @@ const char* flag_text(PointFlag flag) {
   return "";
 }
 
-void label(ImDrawList* draw, Vec2 at, const char* text, ImU32 colour, bool centred) {
+// `bounds` keeps the whole label inside the view (spoke labels sit at its edges).
+void label(ImDrawList* draw, Vec2 at, const char* text, ImU32 colour, bool centred, const ViewTransform* bounds = nullptr) {
   const ImVec2 size = ImGui::CalcTextSize(text);
   ImVec2 p = im(at);
   if (centred) p = {p.x - size.x * 0.5f, p.y - size.y * 0.5f};
+  if (bounds) {
+    const Vec2 lo = bounds->viewport_origin();
+    const Vec2 hi = lo + bounds->viewport_size();
+    p.x = std::clamp(p.x, lo.x + 4.0f, std::max(lo.x + 4.0f, hi.x - size.x - 4.0f));
+    p.y = std::clamp(p.y, lo.y + 2.0f, std::max(lo.y + 2.0f, hi.y - size.y - 2.0f));
+  }
   draw->AddText({p.x + 1.0f, p.y + 1.0f}, IM_COL32(0, 0, 0, 160), text);
   draw->AddText(p, colour, text);
 }
@@ -35,7 +43,7 @@ void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
 
   if (in.show_grid_labels && in.grid) {
     for (const GridLabel& l : in.grid->ring_labels) label(draw, l.screen + Vec2{4.0f, -2.0f}, l.text.c_str(), IM_COL32(170, 190, 220, 200), false);
-    for (const GridLabel& l : in.grid->spoke_labels) label(draw, l.screen, l.text.c_str(), IM_COL32(150, 170, 200, 170), true);
+    for (const GridLabel& l : in.grid->spoke_labels) label(draw, l.screen, l.text.c_str(), IM_COL32(150, 170, 200, 170), true, &view);
   }
 
   // The lidar: a dot and a chevron pointing along 0 deg (the heading).
