@@ -13,6 +13,7 @@
 #include "app/cli/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
+#include "app/cli/recording_input.h"
 #include "core/protocol/function_ref.h"
 #include "core/protocol/interference_filter.h"
 #include "core/protocol/model_profile.h"
@@ -29,6 +30,9 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
   FILE                 the bytes exactly as read from the lidar's port, or - for standard input.
                        They may start with the scan reply header (A5 5A 05 00 00 40 81) and may hold
                        junk; junk is skipped and counted, packets with a bad checksum are dropped.
+                       FILE may also be a recording (.ydrec, from `ydscope-cli record`, recognised
+                       by its header): its device->host bytes are decoded, with its model unless
+                       --model is given.
   --model MODEL        G1, G6, TG15, TG30 or TG50 (any letter case). Picks the distance formula
                        (G1: S>>2 mm with the interference flag in S&3; G6: S/4 mm; TG: S/2 mm, as
                        the manuals give them) and, on G1, the CT information and LastCRC byte.
@@ -114,8 +118,11 @@ int run_decode(std::span<const std::string> raw) {
     std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
     return kExitOk;
   }
-  const std::string model = args.required("model");
-  const ModelProfile* profile = find_profile(model);
+  const std::string path = args.single_positional("FILE (or - for standard input)");
+  // A .ydrec recording (by its magic) names its model; raw bytes need --model.
+  const auto recording = recording_metadata_of(path);
+  const std::string model = recording ? "" : args.required("model");
+  const ModelProfile* profile = recording ? &recording_profile(args.value("model"), *recording, path) : find_profile(model);
   if (!profile)
     throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
   const std::string format = args.value("format").value_or("jsonl");
@@ -123,7 +130,6 @@ int run_decode(std::span<const std::string> raw) {
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
   const auto scale = args.number("distance-scale", 1e-6, 1e6);
-  const std::string path = args.single_positional("FILE (or - for standard input)");
 
   ScanDecoder decoder(*profile, scale);
   JsonOut out(stdout);
@@ -136,7 +142,9 @@ int run_decode(std::span<const std::string> raw) {
     filter_interference(filtered, filter);
     write_lap(out, filtered, profile->ct_carries_info);
   };
-  read_input(path, [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, on_lap); });
+  const auto feed = [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, on_lap); };
+  if (recording) read_recording_device_bytes(path, feed);
+  else read_input(path, feed);
   decoder.finish(on_lap);
   write_summary(out, decoder.counters());
   out.flush();

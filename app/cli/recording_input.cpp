@@ -1,0 +1,50 @@
+#include "app/cli/recording_input.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/cli/arguments.h"
+#include "core/record/recording_reader.h"
+
+namespace ydscope::cli {
+
+const ModelProfile& recording_profile(const std::optional<std::string>& model_option,
+                                      const RecordingMetadata& metadata, const std::string& path) {
+  if (model_option) {
+    const ModelProfile* profile = find_profile(*model_option);
+    if (!profile)
+      throw UsageError("unknown model '" + *model_option + "'; valid models are " + std::string(model_names()));
+    return *profile;
+  }
+  if (!metadata.model)
+    throw UsageError(path + " does not say which lidar made it; pass --model (" + std::string(model_names()) + ")");
+  const ModelProfile* profile = find_profile(*metadata.model);
+  if (!profile)
+    throw UsageError(path + " was made with model '" + *metadata.model + "', which this ydscope does not know; pass --model (" +
+                     std::string(model_names()) + ")");
+  return *profile;
+}
+
+std::optional<RecordingMetadata> recording_metadata_of(const std::string& path) {
+  if (path == "-" || !is_recording_file(path)) return std::nullopt;
+  std::string error;
+  const auto summary = summarize_recording(path, error);
+  if (!summary) throw std::runtime_error(error);
+  return summary->metadata;
+}
+
+std::optional<RecordingMetadata> read_recording_device_bytes(
+    const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
+  if (path == "-" || !is_recording_file(path)) return std::nullopt;
+  std::string error;
+  auto reader = RecordingReader::open(path, error);
+  if (!reader) throw std::runtime_error(error);
+  RecordView record;
+  while (reader->next(record))
+    if (record.type == RecordType::DeviceToHost) on_chunk(record.payload);
+  if (reader->corrupt() || reader->truncated())
+    std::fprintf(stderr, "ydscope-cli: warning: %s\n", (reader->corrupt() ? reader->error() : reader->warning()).c_str());
+  return reader->metadata();
+}
+
+}  // namespace ydscope::cli
