@@ -42,6 +42,7 @@ CounterSnapshot SessionCounters::read(std::int64_t now_ns) const {
   CounterSnapshot s;
   s.bytes_received = bytes_received_.load(std::memory_order_relaxed);
   s.bytes_sent = bytes_sent_.load(std::memory_order_relaxed);
+  s.reads = reads_.load(std::memory_order_relaxed);
   s.packets = packets_.load(std::memory_order_relaxed);
   s.zero_packets = zero_packets_.load(std::memory_order_relaxed);
   s.laps = laps_.load(std::memory_order_relaxed);

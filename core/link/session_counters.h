@@ -11,6 +11,7 @@ namespace ydscope {
 struct CounterSnapshot {
   std::uint64_t bytes_received = 0;
   std::uint64_t bytes_sent = 0;
+  std::uint64_t reads = 0;            // read completions (bytes_received / reads = bytes per wakeup)
   std::uint64_t packets = 0;          // valid scan packets
   std::uint64_t zero_packets = 0;     // of which CT bit 0 was set
   std::uint64_t laps = 0;             // laps pushed or dropped
@@ -32,6 +33,7 @@ class SessionCounters {
   // I/O thread.
   void add_received(std::uint64_t n, std::int64_t now_ns) {
     bump(bytes_received_, n);
+    bump(reads_, 1);
     last_byte_ns_.store(now_ns, std::memory_order_relaxed);
   }
   void add_sent(std::uint64_t n) { bump(bytes_sent_, n); }
@@ -58,7 +60,7 @@ class SessionCounters {
     counter.store(counter.load(std::memory_order_relaxed) + n, std::memory_order_relaxed);
   }
 
-  std::atomic<std::uint64_t> bytes_received_{0}, bytes_sent_{0}, drained_bytes_{0}, reconnects_{0},
+  std::atomic<std::uint64_t> bytes_received_{0}, reads_{0}, bytes_sent_{0}, drained_bytes_{0}, reconnects_{0},
       refused_commands_{0}, queue_drops_{0};
   std::atomic<std::uint64_t> packets_{0}, zero_packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0}, crc8_failures_{0};
   std::atomic<std::int64_t> last_byte_ns_{0};
