@@ -14,7 +14,7 @@ using namespace scene_geometry;
 constexpr int kPetals = 6;
 constexpr double kFlowerTurnDegPerS = 12.0;
 constexpr double kMoonOrbitMm = 2900;
-constexpr double kMoonRadiusMm = 190;
+constexpr double kMoonRadiusMm = 260;
 constexpr double kMoonTurnDegPerS = -21.0;
 constexpr int kStarSpikes = 9;
 constexpr double kStarTurnDegPerS = 6.0;

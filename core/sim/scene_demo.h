@@ -1,6 +1,6 @@
 #pragma once
 // The "demo" scene, made for trade shows: a breathing six-petal flower turning slowly at the centre,
-// six moons orbiting the other way between its petals, and a spiky star-shaped wall around it all
+// five moons orbiting the other way between its petals, and a spiky star-shaped wall around it all
 // counter-rotating, swept by a "lighthouse" arc. On G1 the petal tips carry the specular flag and
 // the lighthouse arc the ambient-light flag, so colouring by flag shows them too. Deterministic.
 #include <array>
@@ -16,7 +16,7 @@ class DemoScene final : public Scene {
   SceneReturn sample(double angle_deg, std::int64_t t_ns) const override;
   std::string_view name() const override { return "demo"; }
 
-  static constexpr int kMoons = 6;
+  static constexpr int kMoons = 5;  // not 6: the moons must not line up with the six petals
 
  private:
   struct Moons {

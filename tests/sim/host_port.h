@@ -37,6 +37,8 @@ class HostPort {
 
   bool connect_tcp(std::uint16_t port) {
     fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    socket_ = true;
+    eof_ = false;
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(port);
@@ -52,7 +54,10 @@ class HostPort {
   }
 
   bool send(std::vector<std::uint8_t> bytes) {
-    return ::write(fd_, bytes.data(), bytes.size()) == static_cast<ssize_t>(bytes.size());
+    // MSG_NOSIGNAL: a server that turned us away must fail the send, not kill the test with SIGPIPE.
+    const ssize_t n = socket_ ? ::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL)
+                              : ::write(fd_, bytes.data(), bytes.size());
+    return n == static_cast<ssize_t>(bytes.size());
   }
 
   // Reads until `count` bytes arrived or `timeout` passed. eof is set when the other side is gone.
@@ -101,6 +106,7 @@ class HostPort {
   }
 
   int fd_ = -1;
+  bool socket_ = false;
   bool eof_ = false;
 };
 
