@@ -164,6 +164,10 @@ int run_record(std::span<const std::string> raw) {
   std::string error;
   const auto summary = summarize_recording(out, error);
   if (!summary) throw std::runtime_error(error);
+  if (!failure.empty() && summary->device_bytes == 0 && summary->host_bytes == 0) {
+    std::filesystem::remove(out);  // the port never opened: an empty recording helps nobody
+    throw std::runtime_error(failure);
+  }
   std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s\n", out.c_str(),
               static_cast<double>(summary->duration_ns) / 1e9, static_cast<unsigned long long>(summary->device_bytes),
               static_cast<unsigned long long>(summary->host_bytes), laps_in(out, summary->metadata).c_str());

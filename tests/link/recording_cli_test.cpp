@@ -232,6 +232,7 @@ TEST_F(RecordingCli, UsageAndFailureSentences) {
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.err.find("cannot open /dev/ttyDOESNOTEXIST9: no such device"), std::string::npos) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_FALSE(fs::exists(path("nope.ydrec")));  // nothing was recorded: no empty file left behind
 
   const std::string raw = std::string(YDSCOPE_CAPTURES_DIR) + "/x4-scan1.bin";
   result = run({"replay", raw});
