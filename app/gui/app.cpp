@@ -59,6 +59,9 @@ App::~App() {
   if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
   source_.stop();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
+  // ImGui keeps only a pointer to our path string: save now and let it forget the path.
+  if (!imgui_ini_path_.empty()) ImGui::SaveIniSettingsToDisk(imgui_ini_path_.c_str());
+  ImGui::GetIO().IniFilename = nullptr;
 }
 
 std::string App::start_source() {
@@ -176,9 +179,7 @@ void App::toggle_fullscreen() {
 }
 
 void App::frame() {
-  const auto now = std::chrono::steady_clock::now();
-  model_.frame_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
-  last_frame_ = now;
+  last_frame_ = std::chrono::steady_clock::now();
 
   drain_laps();
   update_model();
@@ -221,6 +222,8 @@ void App::frame() {
 }
 
 void App::after_present() {
+  // Frame time = the work of a frame (draining, drawing, presenting), not the wait between frames.
+  model_.frame_ms.add(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - last_frame_).count());
   if (pending_latency_rx_ns_ != 0) {
     model_.latency_ms.add(static_cast<double>(steady_ns() - pending_latency_rx_ns_) * 1e-6);
     pending_latency_rx_ns_ = 0;

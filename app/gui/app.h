@@ -32,6 +32,8 @@ class App {
   void after_present();
 
   std::uint64_t laps_shown() const { return model_.laps_shown; }
+  // Laps are arriving (the link is scanning).
+  bool streaming() const { return model_.snap.state == LinkState::Scanning; }
   const std::string& last_error() const { return model_.status_message; }
   // The current lap, for the CSV export.
   const Lap& current_lap() const { return lap_; }
@@ -57,7 +59,7 @@ class App {
   Lap lap_;
   std::unique_ptr<ui::PolarView> view_;
   std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point last_frame_;
+  std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
   bool quit_ = false;
   bool fullscreen_ = false;

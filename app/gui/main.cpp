@@ -1,5 +1,6 @@
 // ydscope: the desktop window. main owns GLFW, the GL context, ImGui and the loop; App does a frame.
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -18,6 +19,10 @@
 #include "ui/render/theme.h"
 
 namespace {
+
+// Ctrl-C or a service manager's SIGTERM ends the loop normally, so settings are saved.
+volatile std::sig_atomic_t g_stop_requested = 0;
+void on_stop_signal(int) { g_stop_requested = 1; }
 
 void on_glfw_error(int code, const char* description) {
   // Without a window manager (Xvfb) GLFW cannot iconify a full-screen window on focus loss; harmless.
@@ -75,9 +80,13 @@ int run(const ydscope::gui::AppOptions& options) {
       const auto started = std::chrono::steady_clock::now();
       const auto deadline = started + std::chrono::seconds(30);
       int frames = 0;
-      while (exit_code == 0 && !glfwWindowShouldClose(window) && !app->quit_requested()) {
+      std::signal(SIGINT, on_stop_signal);
+      std::signal(SIGTERM, on_stop_signal);
+      while (exit_code == 0 && !glfwWindowShouldClose(window) && !app->quit_requested() && !g_stop_requested) {
         // Wait for input or the session's wake-up; the timeout keeps the statistics ticking.
-        glfwWaitEventsTimeout(screenshot_mode ? 0.02 : 0.25);
+        // Laps wake the loop through glfwPostEmptyEvent; with nothing arriving a slow tick keeps the
+        // statistics and link state current at almost no cost.
+        glfwWaitEventsTimeout(screenshot_mode ? 0.02 : (app->streaming() ? 0.25 : 1.0));
         app->frame();
         ++frames;
         if (screenshot_mode) {

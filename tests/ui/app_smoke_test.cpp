@@ -99,6 +99,21 @@ TEST(AppSmoke, MissingRecordingFailsWithASentence) {
   EXPECT_EQ(run_app("--replay /nonexistent/none.ydrec --screenshot '" + png + "' 2>/dev/null"), 1);
 }
 
+TEST(AppSmoke, SigtermEndsTheLoopAndSavesSettings) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::filesystem::path home = std::filesystem::path(testing::TempDir()) / "ydscope-ui-persist";
+  std::filesystem::remove_all(home);
+  std::filesystem::create_directories(home);
+  // The window runs interactively (no --screenshot) until SIGTERM, like a demo stopped by a service.
+  const std::string command = "XDG_CONFIG_HOME='" + home.string() + "' timeout --preserve-status -s TERM 4 '" + YDSCOPE_APP_PATH +
+                              "' --sim G1 --scene room";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "SIGTERM should end the loop normally";
+  EXPECT_TRUE(std::filesystem::exists(home / "ydscope" / "settings.ini"));
+  EXPECT_TRUE(std::filesystem::exists(home / "ydscope" / "imgui.ini"));
+}
+
 TEST(AppSmoke, BadOptionsExitWithUsageError) {
   EXPECT_EQ(run_app("--sim NOPE --screenshot x.png 2>/dev/null"), 2);
   EXPECT_EQ(run_app("--frames 3 2>/dev/null"), 2);
