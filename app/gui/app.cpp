@@ -104,7 +104,7 @@ void App::drain_laps() {
   history_.push(lap_);
   view_->invalidate();
   ++model_.laps_shown;
-  model_.scan_rate.add_lap_end(lap_.last_rx_ns);
+  model_.scan_rate.add_lap_end(lap_.index, lap_.last_rx_ns);
   model_.points_in_lap = lap_.points.size();
   pending_latency_rx_ns_ = lap_.last_rx_ns;
   if (lap_.health_bits) {

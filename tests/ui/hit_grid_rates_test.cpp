@@ -104,15 +104,27 @@ TEST(GridLayout, RobustRangeIgnoresFarOutliersAndNoReturns) {
 TEST(ScanRateMeter, MeasuresLapsPerSecondAndRestartsAfterAGap) {
   ScanRateMeter meter;
   std::int64_t t = 1'000'000'000;
-  meter.add_lap_end(t);
+  std::uint64_t lap = 0;
+  meter.add_lap_end(lap, t);
   EXPECT_FALSE(meter.hz());
-  for (int i = 0; i < 40; ++i) meter.add_lap_end(t += 100'000'000);  // 10 Hz
+  for (int i = 0; i < 40; ++i) meter.add_lap_end(++lap, t += 100'000'000);  // 10 Hz
   ASSERT_TRUE(meter.hz());
   EXPECT_NEAR(*meter.hz(), 10.0, 1e-9);
-  meter.add_lap_end(t += 5'000'000'000);  // a 5 s stall
+  meter.add_lap_end(++lap, t += 5'000'000'000);  // a 5 s stall
   EXPECT_FALSE(meter.hz());
-  for (int i = 0; i < 5; ++i) meter.add_lap_end(t += 80'000'000);  // 12.5 Hz
+  for (int i = 0; i < 5; ++i) meter.add_lap_end(++lap, t += 80'000'000);  // 12.5 Hz
   EXPECT_NEAR(*meter.hz(), 12.5, 1e-9);
+}
+
+TEST(ScanRateMeter, SkippedLapsStillCount) {
+  ScanRateMeter meter;
+  std::int64_t t = 0;
+  // The UI shows every other lap of a 10 Hz stream: the device still turns at 10 Hz.
+  for (std::uint64_t lap = 0; lap < 20; lap += 2) meter.add_lap_end(lap, t += 200'000'000);
+  ASSERT_TRUE(meter.hz());
+  EXPECT_NEAR(*meter.hz(), 10.0, 1e-9);
+  meter.add_lap_end(0, t += 100'000'000);  // a new stream starts its indices again
+  EXPECT_FALSE(meter.hz());
 }
 
 TEST(CounterRate, PerSecondFromAGrowingCounter) {

@@ -4,23 +4,24 @@
 
 namespace ydscope::ui {
 
-void ScanRateMeter::add_lap_end(std::int64_t rx_ns) {
+void ScanRateMeter::add_lap_end(std::uint64_t lap_index, std::int64_t rx_ns) {
   if (count_ > 0) {
-    const std::int64_t last = ends_[(next_ + kWindow - 1) % kWindow];
-    if (rx_ns <= last || rx_ns - last > kMaxGapNs) count_ = 0;
+    const std::size_t last = (next_ + kWindow - 1) % kWindow;
+    if (rx_ns <= ends_[last] || rx_ns - ends_[last] > kMaxGapNs || lap_index <= indices_[last]) count_ = 0;
   }
   ends_[next_] = rx_ns;
+  indices_[next_] = lap_index;
   next_ = (next_ + 1) % kWindow;
   count_ = std::min(count_ + 1, kWindow);
 }
 
 std::optional<double> ScanRateMeter::hz() const {
   if (count_ < 3) return std::nullopt;  // two intervals at least, so one late lap does not dominate
-  const std::int64_t newest = ends_[(next_ + kWindow - 1) % kWindow];
-  const std::int64_t oldest = ends_[(next_ + kWindow - count_) % kWindow];
-  const double span_s = static_cast<double>(newest - oldest) * 1e-9;
+  const std::size_t newest = (next_ + kWindow - 1) % kWindow;
+  const std::size_t oldest = (next_ + kWindow - count_) % kWindow;
+  const double span_s = static_cast<double>(ends_[newest] - ends_[oldest]) * 1e-9;
   if (span_s <= 0.0) return std::nullopt;
-  return static_cast<double>(count_ - 1) / span_s;
+  return static_cast<double>(indices_[newest] - indices_[oldest]) / span_s;
 }
 
 void CounterRate::sample(double now_s, std::uint64_t value) {

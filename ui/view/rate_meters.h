@@ -8,19 +8,21 @@
 
 namespace ydscope::ui {
 
-// Laps per second over the last laps' end times. A gap longer than kMaxGapNs (a stalled or
-// reconnected stream) starts the measurement again rather than averaging across it.
+// Laps per second over the last laps' end times. The lap index counts the laps between two shown
+// ones, so laps the UI skipped (drained but not drawn) still count. A gap longer than kMaxGapNs,
+// an index going back (a new stream) or a reconnect starts the measurement again.
 class ScanRateMeter {
  public:
   static constexpr std::size_t kWindow = 16;
   static constexpr std::int64_t kMaxGapNs = 2'000'000'000;
 
-  void add_lap_end(std::int64_t rx_ns);
+  void add_lap_end(std::uint64_t lap_index, std::int64_t rx_ns);
   void reset() { count_ = 0; }
   std::optional<double> hz() const;
 
  private:
   std::array<std::int64_t, kWindow> ends_{};
+  std::array<std::uint64_t, kWindow> indices_{};
   std::size_t next_ = 0;
   std::size_t count_ = 0;
 };
