@@ -70,6 +70,8 @@ std::string App::start_source() {
     case SourceKind::Auto:
       model_.banner = source_.start_auto();
       model_.source_text = source_.description();
+      model_.sim_active = source_.sim_active();
+      model_.show_source_tab = model_.sim_active ? 1 : 0;
       return {};
     case SourceKind::Port:
       request.kind = ui::ConnectRequest::Kind::Port;
@@ -94,6 +96,7 @@ std::string App::start_source() {
   model_.replay.available = source_.replay_active();
   model_.status_message = error;
   if (!error.empty()) model_.banner = error;
+  model_.show_source_tab = static_cast<int>(request.kind);
   return error;
 }
 

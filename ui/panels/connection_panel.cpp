@@ -207,15 +207,19 @@ void draw_connection_panel(UiModel& m, Session& session) {
   link_state_text(s.state, s.message.c_str());
   if (!s.link.empty()) ImGui::TextDisabled("%s", s.link.c_str());
   if (ImGui::BeginTabBar("sources")) {
-    if (ImGui::BeginTabItem("Port")) {
+    const auto tab_flags = [&m](int tab) {
+      return m.show_source_tab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+    };
+    const int wanted = m.show_source_tab;
+    if (ImGui::BeginTabItem("Port", nullptr, tab_flags(0))) {
       port_section(m);
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Virtual")) {
+    if (ImGui::BeginTabItem("Virtual", nullptr, tab_flags(1))) {
       sim_section(m);
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Replay")) {
+    if (ImGui::BeginTabItem("Replay", nullptr, tab_flags(2))) {
       replay_section(m);
       ImGui::EndTabItem();
     }
@@ -224,6 +228,7 @@ void draw_connection_panel(UiModel& m, Session& session) {
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+    if (wanted == m.show_source_tab) m.show_source_tab = -1;
   }
 }
 

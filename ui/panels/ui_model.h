@@ -64,6 +64,8 @@ struct UiModel {
   CounterRate bytes_rate, packets_rate, laps_rate;
   ReplayControl replay;
   bool paused_view = false;               // the view holds the current laps
+  // Opens the Connection tab of the current source once: 0 port, 1 virtual, 2 replay; -1 none.
+  int show_source_tab = -1;
 
   // ---- requests from the panels, carried out and cleared by the app -----------------------------
   std::optional<ConnectRequest> connect_request;
@@ -81,7 +83,7 @@ struct UiModel {
   char port_text[256] = "";
   int port_model_choice = 0;  // 0 = detect, then model_names() order
   int port_baud_choice = 0;   // 0 = model default
-  int sim_model_choice = 1;   // G6
+  int sim_model_choice = 2;   // 1-based in all_profiles(): G6
   int sim_scene_choice = 1;   // demo
   FaultConfig sim_faults;
   char replay_text[512] = "";
