@@ -207,7 +207,15 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 ReplayLink::ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::string warning)
     : core_(std::move(core)), path_(std::move(path)), metadata_(std::move(metadata)), warning_(std::move(warning)) {}
 
-ReplayLink::~ReplayLink() { core_->close(); }
+ReplayLink::~ReplayLink() {
+  // The last owner may be another thread (a UI holding the link for its controls): the playback
+  // state belongs to the io_context's thread, so close it there.
+  if (core_->executor().running_in_this_thread()) {
+    core_->close();
+  } else {
+    boost::asio::post(core_->executor(), [core = core_] { core->close(); });
+  }
+}
 
 std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const std::string& path,
                                              ReplayOptions options, std::string& error) {

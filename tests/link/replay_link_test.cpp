@@ -235,6 +235,50 @@ TEST_F(ReplayLinkTest, ControlsFromAnotherThreadWhileItPlays) {
   EXPECT_EQ(Bytes(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(device.size())), device);
 }
 
+TEST_F(ReplayLinkTest, LastOwnerMayBeTheUiThread) {
+  // The app's shape: the session reads the link on the I/O thread and drops it on disconnect;
+  // the UI reaches it through a weak pointer, so its temporary strong pointer may be the last.
+  write_recording(50, 10'000);
+  for (int round = 0; round < 20; ++round) {
+    boost::asio::io_context io;
+    auto work = boost::asio::make_work_guard(io);
+    std::thread io_thread([&io] { io.run(); });
+    std::string error;
+    std::shared_ptr<ReplayLink> session_link = ReplayLink::open(io, path_, {.speed = 0, .loop = true}, error);
+    ASSERT_TRUE(session_link) << error;
+    std::weak_ptr<ReplayLink> ui_link = session_link;
+    auto buffer = std::make_shared<std::array<std::uint8_t, 32>>();
+    std::atomic<bool> stopped{false};
+    std::function<void()> read_more = [&] {
+      if (!session_link) return;
+      session_link->async_read_some(*buffer, [&](const boost::system::error_code& ec, std::size_t) {
+        if (!ec) read_more();
+      });
+    };
+    boost::asio::post(io, read_more);
+    std::thread ui([&] {
+      while (!stopped.load()) {
+        if (auto link = ui_link.lock()) {
+          link->set_speed(round % 2 ? 0.0 : 50.0);
+          (void)link->status();
+        } else {
+          break;
+        }
+      }
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    boost::asio::post(io, [&] {  // disconnect: close and drop the session's reference
+      session_link->close();
+      session_link.reset();
+    });
+    while (!ui_link.expired()) std::this_thread::yield();
+    stopped = true;
+    ui.join();
+    work.reset();
+    io_thread.join();
+  }
+}
+
 TEST_F(ReplayLinkTest, OpenErrorsAreSentences) {
   boost::asio::io_context io;
   std::string error;
