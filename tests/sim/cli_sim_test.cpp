@@ -137,8 +137,8 @@ TEST(CliSim, PtyReadyLinkAndCleanExitOnSigterm) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(CliSim, SigintAlsoExitsCleanlyOnTcp) {
-  Child child({"sim", "--model", "TG15", "--tcp", "127.0.0.1:0"});
+TEST(CliSim, SigintAlsoExitsCleanlyOnTcpAndVerboseTellsWhatHappened) {
+  Child child({"sim", "--model", "TG15", "--tcp", "127.0.0.1:0", "--verbose"});
   const std::string line = child.read_line(10s);
   ASSERT_EQ(line.rfind("ready tcp://127.0.0.1:", 0), 0u) << line;
   const auto port = static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)));
@@ -148,8 +148,13 @@ TEST(CliSim, SigintAlsoExitsCleanlyOnTcp) {
   const auto reply = host.read(27, 3s);
   ASSERT_EQ(reply.size(), 27u);
   EXPECT_EQ(reply[7], 100);  // TG15
+  ASSERT_TRUE(host.send({0xA5, 0x60, 0xA5, 0x65}));
+  host.read(100'000, 500ms);
   child.signal(SIGINT);
   EXPECT_EQ(child.wait(10s), 0);
+  const std::string log = child.read_stderr();
+  for (const char* line : {"received A5 90 (device info)", "scanning at 10.00 Hz", "idle: stopped by A5 65"})
+    EXPECT_NE(log.find(line), std::string::npos) << line << " not in:\n" << log;
 }
 
 TEST(CliSim, UnknownModelListsTheValidOnes) {
