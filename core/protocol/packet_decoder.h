@@ -1,6 +1,7 @@
 #pragma once
 // PacketDecoder: the streaming scan-packet framer. Fed arbitrary chunks (one byte to megabytes),
-// it hunts `AA 55`, checks the FSA/LSA check bits and the XOR checksum, and hands every valid
+// it hunts `AA 55`, checks the FSA/LSA check bits, LSN >= 1 (every real packet has a sample; a
+// stray AA 55 with LSN 0 is treated as a failed start) and the XOR checksum, and hands every valid
 // packet to a sink. After a failed header or checksum it resyncs one byte after the failed start,
 // so `AA AA 55 ...` is found at the second AA and a packet hidden inside damaged bytes is not lost.
 //
