@@ -1,5 +1,7 @@
 #include "core/link/session.h"
 
+#include <pthread.h>
+
 #include <cstdio>
 #include <exception>
 
@@ -85,6 +87,7 @@ Session::Impl::~Impl() {
 }
 
 void Session::Impl::run_thread() {
+  pthread_setname_np(pthread_self(), "ydscope-io");  // so top, perf and debuggers can tell it apart
   start_tick();
   // The last boundary: nothing thrown on this thread may end the program or leave it.
   for (;;) {
