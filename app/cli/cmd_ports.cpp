@@ -15,13 +15,13 @@ namespace {
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli ports [--format table|json]
 
 Lists the serial ports a lidar may be on: /dev/serial/by-id/* (names that survive re-plugging),
-/dev/ttyUSB* and /dev/ttyACM*, with the USB vendor:product id, manufacturer, product, serial
+/dev/ydlidar (made by assets/99-ydlidar.rules), /dev/ttyUSB* and /dev/ttyACM*, with the USB vendor:product id, manufacturer, product, serial
 number and driver that the system reports. Ports on the USB-serial chips YDLIDAR boards use
 (CP210x 10c4:ea60, CH340 1a86:7523, CH9102 1a86:55d4) come first and are marked "lidar?".
 Pass the PORT column to --port of the other commands.
 
   --format table   (default) one port per line for people.
-  --format json    one JSON array of objects: path, by_id, name, vendor_id, product_id (hex text
+  --format json    one JSON array of objects: path, by_id, alias, name, vendor_id, product_id (hex text
                    or null), manufacturer, product, serial, driver, known_lidar_bridge.
   --dev-root DIR, --sys-root DIR
                    look in DIR instead of /dev and /sys (for tests).
@@ -73,6 +73,9 @@ void print_json(const std::vector<SerialPortInfo>& ports) {
     out.raw(",\"by_id\":");
     if (port.by_id.empty()) out.raw("null");
     else out.string(port.by_id);
+    out.raw(",\"alias\":");
+    if (port.alias.empty()) out.raw("null");
+    else out.string(port.alias);
     out.raw(",\"name\":");
     out.string(port.name);
     out.raw(",\"vendor_id\":");

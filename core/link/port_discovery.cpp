@@ -129,6 +129,16 @@ std::vector<SerialPortInfo> PortDiscovery::list() const {
     if (port.path.empty()) port.path = (fs::path(dev_root_) / name).string();
     if (port.by_id.empty()) port.by_id = link.string();
   }
+  const fs::path alias = fs::path(dev_root_) / "ydlidar";
+  if (const fs::path target = fs::canonical(alias, ec); !ec) {
+    const std::string name = target.filename().string();
+    if (is_candidate_name(name)) {
+      SerialPortInfo& port = by_name[name];
+      port.name = name;
+      if (port.path.empty()) port.path = (fs::path(dev_root_) / name).string();
+      port.alias = alias.string();
+    }
+  }
   std::vector<SerialPortInfo> ports;
   for (auto& [name, port] : by_name) {
     fill_from_sysfs(port);

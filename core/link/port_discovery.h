@@ -1,6 +1,6 @@
 #pragma once
-// Lists the serial ports a lidar may be on: /dev/serial/by-id/* (stable names), /dev/ttyUSB*,
-// /dev/ttyACM*, with the USB identity sysfs knows (vendor/product id, manufacturer, product,
+// Lists the serial ports a lidar may be on: /dev/serial/by-id/* (stable names), /dev/ydlidar
+// (made by assets/99-ydlidar.rules), /dev/ttyUSB*, /dev/ttyACM*, with the USB identity sysfs knows (vendor/product id, manufacturer, product,
 // serial, driver). The roots are parameters so tests can point it at a fake /dev and /sys.
 #include <cstdint>
 #include <optional>
@@ -12,6 +12,7 @@ namespace ydscope {
 struct SerialPortInfo {
   std::string path;   // device node, e.g. /dev/ttyUSB0
   std::string by_id;  // stable /dev/serial/by-id/... name pointing at it, if any
+  std::string alias;  // /dev/ydlidar when the udev rule points it here
   std::string name;   // ttyUSB0
   std::optional<std::uint16_t> vendor_id;
   std::optional<std::uint16_t> product_id;
@@ -21,8 +22,9 @@ struct SerialPortInfo {
   std::string driver;                // kernel driver: cp210x, ch341, cdc_acm, ...
   bool known_lidar_bridge = false;   // a USB-serial chip YDLIDAR adapter boards use
 
-  // The name to open: the by-id name survives re-plugging into another USB socket.
-  const std::string& preferred_path() const { return by_id.empty() ? path : by_id; }
+  // The name to open: the by-id name survives re-plugging into another USB socket and, unlike
+  // /dev/ydlidar, tells two lidars apart.
+  const std::string& preferred_path() const { return !by_id.empty() ? by_id : !alias.empty() ? alias : path; }
   // "10c4:ea60" or "" when not a USB device.
   std::string usb_id() const;
   // "Silicon Labs CP2102 USB to UART Bridge Controller (10c4:ea60)" or "" when nothing is known.

@@ -19,7 +19,7 @@ std::string serial_open_error(const std::string& path, int errno_value) {
     case EACCES:
     case EPERM:
       return head + "permission denied; add yourself to the dialout group (then log in again) or "
-                    "install the udev rule from the assets folder";
+                    "copy assets/99-ydlidar.rules to /etc/udev/rules.d";
     case EBUSY:
       return head + "the port is busy; close the other program using it";
     case ENOTTY:

@@ -121,6 +121,20 @@ TEST_F(FakeSystem, ByIdLinkAloneStillNamesThePort) {
   EXPECT_EQ(ports[0].by_id, (dev() / "serial/by-id/usb-WCH_USB_Serial-if00-port0").string());
 }
 
+TEST_F(FakeSystem, UdevAliasJoinsItsPort) {
+  node("ttyUSB0");
+  node("ttyUSB1");
+  fs::create_symlink("ttyUSB1", dev() / "ydlidar");
+  const auto ports = PortDiscovery(dev().string(), sys().string()).list();
+  ASSERT_EQ(ports.size(), 2u);
+  EXPECT_TRUE(ports[0].alias.empty());
+  EXPECT_EQ(ports[1].alias, (dev() / "ydlidar").string());
+  EXPECT_EQ(ports[1].preferred_path(), (dev() / "ydlidar").string());
+  by_id("usb-Silicon_Labs_CP2102-if00-port0", "../../ttyUSB1");
+  EXPECT_EQ(PortDiscovery(dev().string(), sys().string()).list()[1].preferred_path(),
+            (dev() / "serial/by-id/usb-Silicon_Labs_CP2102-if00-port0").string());
+}
+
 TEST_F(FakeSystem, NoPortsAndMissingFoldersAreJustEmpty) {
   EXPECT_TRUE(PortDiscovery(dev().string(), sys().string()).list().empty());
   EXPECT_TRUE(PortDiscovery((root_ / "nope").string(), (root_ / "nosys").string()).list().empty());
@@ -153,7 +167,7 @@ TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
   const auto [json, json_status] = run_cli("ports --format json " + roots);
   EXPECT_EQ(json_status, 0);
   EXPECT_EQ(json, "[\n  {\"path\":\"" + (dev() / "ttyUSB0").string() +
-                      "\",\"by_id\":null,\"name\":\"ttyUSB0\",\"vendor_id\":\"10c4\",\"product_id\":\"ea60\","
+                      "\",\"by_id\":null,\"alias\":null,\"name\":\"ttyUSB0\",\"vendor_id\":\"10c4\",\"product_id\":\"ea60\","
                       "\"manufacturer\":\"Silicon Labs\",\"product\":\"CP2102 \\\"Bridge\\\"\",\"serial\":\"0001\","
                       "\"driver\":\"cp210x\",\"known_lidar_bridge\":true}\n]\n");
 
