@@ -1,0 +1,60 @@
+// Steady-state decoding allocates nothing: the framer's buffer is fixed and laps are preallocated.
+// Counts global operator new calls around the feed loop (the replacement only counts; it is
+// harmless for the other tests in this program).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "protocol_test_support.h"
+
+namespace {
+std::atomic<std::uint64_t> g_allocations{0};
+}
+
+// GCC cannot see that every operator new here is the malloc-based one below.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace ydscope {
+namespace {
+
+TEST(DecoderAllocation, NoAllocationPerPacketOrLap) {
+  for (const Model model : {Model::G1, Model::G6}) {
+    test::Bytes stream;
+    if (model == Model::G1) {
+      test::G1LapSpec spec;
+      std::uint8_t crc = 0;
+      for (int i = 0; i < 50; ++i) crc = test::append_g1_lap(stream, spec, crc);
+      stream.push_back(0x00);  // plus junk and a failed start, to exercise the resync path
+      stream.push_back(0xAA);
+    } else {
+      stream = test::synthetic_stream(50, 20, 40);
+    }
+    ScanDecoder decoder(profile_for(model));
+    std::uint64_t laps = 0;
+    std::uint64_t points = 0;
+    const auto on_lap = [&](const Lap& lap) {
+      ++laps;
+      points += lap.points.size();
+    };
+    const std::uint64_t before = g_allocations.load();
+    for (std::size_t pos = 0; pos < stream.size(); pos += 97)
+      decoder.feed({stream.data() + pos, std::min<std::size_t>(97, stream.size() - pos)}, 0, on_lap);
+    decoder.finish(on_lap);
+    EXPECT_EQ(g_allocations.load() - before, 0u) << profile_for(model).name;
+    EXPECT_GE(laps, 49u);
+    EXPECT_GT(points, 0u);
+  }
+}
+
+}  // namespace
+}  // namespace ydscope
