@@ -83,6 +83,27 @@ TEST(TcpLink, RefusedConnectionIsOneSentence) {
                        ": connection refused; is the bridge (e.g. ser2net) running on that port?");
 }
 
+TEST(TcpLink, SilentListenerTimesOut) {
+  // A listener that never accepts: once its accept queue is full the kernel drops further SYNs,
+  // so a connect never completes and must give up at the timeout.
+  boost::asio::io_context io;
+  tcp::acceptor acceptor(io);
+  acceptor.open(tcp::v4());
+  acceptor.bind(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+  acceptor.listen(0);
+  const auto port = acceptor.local_endpoint().port();
+  std::vector<std::unique_ptr<TcpLink>> queued;
+  std::string error;
+  for (int i = 0; i < 16; ++i) {
+    auto link = TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(300));
+    if (!link) break;
+    queued.push_back(std::move(link));
+  }
+  EXPECT_LT(queued.size(), 16u) << "the listener never stopped answering";
+  EXPECT_EQ(error, "cannot connect to tcp://127.0.0.1:" + std::to_string(port) +
+                       ": no answer within 300 ms; check the host, the port and any firewall");
+}
+
 TEST(TcpLink, UnknownHostIsOneSentence) {
   boost::asio::io_context io;
   std::string error;
