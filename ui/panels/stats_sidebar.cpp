@@ -82,7 +82,7 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   const auto measured = m.scan_rate.hz();
   int n = std::snprintf(text, sizeof text, "%s%s%s", model, *model ? "  \xE2\x80\xA2  " : "",
                         std::string(link_state_name(s.state)).c_str());
-  if (measured && n > 0) std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured, m.points_in_lap);
+  if (measured && n > 0 && s.state == LinkState::Scanning) std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured, m.points_in_lap);
   const ImU32 state_colour = s.state == LinkState::Scanning ? IM_COL32(110, 230, 150, 255)
                              : (s.state == LinkState::Failed ? IM_COL32(255, 110, 100, 255) : IM_COL32(255, 200, 90, 255));
   float y = bottom - pad;
