@@ -79,11 +79,18 @@ std::string App::start_source() {
       if (options_.model && *options_.model != "auto") request.model = options_.model;
       if (options_.baud) request.baud = *options_.baud;
       break;
-    case SourceKind::Sim:
+    case SourceKind::Sim: {
       request.kind = ui::ConnectRequest::Kind::Sim;
       request.model = options_.model;
       request.scene = options_.scene;
+      // The Virtual tab shows what runs.
+      const auto profiles = all_profiles();
+      for (std::size_t i = 0; i < profiles.size(); ++i) {
+        if (options_.model && find_profile(*options_.model) == &profiles[i]) model_.sim_model_choice = static_cast<int>(i) + 1;
+      }
+      model_.sim_scene_choice = options_.scene == "room" ? 0 : 1;
       break;
+    }
     case SourceKind::Replay:
       request.kind = ui::ConnectRequest::Kind::Replay;
       request.address = options_.replay_file;
