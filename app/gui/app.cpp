@@ -143,6 +143,9 @@ void App::update_model() {
   }
   model_.sim_active = source_.sim_active();
   const SessionSnapshot& s = model_.snap;
+  // The target field starts from the device's set value whenever that changes.
+  if (s.scan_hz && s.scan_hz != last_set_scan_hz_) model_.scan_target_hz = static_cast<float>(*s.scan_hz);
+  last_set_scan_hz_ = s.scan_hz;
   model_.timeline.observe("link", static_cast<std::uint32_t>(s.state), model_.now_s, std::string(link_state_name(s.state)));
   if (s.health) {
     const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;

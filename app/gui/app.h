@@ -3,6 +3,7 @@
 // draw the polar view and the panels, and carry out what the user asked for.
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/gui/app_options.h"
@@ -61,6 +62,7 @@ class App {
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
+  std::optional<double> last_set_scan_hz_;
   bool quit_ = false;
   bool fullscreen_ = false;
   int windowed_[4] = {100, 100, 1280, 800};
