@@ -153,8 +153,8 @@ TEST(CliSim, SigintAlsoExitsCleanlyOnTcpAndVerboseTellsWhatHappened) {
   child.signal(SIGINT);
   EXPECT_EQ(child.wait(10s), 0);
   const std::string log = child.read_stderr();
-  for (const char* line : {"received A5 90 (device info)", "scanning at 10.00 Hz", "idle: stopped by A5 65"})
-    EXPECT_NE(log.find(line), std::string::npos) << line << " not in:\n" << log;
+  for (const char* event : {"received A5 90 (device info)", "scanning at 10.00 Hz", "idle: stopped by A5 65"})
+    EXPECT_NE(log.find(event), std::string::npos) << event << " not in:\n" << log;
 }
 
 TEST(CliSim, UnknownModelListsTheValidOnes) {
