@@ -231,7 +231,6 @@ void VirtualLidar::answer(Command command, std::span<const std::uint8_t> payload
 void VirtualLidar::start_scan(std::int64_t now_ns) {
   mode_ = DeviceMode::Scanning;
   ++counters_.scans_started;
-  scan_started_ns_ = now_ns;
   last_keepalive_ns_ = now_ns;
   answer(Command::Scan, {}, now_ns);
   stream_->set_health(faults_.health_bits);

@@ -15,8 +15,9 @@
 // - Commands the model's manual does not list get no reply at all (counted as unsupported).
 // - Restart (G1 A5 40, G6/TG A5 80): no reply; back to the power-on state (idle, defaults).
 // - Stream: laps of N = round(ranging Hz / scan Hz) samples evenly spaced over 360 degrees; the
-//   zero packet (LSN 1) holds sample 0, then packets of up to 40 samples. First-level angles are
-//   chosen so that the host's second-level correction lands every point on the scene's direction.
+//   zero packet (LSN 1) holds sample 0, then packets of up to 40 samples. Each sample's range is
+//   taken from the scene at the direction the host's second-level correction will give it (within
+//   0.01 degree); at an edge where no direction is consistent the sample reports no return.
 //   G1: CT by packet index (0 scan Hz, 1 version, 3 health, else a debug value) and the LastCRC
 //   byte (CRC8 of the previous lap's CT bytes, 0 before the first zero packet) in front of every
 //   zero packet; samples carry the scene's interference flags.
@@ -172,7 +173,6 @@ class VirtualLidar {
   MotorDirection direction_ = MotorDirection::Clockwise;
   bool constant_hz_ = true;
   std::int64_t now_ns_ = 0;
-  std::int64_t scan_started_ns_ = 0;
   std::int64_t last_keepalive_ns_ = 0;
   std::int64_t stall_from_ns_ = 0;
   std::int64_t stall_until_ns_ = 0;
