@@ -187,3 +187,34 @@ TEST(Settings, RoundTripAndToleranceOfBadLines) {
 
 }  // namespace
 }  // namespace ydscope::ui
+
+#include "ui/view/grid_geometry.h"
+
+namespace ydscope::ui {
+namespace {
+
+TEST(GridGeometry, RingsAreQuadsAroundTheCircleAndSpokesLeaveTheMarkerClear) {
+  const ViewTransform v = make_view();
+  const GridLayout grid = layout_grid(v, 70.0f, 30.0f);
+  GridStyle style;
+  std::vector<LineVertex> lines;
+  build_grid_geometry(v, grid, style, lines);
+  ASSERT_EQ(lines.size() % 6, 0u);  // two triangles per segment
+  const float half_px = line_quad_half_px(style);
+  const float half_mm = half_px / v.px_per_mm();
+  const float first_ring = grid.ring_radii_mm.front();
+  // The first ring's vertices lie half a quad either side of its radius.
+  for (std::size_t i = 0; i < 12; ++i) {
+    const float r = length({lines[i].x, lines[i].y});
+    EXPECT_NEAR(std::fabs(r - first_ring), half_mm, half_mm * 0.05f);
+    EXPECT_FLOAT_EQ(std::fabs(lines[i].edge_px), half_px);
+  }
+  // The last 12 segments are the spokes: they start style.spoke_start_px from the lidar.
+  const std::size_t spokes = grid.spoke_angles_deg.size() * 6;
+  ASSERT_GT(lines.size(), spokes);
+  const LineVertex& spoke_start = lines[lines.size() - spokes];
+  EXPECT_NEAR(length({spoke_start.x, spoke_start.y}) * v.px_per_mm(), style.spoke_start_px, half_px + 0.01f);
+}
+
+}  // namespace
+}  // namespace ydscope::ui
