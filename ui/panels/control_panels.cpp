@@ -111,7 +111,9 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
     ImGui::RadioButton("viridis", &palette, 1);
     v.colours.palette = static_cast<Palette>(palette);
   }
-  if (v.colours.mode == ColourMode::Range) {
+  if (v.colours.mode == ColourMode::Range && v.auto_range) {
+    ImGui::TextDisabled("range colours follow the auto-range");
+  } else if (v.colours.mode == ColourMode::Range) {
     float metres[2] = {v.colours.near_mm / 1000.0f, v.colours.far_mm / 1000.0f};
     if (ImGui::DragFloat2("near / far m", metres, 0.05f, 0.0f, 100.0f, "%.2f")) {
       v.colours.near_mm = std::max(metres[0], 0.0f) * 1000.0f;

@@ -61,10 +61,18 @@ void PolarView::auto_range(const LapHistory& history, const ViewSettings& settin
 }
 
 const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings) {
-  if (!(settings.colours == last_settings_.colours) || !(settings.interference == last_settings_.interference)) dirty_ = true;
+  // With auto-range the range palette spans what is shown, so a 30 m TG scan and a 3 m room both
+  // use all of it; a manual view keeps the panel's near/far.
+  ColourParams colours = settings.colours;
+  if (settings.auto_range && fitted_range_mm_ > 0.0f) {
+    colours.near_mm = 0.0f;
+    colours.far_mm = fitted_range_mm_;
+  }
+  if (!(colours == last_colours_) || !(settings.interference == last_settings_.interference)) dirty_ = true;
   last_settings_ = settings;
+  last_colours_ = colours;
   if (dirty_) {
-    stats_ = build_point_cloud(history, settings.colours, settings.interference, vertices_);
+    stats_ = build_point_cloud(history, colours, settings.interference, vertices_);
     renderer_.upload_points(vertices_);
     dirty_ = false;
   }

@@ -49,6 +49,7 @@ class PolarView {
   bool fitted_once_ = false;
   float fitted_range_mm_ = 0.0f;
   ViewSettings last_settings_;
+  ColourParams last_colours_;
   std::optional<Vec2> hover_cursor_;
   std::optional<Vec2> cursor_world_;
 };
