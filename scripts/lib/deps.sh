@@ -1,7 +1,7 @@
 # Debian packages ydscope needs, installed only when missing. Sourced by scripts/test and scripts/run.
 ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev)
-ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri)
-ydscope_packages_run=(libgl1-mesa-dri)
+ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
+ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core)
 
 ydscope_install_deps() {  # ydscope_install_deps build test run ...
   local wanted=() missing=() set
