@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 
+#include "core/link/serial_link.h"
 #include "session_test_support.h"
 
 namespace ydscope {
@@ -66,6 +67,7 @@ TEST_P(ScanEveryModel, LapsEqualWhatTheVirtualLidarSent) {
   const CounterSnapshot c = session.snapshot().counters;
   EXPECT_EQ(c.checksum_errors, 0u);
   EXPECT_EQ(c.crc8_failures, 0u);
+  EXPECT_EQ(c.resync_bytes, 0u) << "the A5 5A reply header is taken off before the decoder";
   EXPECT_EQ(c.queue_drops, 0u);
   EXPECT_GE(c.laps, 12u);
 }
@@ -115,6 +117,59 @@ TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
     return m;
   };
   EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 2.0, 0.2);
+}
+
+// A serial link that removes the A5 5A 05 00 00 40 81 header after A5 60, as a device in
+// power-down protection mode does for later scan commands: the session must find packets anyway.
+class ScanHeaderEater final : public ByteLink {
+ public:
+  explicit ScanHeaderEater(std::unique_ptr<ByteLink> inner) : inner_(std::move(inner)) {}
+  void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override {
+    inner_->async_read_some(buffer, [this, buffer, handler](const boost::system::error_code& ec, std::size_t n) {
+      std::size_t start = 0;
+      while (to_eat_ > 0 && start < n) {
+        ++start;
+        --to_eat_;
+      }
+      if (start > 0 && start == n && !ec) {  // all eaten: read again rather than report 0 bytes
+        async_read_some(buffer, handler);
+        return;
+      }
+      std::copy(buffer.begin() + static_cast<std::ptrdiff_t>(start), buffer.begin() + static_cast<std::ptrdiff_t>(n),
+                buffer.begin());
+      handler(ec, n - start);
+    });
+  }
+  void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override {
+    if (bytes.size() == 2 && bytes[0] == 0xA5 && bytes[1] == 0x60) to_eat_ = 7;
+    inner_->async_write(bytes, std::move(handler));
+  }
+  void close() override { inner_->close(); }
+  bool set_baud(std::uint32_t baud, std::string& error) override { return inner_->set_baud(baud, error); }
+  bool accepts_commands() const override { return true; }
+  std::string describe() const override { return inner_->describe(); }
+
+ private:
+  std::unique_ptr<ByteLink> inner_;
+  std::size_t to_eat_ = 0;  // I/O thread only
+};
+
+TEST(SessionScan, AStreamWithoutItsReplyHeaderStillDecodes) {
+  SimOnPty sim(Model::G6);
+  Session session(64);
+  SessionConfig config = config_for(sim.port(), Model::G6);
+  const std::string port = sim.port();
+  config.open_link = [port](boost::asio::io_context& io, std::uint32_t baud, std::string& error)
+      -> std::unique_ptr<ByteLink> {
+    auto serial = SerialLink::open(io, port, baud, error);
+    if (!serial) return nullptr;
+    return std::make_unique<ScanHeaderEater>(std::move(serial));
+  };
+  session.connect(config);
+  ASSERT_EQ(take_laps(session, 3), 3u) << describe_snapshot(session.snapshot());
+  const CounterSnapshot c = session.snapshot().counters;
+  EXPECT_EQ(c.checksum_errors, 0u);
+  EXPECT_EQ(c.resync_bytes, 0u) << "the stream starts at a packet header";
 }
 
 }  // namespace
