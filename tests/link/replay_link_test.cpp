@@ -60,14 +60,22 @@ class ReplayLinkTest : public ::testing::Test {
     Bytes got;
     boost::system::error_code end;
     std::vector<std::uint8_t> buffer(buffer_size);
+    // A paused link holds the read without any asio work pending, so keep the context alive until
+    // the read loop itself says it is done; otherwise run_for would return early.
+    auto work = boost::asio::make_work_guard(io);
     std::function<void()> more = [&] {
       link.async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
         got.insert(got.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
         if (ec) {
           end = ec;
+          io.stop();
           return;
         }
-        if (got.size() < want) more();
+        if (got.size() < want) {
+          more();
+        } else {
+          io.stop();
+        }
       });
     };
     more();
