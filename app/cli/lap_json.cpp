@@ -3,6 +3,7 @@
 #include <array>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -22,15 +23,36 @@ void JsonOut::integer(std::uint64_t value) {
 }
 
 void JsonOut::fixed(double value, int decimals) {
-  std::array<char, 48> digits;
-  auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value, std::chars_format::fixed, decimals).ptr;
-  if (decimals > 0) {
-    while (end[-1] == '0') --end;
-    if (end[-1] == '.') --end;
+  // Scaled-integer formatting: to_chars' exact fixed-precision path dominated jsonl output time,
+  // and points need only a few decimals. Ties round to even, as to_chars does; trailing zeros are trimmed.
+  static constexpr std::array<double, 7> kScale{1, 10, 100, 1e3, 1e4, 1e5, 1e6};
+  const int places = decimals < 0 ? 0 : (decimals > 6 ? 6 : decimals);
+  const double scaled = std::nearbyint(std::fabs(value) * kScale[static_cast<std::size_t>(places)]);
+  if (!std::isfinite(value) || scaled >= 9e15) {  // beyond exact integers: let to_chars handle it
+    std::array<char, 352> digits;
+    const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value,
+                                   std::chars_format::fixed, places).ptr;
+    text_.append(digits.data(), end);
+    return;
   }
-  std::string_view text(digits.data(), static_cast<std::size_t>(end - digits.data()));
-  if (text == "-0") text = "0";
-  text_.append(text);
+  auto units = static_cast<std::uint64_t>(scaled);
+  if (units == 0) {
+    text_.push_back('0');
+    return;
+  }
+  if (value < 0) text_.push_back('-');
+  std::array<char, 8> fraction{};
+  int fraction_digits = places;
+  for (int i = places - 1; i >= 0; --i) {
+    fraction[static_cast<std::size_t>(i)] = static_cast<char>('0' + units % 10);
+    units /= 10;
+  }
+  while (fraction_digits > 0 && fraction[static_cast<std::size_t>(fraction_digits - 1)] == '0') --fraction_digits;
+  integer(units);
+  if (fraction_digits > 0) {
+    text_.push_back('.');
+    text_.append(fraction.data(), static_cast<std::size_t>(fraction_digits));
+  }
 }
 
 void JsonOut::string(std::string_view text) {
