@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/replay_link.h"
+#include "link/link_read_support.h"
 #include "core/record/recording_writer.h"
 
 namespace ydscope {
@@ -57,31 +58,8 @@ class ReplayLinkTest : public ::testing::Test {
   // Reads until `want` bytes or an error; returns the bytes and the error that ended it.
   static std::pair<Bytes, boost::system::error_code> read_until(boost::asio::io_context& io, ByteLink& link,
                                                                 std::size_t want, std::size_t buffer_size = 5) {
-    Bytes got;
-    boost::system::error_code end;
-    std::vector<std::uint8_t> buffer(buffer_size);
-    // A paused link holds the read without any asio work pending, so keep the context alive until
-    // the read loop itself says it is done; otherwise run_for would return early.
-    auto work = boost::asio::make_work_guard(io);
-    std::function<void()> more = [&] {
-      link.async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
-        got.insert(got.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
-        if (ec) {
-          end = ec;
-          io.stop();
-          return;
-        }
-        if (got.size() < want) {
-          more();
-        } else {
-          io.stop();
-        }
-      });
-    };
-    more();
-    io.restart();
-    io.run_for(kHangGuard);
-    return {got, end};
+    auto result = test::read_from_link(io, link, want, buffer_size, kHangGuard);
+    return {std::move(result.bytes), result.end};
   }
 
   std::string path_;

@@ -16,6 +16,7 @@
 
 #include "core/link/serial_link.h"
 #include "core/link/termios2_baud.h"
+#include "link/link_read_support.h"
 
 namespace ydscope {
 namespace {
@@ -115,18 +116,9 @@ TEST(SerialLink, CarriesEveryByteValueBothWays) {
   ASSERT_EQ(::write(pty.master(), device_bytes.data(), device_bytes.size()),
             static_cast<ssize_t>(device_bytes.size()));
 
-  std::vector<std::uint8_t> received;
-  std::array<std::uint8_t, 64> buffer{};
-  std::function<void()> read_more = [&] {
-    link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
-      ASSERT_FALSE(ec) << ec.message();
-      received.insert(received.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
-      if (received.size() < device_bytes.size()) read_more();
-    });
-  };
-  read_more();
-  io.run_for(kHangGuard);
-  EXPECT_EQ(received, device_bytes);
+  const auto received = test::read_from_link(io, *link, device_bytes.size(), 64, kHangGuard);
+  EXPECT_FALSE(received.end) << received.end.message();
+  EXPECT_EQ(received.bytes, device_bytes);
 
   const std::array<std::uint8_t, 4> commands{0xA5, 0x65, 0xA5, 0x0D};
   bool written = false;

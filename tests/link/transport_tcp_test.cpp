@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/tcp_link.h"
+#include "link/link_read_support.h"
 
 namespace ydscope {
 namespace {
@@ -34,18 +35,9 @@ TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
 
   const std::vector<std::uint8_t> device_bytes{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81, 0xAA, 0x55};
   boost::asio::write(bridge, boost::asio::buffer(device_bytes));
-  std::vector<std::uint8_t> received;
-  std::array<std::uint8_t, 4> buffer{};
-  std::function<void()> read_more = [&] {
-    link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
-      ASSERT_FALSE(ec) << ec.message();
-      received.insert(received.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
-      if (received.size() < device_bytes.size()) read_more();
-    });
-  };
-  read_more();
-  io.run_for(kHangGuard);
-  EXPECT_EQ(received, device_bytes);
+  const auto received = test::read_from_link(io, *link, device_bytes.size(), 4, kHangGuard);
+  EXPECT_FALSE(received.end) << received.end.message();
+  EXPECT_EQ(received.bytes, device_bytes);
 
   const std::array<std::uint8_t, 2> stop{0xA5, 0x65};
   bool written = false;
@@ -63,11 +55,9 @@ TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
 
   // The bridge hanging up is end-of-file for the session (it reconnects).
   bridge.close();
-  boost::system::error_code last;
-  link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t) { last = ec; });
-  io.restart();
-  io.run_for(kHangGuard);
-  EXPECT_EQ(last, boost::asio::error::eof);
+  const auto after_hang_up = test::read_from_link(io, *link, SIZE_MAX, 4, kHangGuard);
+  EXPECT_TRUE(after_hang_up.bytes.empty());
+  EXPECT_EQ(after_hang_up.end, boost::asio::error::eof);
 }
 
 TEST(TcpLink, RefusedConnectionIsOneSentence) {
