@@ -64,11 +64,9 @@ int run_set(std::span<const std::string> raw) {
   out.raw(R"({"ok":)");
   out.raw(result.ok ? "true" : "false");
   out.raw(R"(,"scan_hz":)");
-  if (result.scan_hz) out.fixed(*result.scan_hz, 2);
-  else out.raw("null");
+  out.fixed_or_null(result.scan_hz, 2);
   out.raw(R"(,"ranging_khz":)");
-  if (result.ranging_khz) out.integer(*result.ranging_khz);
-  else out.raw("null");
+  out.integer_or_null(result.ranging_khz);
   out.raw(R"(,"message":)");
   out.string(result.message);
   out.raw("}\n");

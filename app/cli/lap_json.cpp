@@ -99,11 +99,9 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
   }
   const bool trusted = lap.ct_info_trusted();
   out.raw(R"(],"scan_hz":)");
-  if (g1_info && trusted && lap.scan_hz) out.fixed(*lap.scan_hz, 2);
-  else out.raw("null");
+  out.fixed_or_null(g1_info && trusted ? lap.scan_hz : std::nullopt, 2);
   out.raw(R"(,"health":)");
-  if (g1_info && trusted && lap.health_bits) out.integer(*lap.health_bits);
-  else out.raw("null");
+  out.integer_or_null(g1_info && trusted ? lap.health_bits : std::nullopt);
   out.raw(R"(,"crc_ok":)");
   out.raw(lap.crc == CrcVerdict::Ok ? "true" : lap.crc == CrcVerdict::Mismatch ? "false" : "null");
   out.raw(R"(,"packets":)");

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -24,6 +25,15 @@ class JsonOut {
   void integer(std::uint64_t value);
   // value rounded to `decimals` places, trailing zeros (and a bare point) removed: 7161.25, 1000.
   void fixed(double value, int decimals);
+  // The value, or JSON null when there is none.
+  void integer_or_null(const std::optional<std::uint64_t>& value) {
+    if (value) integer(*value);
+    else raw("null");
+  }
+  void fixed_or_null(const std::optional<double>& value, int decimals) {
+    if (value) fixed(*value, decimals);
+    else raw("null");
+  }
   // A JSON string literal with quotes and escapes.
   void string(std::string_view text);
   void maybe_flush() {

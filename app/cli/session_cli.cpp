@@ -80,11 +80,9 @@ void write_device_fields(JsonOut& out, const SessionSnapshot& s) {
     out.raw("null");
   }
   out.raw(R"(,"scan_hz":)");
-  if (s.scan_hz) out.fixed(*s.scan_hz, 2);
-  else out.raw("null");
+  out.fixed_or_null(s.scan_hz, 2);
   out.raw(R"(,"ranging_khz":)");
-  if (s.ranging_khz) out.integer(*s.ranging_khz);
-  else out.raw("null");
+  out.integer_or_null(s.ranging_khz);
   out.raw(R"(,"port":)");
   out.string(s.link);
   out.raw(R"(,"baud":)");
