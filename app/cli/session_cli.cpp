@@ -45,7 +45,12 @@ SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config) 
   const LinkState goal = config.scan ? LinkState::Scanning : LinkState::Ready;
   const SessionSnapshot s = session.wait_until(
       [goal](const SessionSnapshot& x) { return x.state == goal || x.state == LinkState::Failed; }, kConnectPatience);
-  if (s.state == goal) return s;
+  if (s.state == goal) {
+    // A session that reached its goal still explains anything odd on the way (a forced model the
+    // device disagrees with, a health question it did not answer): show it, as a warning.
+    if (!s.message.empty()) std::fprintf(stderr, "ydscope-cli: warning: %s\n", s.message.c_str());
+    return s;
+  }
   if (s.state == LinkState::Failed) throw std::runtime_error(s.message);
   throw std::runtime_error("gave up after " + std::to_string(kConnectPatience.count()) + " s waiting for " +
                            config.address + " (" + describe_snapshot(s) + ")");

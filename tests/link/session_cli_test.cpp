@@ -48,6 +48,18 @@ TEST(SessionCli, InfoPrintsOneJsonObjectWithTheDeviceDetails) {
     EXPECT_NE(run.out.find(field), std::string::npos) << field << " in " << run.out;
 }
 
+TEST(SessionCli, AForcedModelThatDisagreesWithTheDeviceIsWarnedAbout) {
+  SimOnPty sim(Model::TG50);
+  const CliRun forced = run_cli("info --port " + sim.port() + " --model G6");
+  ASSERT_EQ(forced.status, 0) << forced.out;
+  EXPECT_NE(forced.out.find("warning: the device reports model code 102 (TG50) but G6 was asked for"),
+            std::string::npos)
+      << forced.out;
+  const CliRun matching = run_cli("info --port " + sim.port() + " --model TG50");
+  ASSERT_EQ(matching.status, 0) << matching.out;
+  EXPECT_EQ(matching.out.find("warning"), std::string::npos) << matching.out;
+}
+
 TEST(SessionCli, ScanPrintsNLapsAndTheSummary) {
   SimOnPty sim(Model::G1);
   const CliRun run = run_cli("scan --port " + sim.port() + " --model G1 --laps 4");
