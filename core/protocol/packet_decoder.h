@@ -72,6 +72,8 @@ class PacketDecoder {
   void finish(PacketSink& sink);
 
   const PacketCounters& counters() const { return counters_; }
+  // The bytes held of a packet not complete yet (they start at its AA); empty at a boundary.
+  std::span<const std::uint8_t> partial_packet() const { return {pending_.data(), pending_size_}; }
   // Forget buffered bytes and counters (e.g. after a reconnect).
   void reset();
 

@@ -4,17 +4,21 @@ namespace ydscope {
 
 namespace {
 
-// Routes the framer's events into the assembler and hands completed laps to the caller.
+// Routes the framer's events into the assembler (and the forecast) and hands completed laps to
+// the caller.
 class AssemblingSink final : public PacketSink {
  public:
-  AssemblingSink(LapAssembler& assembler, LapCallback on_lap) : assembler_(assembler), on_lap_(on_lap) {}
+  AssemblingSink(LapAssembler& assembler, LapEndForecast& forecast, LapCallback on_lap)
+      : assembler_(assembler), forecast_(forecast), on_lap_(on_lap) {}
   void on_packet(const PacketView& packet) override {
+    forecast_.observe(packet);
     if (assembler_.add_packet(packet)) on_lap_(assembler_.lap());
   }
   void on_checksum_error() override { assembler_.add_checksum_error(); }
 
  private:
   LapAssembler& assembler_;
+  LapEndForecast& forecast_;
   LapCallback on_lap_;
 };
 
@@ -26,12 +30,12 @@ ScanDecoder::ScanDecoder(const ModelProfile& profile, std::optional<double> dist
       assembler_(profile, distance_scale.value_or(profile.distance_scale)) {}
 
 void ScanDecoder::feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, LapCallback on_lap) {
-  AssemblingSink sink(assembler_, on_lap);
+  AssemblingSink sink(assembler_, forecast_, on_lap);
   packets_.feed(bytes, rx_ns, sink);
 }
 
 void ScanDecoder::finish(LapCallback on_lap) {
-  AssemblingSink sink(assembler_, on_lap);
+  AssemblingSink sink(assembler_, forecast_, on_lap);
   packets_.finish(sink);
 }
 
@@ -56,6 +60,7 @@ DecoderCounters ScanDecoder::counters() const {
 void ScanDecoder::reset() {
   packets_.reset();
   assembler_.reset();
+  forecast_.reset();
 }
 
 }  // namespace ydscope

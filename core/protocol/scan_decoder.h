@@ -8,6 +8,7 @@
 #include "core/protocol/function_ref.h"
 #include "core/protocol/lap.h"
 #include "core/protocol/lap_assembler.h"
+#include "core/protocol/lap_end_forecast.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/packet_decoder.h"
 
@@ -41,6 +42,10 @@ class ScanDecoder {
   // End of stream (file decoding): lets packets hidden behind an incomplete false start out.
   void finish(LapCallback on_lap);
 
+  // How many bytes can arrive before the next lap could close: how long a reader may leave input
+  // waiting without delaying a lap (see LapEndForecast).
+  LapEndOutlook lap_end_outlook() const { return forecast_.outlook(packets_.partial_packet()); }
+
   DecoderCounters counters() const;
   const ModelProfile& profile() const { return *profile_; }
   double distance_scale() const { return assembler_.distance_scale(); }
@@ -51,6 +56,7 @@ class ScanDecoder {
   const ModelProfile* profile_;
   PacketDecoder packets_;
   LapAssembler assembler_;
+  LapEndForecast forecast_;
 };
 
 }  // namespace ydscope
