@@ -24,6 +24,13 @@ class ByteLink {
   virtual void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) = 0;
   // Cancels pending operations (their handlers see operation_aborted) and releases the port.
   virtual void close() = 0;
+  // Until the next async_read_some or async_write, arriving input may wait in the kernel without
+  // waking the I/O thread at all (the session holds off reading mid-lap). Links for which waiting
+  // saves nothing ignore it.
+  virtual void stop_watching_input() {}
+  // The most bytes per second the link can deliver (a serial line: baud / 10); 0 when unbounded.
+  // Holding off reads is kept short enough that the kernel's buffer cannot fill meanwhile.
+  virtual double line_bytes_per_s() const { return 0; }
   // Changes the line rate where there is one (serial); baud probing uses it. False if unsupported.
   virtual bool set_baud(std::uint32_t baud, std::string& error) = 0;
   // False for a replay: it has no device behind it to command.

@@ -1,8 +1,14 @@
 #include "core/link/serial_link.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 
+#include <boost/asio/post.hpp>
 #include <boost/asio/write.hpp>
 
 #include "core/link/termios2_baud.h"
@@ -32,6 +38,18 @@ std::string serial_open_error(const std::string& path, int errno_value) {
   }
 }
 
+namespace {
+
+// Claims the port for this process: TIOCEXCL refuses further opens of the tty (except by root),
+// the advisory lock also stops a second ydscope run as root. Returns 0 or an errno value.
+int claim_exclusively(int fd) {
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) return errno == EWOULDBLOCK ? EBUSY : errno;
+  if (::ioctl(fd, TIOCEXCL) != 0) return errno;
+  return 0;
+}
+
+}  // namespace
+
 SerialLink::SerialLink(boost::asio::io_context& io, std::string path, std::uint32_t baud)
     : port_(io), path_(std::move(path)), baud_(baud) {}
 
@@ -41,39 +59,132 @@ std::unique_ptr<SerialLink> SerialLink::open(boost::asio::io_context& io, const 
     error = "cannot open " + path + ": baud must be a positive number";
     return nullptr;
   }
-  std::unique_ptr<SerialLink> link(new SerialLink(io, path, baud));
-  boost::system::error_code ec;
-  link->port_.open(path, ec);  // O_RDWR | O_NOCTTY | O_NONBLOCK
-  if (ec) {
-    error = serial_open_error(path, ec.value());
+  const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    error = serial_open_error(path, errno);
     return nullptr;
   }
-  if (const int err = termios2::configure_raw(link->port_.native_handle(), baud)) {
+  int err = claim_exclusively(fd);
+  if (err == 0) err = termios2::configure_raw(fd, baud);
+  if (err != 0) {
     error = err == EINVAL ? "cannot open " + path + ": the port refuses " + std::to_string(baud) +
                                 " baud; check the --baud value"
                           : serial_open_error(path, err);
-    link->port_.close(ec);
+    ::close(fd);
     return nullptr;
   }
+  std::unique_ptr<SerialLink> link(new SerialLink(io, path, baud));
+  link->port_.assign(fd);
   return link;
 }
 
-void SerialLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {
-  port_.async_read_some(boost::asio::buffer(buffer.data(), buffer.size()), std::move(handler));
+boost::system::error_code SerialLink::read_available(std::span<std::uint8_t> buffer, std::size_t& got) {
+  got = 0;
+  const int port = port_.native_handle();
+  while (got < buffer.size()) {
+    const std::size_t asked = buffer.size() - got;
+    const ssize_t n = ::read(port, buffer.data() + got, asked);
+    if (n > 0) {
+      got += static_cast<std::size_t>(n);
+      // With VMIN 1 a tty read returns all that is waiting, so a short one leaves the port empty.
+      if (static_cast<std::size_t>(n) < asked) {
+        maybe_more_ = false;
+        return {};
+      }
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      maybe_more_ = false;
+      return {};
+    }
+    // EOF or an error: hand over what was read first; the next read meets the error again.
+    maybe_more_ = true;
+    if (got > 0) return {};
+    return n == 0 ? boost::system::error_code(boost::asio::error::eof)
+                  : boost::system::error_code(errno, boost::system::system_category());
+  }
+  maybe_more_ = true;  // the buffer filled up
+  return {};
 }
 
+void SerialLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {
+  watch_input();
+  if (!maybe_more_) {
+    wait_then_read(buffer, std::move(handler));
+    return;
+  }
+  // Input may be waiting already (the buffer filled last time, or the port is new): try at once,
+  // from the io_context like any completion.
+  boost::asio::post(port_.get_executor(), [this, buffer, handler = std::move(handler)]() mutable {
+    if (!port_.is_open()) {
+      handler(boost::asio::error::operation_aborted, 0);
+      return;
+    }
+    std::size_t got = 0;
+    const boost::system::error_code ec = read_available(buffer, got);
+    if (got > 0 || ec) {
+      handler(ec, got);
+      return;
+    }
+    wait_then_read(buffer, std::move(handler));
+  });
+}
+
+void SerialLink::wait_then_read(std::span<std::uint8_t> buffer, IoHandler handler) {
+  port_.async_wait(boost::asio::posix::descriptor_base::wait_read,
+                   [this, buffer, handler = std::move(handler)](const boost::system::error_code& ec) mutable {
+                     if (ec) {
+                       handler(ec, 0);
+                       return;
+                     }
+                     std::size_t got = 0;
+                     const boost::system::error_code read_ec = read_available(buffer, got);
+                     if (got == 0 && !read_ec) {
+                       wait_then_read(buffer, std::move(handler));  // woken with nothing to read
+                       return;
+                     }
+                     handler(read_ec, got);
+                   });
+}
+
+void SerialLink::stop_watching_input() {
+  // Releasing the descriptor would abort a write in flight; commands are rare, so just stay.
+  if (writing_ || unwatched_fd_ >= 0 || !port_.is_open()) return;
+  unwatched_fd_ = port_.release();
+}
+
+void SerialLink::watch_input() {
+  if (unwatched_fd_ < 0) return;
+  boost::system::error_code ec;
+  port_.assign(unwatched_fd_, ec);
+  if (ec) return;  // stays out; the next read reports the closed port
+  unwatched_fd_ = -1;
+  maybe_more_ = true;  // input has been piling up
+}
+
+int SerialLink::fd() { return unwatched_fd_ >= 0 ? unwatched_fd_ : port_.is_open() ? port_.native_handle() : -1; }
+
 void SerialLink::async_write(std::span<const std::uint8_t> bytes, IoHandler handler) {
-  boost::asio::async_write(port_, boost::asio::buffer(bytes.data(), bytes.size()), std::move(handler));
+  watch_input();
+  writing_ = true;
+  boost::asio::async_write(port_, boost::asio::buffer(bytes.data(), bytes.size()),
+                           [this, handler = std::move(handler)](const boost::system::error_code& ec, std::size_t n) {
+                             writing_ = false;
+                             handler(ec, n);
+                           });
 }
 
 void SerialLink::close() {
   boost::system::error_code ignored;
+  if (unwatched_fd_ >= 0) ::close(unwatched_fd_);
+  unwatched_fd_ = -1;
   port_.cancel(ignored);
   port_.close(ignored);
 }
 
 bool SerialLink::set_baud(std::uint32_t baud, std::string& error) {
-  if (!port_.is_open()) {
+  if (fd() < 0) {
     error = path_ + " is closed";
     return false;
   }
@@ -81,7 +192,7 @@ bool SerialLink::set_baud(std::uint32_t baud, std::string& error) {
     error = "baud must be a positive number";
     return false;
   }
-  if (const int err = termios2::set_baud(port_.native_handle(), baud)) {
+  if (const int err = termios2::set_baud(fd(), baud)) {
     error = "cannot set " + path_ + " to " + std::to_string(baud) + " baud: " + std::strerror(err);
     return false;
   }
@@ -91,6 +202,6 @@ bool SerialLink::set_baud(std::uint32_t baud, std::string& error) {
 
 std::string SerialLink::describe() const { return path_ + " at " + std::to_string(baud_) + " baud"; }
 
-int SerialLink::native_handle() { return port_.is_open() ? port_.native_handle() : -1; }
+int SerialLink::native_handle() { return fd(); }
 
 }  // namespace ydscope

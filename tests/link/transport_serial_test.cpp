@@ -156,6 +156,52 @@ TEST(SerialLink, CloseAbortsAPendingRead) {
   EXPECT_EQ(link->native_handle(), -1);
 }
 
+TEST(SerialLink, InputThatArrivesWhileUnwatchedIsAllReadAfterwards) {
+  PseudoTerminal pty;
+  boost::asio::io_context io;
+  std::string error;
+  auto link = SerialLink::open(io, pty.slave_path(), 512000, error);
+  ASSERT_TRUE(link) << error;
+  link->stop_watching_input();
+  std::vector<std::uint8_t> device_bytes(3000);
+  for (std::size_t i = 0; i < device_bytes.size(); ++i) device_bytes[i] = static_cast<std::uint8_t>(i * 7);
+  for (std::size_t sent = 0; sent < device_bytes.size(); sent += 100)
+    ASSERT_EQ(::write(pty.master(), device_bytes.data() + sent, 100), 100);
+  // Nothing watches the port, so the context has nothing to do while the bytes pile up.
+  EXPECT_EQ(io.poll(), 0u);
+
+  const auto received = test::read_from_link(io, *link, device_bytes.size(), 4096, kHangGuard);
+  EXPECT_FALSE(received.end) << received.end.message();
+  EXPECT_EQ(received.bytes, device_bytes);
+}
+
+TEST(SerialLink, CommandsGoOutWhileInputIsUnwatched) {
+  PseudoTerminal pty;
+  boost::asio::io_context io;
+  std::string error;
+  auto link = SerialLink::open(io, pty.slave_path(), 512000, error);
+  ASSERT_TRUE(link) << error;
+  link->stop_watching_input();
+  const std::array<std::uint8_t, 2> stop{0xA5, 0x65};
+  bool written = false;
+  link->async_write(stop, [&](const boost::system::error_code& ec, std::size_t) { written = !ec; });
+  io.run_for(kHangGuard);
+  EXPECT_TRUE(written);
+  EXPECT_EQ(pty.read_master(stop.size()), std::vector<std::uint8_t>(stop.begin(), stop.end()));
+}
+
+TEST(SerialLink, ASecondOpenOfTheSamePortIsToldItIsBusy) {
+  PseudoTerminal pty;
+  boost::asio::io_context io;
+  std::string error;
+  auto first = SerialLink::open(io, pty.slave_path(), 512000, error);
+  ASSERT_TRUE(first) << error;
+  EXPECT_FALSE(SerialLink::open(io, pty.slave_path(), 512000, error));
+  EXPECT_NE(error.find("busy"), std::string::npos) << error;
+  first->close();
+  EXPECT_TRUE(SerialLink::open(io, pty.slave_path(), 512000, error)) << error;
+}
+
 TEST(SerialLink, MissingDeviceIsOneActionableSentence) {
   boost::asio::io_context io;
   std::string error;
