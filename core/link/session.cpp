@@ -76,7 +76,7 @@ Session::Impl::Impl(LapQueue& queue, WakeFn wake)
       signal_(io_),
       tick_(io_) {
   link_.on_fault([this] { notify(); });
-  link_.on_stream([this](std::span<const std::uint8_t> bytes, std::int64_t rx_ns) { on_stream(bytes, rx_ns); });
+  link_.on_stream([this](std::span<const std::uint8_t> bytes, std::int64_t rx_ns) { return on_stream(bytes, rx_ns); });
   thread_ = std::thread([this] { run_thread(); });
 }
 
@@ -269,14 +269,15 @@ void Session::Impl::new_decoder() {
   publish([scale](SessionSnapshot& s) { s.distance_scale = scale; });
 }
 
-void Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns) {
-  if (!decoder_) return;
+LapEndOutlook Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns) {
+  if (!decoder_) return {};
   decoder_->feed(bytes, rx_ns, [this](const Lap& lap) {
     if (!queue_.try_push(lap)) counters_.add_queue_drop();
     if (wake_) wake_();
   });
   const DecoderCounters c = decoder_->counters();
   counters_.set_decoder_totals({c.packets, c.zero_packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches});
+  return decoder_->lap_end_outlook();
 }
 
 // ---- the tick: rates, stall watchdog, power-down keepalive ----------------------------------

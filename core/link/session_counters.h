@@ -54,6 +54,7 @@ class SessionCounters {
   // Any thread.
   CounterSnapshot read(std::int64_t now_ns) const;
   std::int64_t last_byte_ns() const { return last_byte_ns_.load(std::memory_order_relaxed); }
+  double bytes_per_s() const { return bytes_per_s_.load(std::memory_order_relaxed); }
 
  private:
   static void bump(std::atomic<std::uint64_t>& counter, std::uint64_t n) {

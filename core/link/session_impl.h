@@ -53,7 +53,8 @@ class Session::Impl {
   void notify() { signal_.cancel(); }
   void start_tick();
   void on_tick();
-  void on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns);
+  // Feeds the decoder; returns how many bytes can arrive before a lap could close.
+  LapEndOutlook on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns);
   void new_decoder();
   void set_state(LinkState state, std::string message);
   void publish(const std::function<void(SessionSnapshot&)>& change);

@@ -7,6 +7,7 @@
 #include <boost/asio/redirect_error.hpp>
 #include <boost/asio/use_awaitable.hpp>
 
+#include "core/link/read_hold.h"
 #include "core/protocol/reply.h"
 
 namespace ydscope {
@@ -26,7 +27,7 @@ std::int64_t link_clock_ns() {
 }
 
 SessionIo::SessionIo(asio::io_context& io, SessionCounters& counters)
-    : io_(io), counters_(counters), wait_timer_(io) {}
+    : io_(io), counters_(counters), wait_timer_(io), hold_timer_(io) {}
 
 SessionIo::~SessionIo() { detach(); }
 
@@ -34,7 +35,8 @@ void SessionIo::attach(std::unique_ptr<ByteLink> link) {
   link_ = std::move(link);
   ++generation_;
   fault_.clear();
-  sink_ = Sink::Discard;
+  holding_ = false;  // a hold of the previous link ended with its generation
+  set_sink(Sink::Discard);
   device_scanning_ = false;
   write_count_ = 0;
   writing_ = false;
@@ -49,7 +51,7 @@ void SessionIo::detach() {
   std::shared_ptr<ByteLink> retired(std::move(link_));
   asio::post(io_, [retired] {});
   device_scanning_ = false;
-  sink_ = Sink::Discard;
+  set_sink(Sink::Discard);
   wake_waiters();
 }
 
@@ -88,7 +90,40 @@ void SessionIo::on_read(std::uint64_t generation, const boost::system::error_cod
   const std::span<const std::uint8_t> bytes(buffer_.data(), n);
   if (on_wire_) on_wire_(false, bytes, now);
   route(bytes, now);
+  read_on();
+}
+
+void SessionIo::read_on() {
+  if (!link_) return;
+  const auto hold = sink_ == Sink::Stream
+                        ? read_hold({link_clock_ns(), stream_outlook_, counters_.bytes_per_s(), link_->line_bytes_per_s()})
+                        : std::chrono::nanoseconds(0);
+  if (hold.count() == 0) {
+    start_read();
+    return;
+  }
+  link_->stop_watching_input();
+  holding_ = true;
+  hold_timer_.expires_after(hold);
+  const std::uint64_t generation = generation_;
+  hold_timer_.async_wait([this, generation](const boost::system::error_code&) {
+    if (generation != generation_ || !holding_) return;
+    holding_ = false;
+    start_read();
+  });
+}
+
+void SessionIo::end_hold() {
+  if (!holding_) return;
+  holding_ = false;
+  hold_timer_.cancel();
   start_read();
+}
+
+void SessionIo::set_sink(Sink sink) {
+  sink_ = sink;
+  // Replies and drains must see every byte as it comes.
+  if (sink != Sink::Stream) end_hold();
 }
 
 void SessionIo::route(std::span<const std::uint8_t> bytes, std::int64_t now) {
@@ -98,7 +133,7 @@ void SessionIo::route(std::span<const std::uint8_t> bytes, std::int64_t now) {
         counters_.add_drained(bytes.size());
         return;
       case Sink::Stream:
-        if (on_stream_) on_stream_(bytes, now);
+        if (on_stream_) stream_outlook_ = on_stream_(bytes, now);
         return;
       case Sink::ScanHeader: {
         // Match the header byte by byte; on the first mismatch everything goes to the decoder,
@@ -110,16 +145,16 @@ void SessionIo::route(std::span<const std::uint8_t> bytes, std::int64_t now) {
           ++scan_header_matched_;
         }
         if (scan_header_matched_ == kScanHeader.size()) {
-          sink_ = Sink::Stream;
+          set_sink(Sink::Stream);
           bytes = bytes.subspan(used);
           break;
         }
         if (used == bytes.size()) return;  // header still arriving
-        sink_ = Sink::Stream;
+        set_sink(Sink::Stream);
         if (on_stream_ && scan_header_matched_ > 0)
           on_stream_(std::span<const std::uint8_t>(kScanHeader.data(), scan_header_matched_ - used), now);
         // The part matched in this chunk is still at the start of `bytes`: hand it all over.
-        if (on_stream_) on_stream_(bytes, now);
+        if (on_stream_) stream_outlook_ = on_stream_(bytes, now);
         return;
       }
       case Sink::Reply: {
@@ -129,13 +164,13 @@ void SessionIo::route(std::span<const std::uint8_t> bytes, std::int64_t now) {
         if (reply_.complete()) {
           if (reply_matches(reply_.header(), awaited_)) {
             reply_done_ = true;
-            sink_ = Sink::Discard;
+            set_sink(Sink::Discard);
             wake_waiters();
           } else {
             reply_.reset();  // a stale or foreign reply: keep looking
           }
         } else if (reply_.state() == ReplyReader::State::GaveUp) {
-          sink_ = Sink::Discard;
+          set_sink(Sink::Discard);
           wake_waiters();
         }
         break;
@@ -196,7 +231,7 @@ asio::awaitable<bool> SessionIo::sleep(std::chrono::milliseconds duration) {
 }
 
 asio::awaitable<void> SessionIo::drain(std::chrono::milliseconds quiet, std::chrono::milliseconds limit) {
-  sink_ = Sink::Discard;
+  set_sink(Sink::Discard);
   const std::int64_t start = link_clock_ns();
   const std::int64_t quiet_ns = std::chrono::nanoseconds(quiet).count();
   const std::int64_t limit_ns = std::chrono::nanoseconds(limit).count();
@@ -223,10 +258,10 @@ asio::awaitable<Exchange> SessionIo::exchange(Command command, std::chrono::mill
     awaited_ = command;
     reply_done_ = false;
     reply_bytes_seen_ = 0;
-    sink_ = Sink::Reply;
+    set_sink(Sink::Reply);
   }
   if (!send(command)) {
-    sink_ = Sink::Discard;
+    set_sink(Sink::Discard);
     result.outcome = link_ ? Exchange::Outcome::Refused : Exchange::Outcome::LinkLost;
     co_return result;
   }
@@ -238,7 +273,7 @@ asio::awaitable<Exchange> SessionIo::exchange(Command command, std::chrono::mill
   wait_timer_.expires_after(timeout);
   boost::system::error_code ec;
   co_await wait_timer_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
-  if (sink_ == Sink::Reply) sink_ = Sink::Discard;
+  if (sink_ == Sink::Reply) set_sink(Sink::Discard);
   result.bytes_seen = reply_bytes_seen_;
   if (generation != generation_ || !link_) {
     result.outcome = Exchange::Outcome::LinkLost;
@@ -256,14 +291,14 @@ asio::awaitable<Exchange> SessionIo::exchange(Command command, std::chrono::mill
 bool SessionIo::start_stream() {
   scan_header_matched_ = 0;
   const Sink previous = sink_;
-  sink_ = Sink::ScanHeader;
+  set_sink(Sink::ScanHeader);
   if (!send(Command::Scan)) {
-    sink_ = previous;
+    set_sink(previous);
     return false;
   }
   return true;
 }
 
-void SessionIo::stop_stream() { sink_ = Sink::Discard; }
+void SessionIo::stop_stream() { set_sink(Sink::Discard); }
 
 }  // namespace ydscope

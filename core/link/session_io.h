@@ -22,6 +22,7 @@
 #include "core/link/byte_link.h"
 #include "core/link/session_counters.h"
 #include "core/protocol/commands.h"
+#include "core/protocol/lap_end_forecast.h"
 #include "core/protocol/reply_reader.h"
 
 namespace ydscope {
@@ -42,7 +43,9 @@ struct Exchange {
 
 class SessionIo {
  public:
-  using StreamFn = std::function<void(std::span<const std::uint8_t>, std::int64_t rx_ns)>;
+  // Takes stream bytes; returns how many more can arrive before its consumer needs to see them.
+  // Mid-lap, reading is held off accordingly (read_hold.h).
+  using StreamFn = std::function<LapEndOutlook(std::span<const std::uint8_t>, std::int64_t rx_ns)>;
   using WireFn = std::function<void(bool outgoing, std::span<const std::uint8_t>, std::int64_t ns)>;
   using FaultFn = std::function<void()>;
 
@@ -99,6 +102,10 @@ class SessionIo {
   void start_read();
   void on_read(std::uint64_t generation, const boost::system::error_code& ec, std::size_t n);
   void route(std::span<const std::uint8_t> bytes, std::int64_t now);
+  void set_sink(Sink sink);
+  // After stream bytes: read again at once, or hold off for what the forecast allows.
+  void read_on();
+  void end_hold();
   void start_write();
   void raise_fault(std::string sentence);
   void wake_waiters();
@@ -119,6 +126,8 @@ class SessionIo {
   bool reply_done_ = false;
   std::size_t reply_bytes_seen_ = 0;
   std::size_t scan_header_matched_ = 0;
+  LapEndOutlook stream_outlook_{};  // what the stream consumer last said can arrive unseen
+  bool holding_ = false;                // reading is held off; hold_timer_ restarts it
   std::int64_t last_rx_ns_ = 0;
 
   bool device_scanning_ = false;
@@ -133,6 +142,7 @@ class SessionIo {
 
   // One timer for whichever coroutine step waits (the session runs one step at a time).
   boost::asio::steady_timer wait_timer_;
+  boost::asio::steady_timer hold_timer_;
 };
 
 }  // namespace ydscope
