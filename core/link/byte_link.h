@@ -11,6 +11,8 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/system/error_code.hpp>
 
+#include "core/record/recording_metadata.h"
+
 namespace ydscope {
 
 class ByteLink {
@@ -33,6 +35,8 @@ class ByteLink {
   virtual double line_bytes_per_s() const { return 0; }
   // Changes the line rate where there is one (serial); baud probing uses it. False if unsupported.
   virtual bool set_baud(std::uint32_t baud, std::string& error) = 0;
+  // A replay's recorded metadata (the device the bytes came from); null for a live link.
+  virtual const RecordingMetadata* recording_metadata() const { return nullptr; }
   // False for a replay: it has no device behind it to command.
   virtual bool accepts_commands() const = 0;
   // "/dev/ttyUSB0 at 230400 baud", "tcp://127.0.0.1:2000", "replay of scan.ydrec" for messages.

@@ -65,6 +65,7 @@ class ReplayLink final : public ByteLink {
   ReplayStatus status() const;
   // The recording's metadata, every metadata record merged (model, baud, device info...).
   const RecordingMetadata& metadata() const { return metadata_; }
+  const RecordingMetadata* recording_metadata() const override { return &metadata_; }
   // A truncated or corrupt tail found while opening, as a sentence (empty when the file is whole).
   const std::string& warning() const { return warning_; }
 

@@ -12,6 +12,7 @@
 
 #include "core/link/device_probe.h"
 #include "core/link/link_address.h"
+#include "core/link/recorded_device.h"
 #include "core/link/session_impl.h"
 
 namespace ydscope {
@@ -155,10 +156,11 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
   if (!commands) {  // a replay: nothing to ask, decode what comes
     profile_ = &profile_for(config.model.value_or(Model::G6));
     new_decoder();
-    publish([this](SessionSnapshot& s) {
-      s.device = DeviceDetails{};
-      s.device->profile = profile_;
-    });
+    DeviceDetails device;
+    device.profile = profile_;
+    if (const RecordingMetadata* recorded = link_.link()->recording_metadata())
+      device = recorded_device(*recorded, *profile_);
+    publish([&device](SessionSnapshot& s) { s.device = device; });
     link_.listen_stream();
     scan_started_ns_ = link_clock_ns();
     set_state(LinkState::Scanning, "");

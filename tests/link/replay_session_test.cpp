@@ -121,5 +121,29 @@ TEST(RecordThenReplay, G1GivesBackTheSameLaps) { record_and_replay(Model::G1); }
 TEST(RecordThenReplay, G6GivesBackTheSameLaps) { record_and_replay(Model::G6); }
 TEST(RecordThenReplay, Tg30GivesBackTheSameLaps) { record_and_replay(Model::TG30); }
 
+TEST(ReplayThroughASession, ShowsTheDeviceTheRecordingCameFrom) {
+  const std::string file = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+  Session session(16);
+  SessionConfig config;
+  config.address = file;
+  config.model = Model::G6;
+  config.reconnect = false;
+  config.open_link = [file](boost::asio::io_context& io, std::uint32_t, std::string& error) -> std::unique_ptr<ByteLink> {
+    return ReplayLink::open(io, file, {.speed = 1}, error);
+  };
+  session.connect(config);
+  const auto s = session.wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Scanning; },
+                                    std::chrono::seconds(20));
+  ASSERT_EQ(s.state, LinkState::Scanning) << s.message;
+  ASSERT_TRUE(s.device);
+  EXPECT_EQ(s.device->profile->model, Model::G6);
+  EXPECT_EQ(s.device->model_code, 13);
+  EXPECT_EQ(s.device->firmware.major, 1);
+  EXPECT_EQ(s.device->firmware.minor, 2);
+  EXPECT_EQ(s.device->hardware, 1);
+  EXPECT_EQ(s.device->serial, "4443985271891104");
+  session.disconnect();
+}
+
 }  // namespace
 }  // namespace ydscope
