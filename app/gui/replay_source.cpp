@@ -21,6 +21,7 @@ class SharedReplayLink final : public ByteLink {
   bool set_baud(std::uint32_t baud, std::string& error) override { return link_->set_baud(baud, error); }
   bool accepts_commands() const override { return link_->accepts_commands(); }
   std::string describe() const override { return link_->describe(); }
+  const RecordingMetadata* recording_metadata() const override { return link_->recording_metadata(); }
 
  private:
   std::shared_ptr<ReplayLink> link_;
