@@ -12,8 +12,9 @@ namespace {
 constexpr double kRateMargin = 1.15;
 // Shorter holds save less than the timer and the re-registration cost.
 constexpr std::chrono::nanoseconds kShortestHold = std::chrono::milliseconds(1);
-// Three quarters of n_tty's 4 KiB buffer: even at full line rate a hold cannot overflow it.
-constexpr double kMostBytesHeld = 3072;
+// What n_tty's buffer holds; the flip buffers behind it (16 KiB on a pty, more on a USB port) are
+// the margin, so even at full line rate a hold cannot lose a byte.
+constexpr double kMostBytesHeld = 4096;
 }  // namespace
 
 std::chrono::nanoseconds read_hold(const ReadHoldInputs& in) {

@@ -51,8 +51,8 @@ TEST(ReadHold, AtLeastTheLineRateBoundWhenTheStreamRateIsUnknown) {
   EXPECT_NEAR(ms(read_hold(inputs(kPacket + 512, 0))), 10.0, 0.01);
 }
 
-TEST(ReadHold, NeverLongerThanTheLineNeedsToFillThreeQuartersOfTheTtyBuffer) {
-  const double most = 3072 / kLine * 1e3;  // 60 ms
+TEST(ReadHold, NeverLongerThanTheLineNeedsToFillTheTtyBuffer) {
+  const double most = 4096 / kLine * 1e3;  // 80 ms
   EXPECT_NEAR(ms(read_hold(inputs(100'000))), most, 0.01);
   ReadHoldInputs due_late = inputs(100);
   due_late.lap_end.next_close_ns = due_late.now_ns + 1'000'000'000;
