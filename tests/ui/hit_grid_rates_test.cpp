@@ -83,6 +83,21 @@ TEST(GridLayout, RingsCoverTheViewAndLabelsStayInside) {
   EXPECT_NEAR(grid.spoke_labels[3].screen.x, 1000.0f - 18.0f, 0.5f);
 }
 
+TEST(GridLayout, RingLabelsKeepClearOfTheWindowEdgesAtEveryZoom) {
+  ViewTransform v = make_view();
+  std::size_t labels = 0;
+  for (int step = 0; step < 60; ++step) {
+    v.zoom_about(v.viewport_centre(), 1.07f);
+    const GridLayout grid = layout_grid(v, 70.0f, 30.0f, 45.0f, 18.0f);
+    for (const GridLabel& label : grid.ring_labels) {
+      ++labels;
+      EXPECT_GE(label.screen.y, 18.0f) << label.text << " at zoom step " << step;
+      EXPECT_LE(label.screen.x, 1000.0f - 18.0f - 48.0f) << label.text << " at zoom step " << step;
+    }
+  }
+  EXPECT_GT(labels, 60u);  // the rings still carry labels
+}
+
 TEST(GridLayout, SpokesOfALidarOffScreenMayHaveNoLabel) {
   ViewTransform v = make_view();
   v.pan_by_pixels({-3000.0f, 0.0f});  // the lidar is far to the left of the window

@@ -26,7 +26,7 @@ struct GridLabel {
 struct GridLayout {
   float ring_step_mm = 1000.0f;
   std::vector<float> ring_radii_mm;   // every ring to draw, inside the visible radius
-  std::vector<GridLabel> ring_labels;
+  std::vector<GridLabel> ring_labels;   // only where the text fits inside the (inset) viewport
   std::vector<float> spoke_angles_deg;
   std::vector<GridLabel> spoke_labels;  // where each spoke leaves the (inset) viewport
 };
