@@ -83,17 +83,12 @@ std::optional<LinkAddress> parse_link_address(std::string_view text, std::string
   return address;
 }
 
-std::unique_ptr<ByteLink> open_byte_link(boost::asio::io_context& io, const LinkAddress& address,
-                                         std::uint32_t baud, std::string& error) {
-  if (address.kind == LinkAddress::Kind::Tcp) return TcpLink::connect(io, address.host, address.port, error);
-  return SerialLink::open(io, address.path, baud, error);
-}
-
-std::unique_ptr<ByteLink> open_byte_link(boost::asio::io_context& io, std::string_view address,
-                                         std::uint32_t baud, std::string& error) {
+boost::asio::awaitable<std::unique_ptr<ByteLink>> open_byte_link(boost::asio::io_context& io, std::string address,
+                                                                 std::uint32_t baud, std::string& error) {
   const auto parsed = parse_link_address(address, error);
-  if (!parsed) return nullptr;
-  return open_byte_link(io, *parsed, baud, error);
+  if (!parsed) co_return nullptr;
+  if (parsed->kind == LinkAddress::Kind::Tcp) co_return co_await TcpLink::connect(io, parsed->host, parsed->port, error);
+  co_return SerialLink::open(io, parsed->path, baud, error);
 }
 
 }  // namespace ydscope

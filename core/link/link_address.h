@@ -6,7 +6,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>  // before asio's awaitable.hpp, which uses std::exchange without including it
 
+#include <boost/asio/awaitable.hpp>
 #include <boost/asio/io_context.hpp>
 
 #include "core/link/byte_link.h"
@@ -29,12 +31,9 @@ struct LinkAddress {
 std::optional<LinkAddress> parse_link_address(std::string_view text, std::string& error);
 
 // Opens a serial port (raw 8N1 at `baud`) or connects to a TCP bridge (baud is the bridge's
-// business and is ignored). Blocking, bounded by the TCP connect timeout. Null plus one
-// sentence in `error` on failure.
-std::unique_ptr<ByteLink> open_byte_link(boost::asio::io_context& io, const LinkAddress& address,
-                                         std::uint32_t baud, std::string& error);
-// Same, parsing the --port text first.
-std::unique_ptr<ByteLink> open_byte_link(boost::asio::io_context& io, std::string_view address,
-                                         std::uint32_t baud, std::string& error);
+// business and is ignored), parsing the --port text first. A connect waits on `io` without
+// blocking it. Null plus one sentence in `error` (which must outlive the wait) on failure.
+boost::asio::awaitable<std::unique_ptr<ByteLink>> open_byte_link(boost::asio::io_context& io, std::string address,
+                                                                 std::uint32_t baud, std::string& error);
 
 }  // namespace ydscope

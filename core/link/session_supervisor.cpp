@@ -136,8 +136,11 @@ asio::awaitable<void> Session::Impl::backoff(std::chrono::milliseconds duration)
 asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& config, std::string& error) {
   set_state(LinkState::Connecting, "opening " + config.address);
   const std::vector<std::uint32_t> bauds = candidate_bauds(config);
-  std::unique_ptr<ByteLink> opened = config.open_link ? config.open_link(io_, bauds.front(), error)
-                                                      : open_byte_link(io_, config.address, bauds.front(), error);
+  std::unique_ptr<ByteLink> opened;
+  if (config.open_link)
+    opened = config.open_link(io_, bauds.front(), error);
+  else
+    opened = co_await open_byte_link(io_, config.address, bauds.front(), error);
   if (!opened) {
     if (error.empty()) error = "cannot open " + config.address;
     co_return false;

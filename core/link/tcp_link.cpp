@@ -1,47 +1,23 @@
 #include "core/link/tcp_link.h"
 
-#include <poll.h>
-#include <sys/socket.h>
-
 #include <cerrno>
 #include <cstring>
 
+#include <boost/asio/connect.hpp>
+#include <boost/asio/redirect_error.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/use_awaitable.hpp>
 #include <boost/asio/write.hpp>
 
 namespace ydscope {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+namespace asio = boost::asio;
+using asio::ip::tcp;
 
 std::string address_text(const std::string& host, std::uint16_t port) {
   const bool ipv6 = host.find(':') != std::string::npos;
   return "tcp://" + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
-}
-
-// Non-blocking connect + poll, so a silent host costs at most the remaining time.
-int connect_with_deadline(boost::asio::ip::tcp::socket& socket, const boost::asio::ip::tcp::endpoint& endpoint,
-                          Clock::time_point deadline) {
-  boost::system::error_code ec;
-  socket.open(endpoint.protocol(), ec);
-  if (ec) return ec.value();
-  socket.native_non_blocking(true, ec);
-  if (ec) return ec.value();
-  const int fd = socket.native_handle();
-  if (::connect(fd, endpoint.data(), static_cast<socklen_t>(endpoint.size())) == 0) return 0;
-  if (errno != EINPROGRESS) return errno;
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-    if (left.count() <= 0) return ETIMEDOUT;
-    pollfd pfd{fd, POLLOUT, 0};
-    const int ready = ::poll(&pfd, 1, static_cast<int>(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready < 0) return errno;
-    if (ready == 0) return ETIMEDOUT;
-    int so_error = 0;
-    socklen_t len = sizeof so_error;
-    if (::getsockopt(fd, SOL_SOCKET, SO_ERROR, &so_error, &len) != 0) return errno;
-    return so_error;
-  }
 }
 
 std::string connect_error(const std::string& where, int error, std::chrono::milliseconds timeout) {
@@ -65,33 +41,60 @@ std::string connect_error(const std::string& where, int error, std::chrono::mill
 TcpLink::TcpLink(boost::asio::io_context& io, std::string host, std::uint16_t port)
     : socket_(io), host_(std::move(host)), port_(port) {}
 
-std::unique_ptr<TcpLink> TcpLink::connect(boost::asio::io_context& io, const std::string& host,
-                                          std::uint16_t port, std::string& error,
-                                          std::chrono::milliseconds timeout) {
-  const auto deadline = Clock::now() + timeout;
+// What the connect deadline cancels: the step in flight, if any. Shared with the timer's handler,
+// which may run after the connecting coroutine has finished (and cleared these).
+struct ConnectInFlight {
+  tcp::resolver* resolver = nullptr;
+  tcp::socket* socket = nullptr;
+  bool expired = false;
+};
+
+asio::awaitable<std::unique_ptr<TcpLink>> TcpLink::connect(asio::io_context& io, std::string host,
+                                                           std::uint16_t port, std::string& error,
+                                                           std::chrono::milliseconds timeout) {
   const std::string where = address_text(host, port);
-  boost::asio::ip::tcp::resolver resolver(io);
+  std::unique_ptr<TcpLink> link(new TcpLink(io, host, port));
+  tcp::resolver resolver(io);
+  auto in_flight = std::make_shared<ConnectInFlight>();
+  asio::steady_timer deadline(io, timeout);
+  deadline.async_wait([in_flight](const boost::system::error_code& ec) {
+    if (ec) return;
+    in_flight->expired = true;
+    boost::system::error_code ignored;
+    if (in_flight->resolver) in_flight->resolver->cancel();
+    if (in_flight->socket) in_flight->socket->close(ignored);
+  });
+  struct Clear {  // on every way out, so a late deadline touches nothing of ours
+    std::shared_ptr<ConnectInFlight> in_flight;
+    asio::steady_timer& deadline;
+    ~Clear() {
+      in_flight->resolver = nullptr;
+      in_flight->socket = nullptr;
+      deadline.cancel();
+    }
+  } clear{in_flight, deadline};
+
   boost::system::error_code ec;
-  const auto endpoints = resolver.resolve(host, std::to_string(port), ec);
+  in_flight->resolver = &resolver;
+  const auto endpoints = co_await resolver.async_resolve(host, std::to_string(port), asio::redirect_error(asio::use_awaitable, ec));
+  in_flight->resolver = nullptr;
+  if (in_flight->expired) {
+    error = connect_error(where, ETIMEDOUT, timeout);
+    co_return nullptr;
+  }
   if (ec || endpoints.empty()) {
     error = "cannot connect to " + where + ": unknown host '" + host + "'; check the name or use an IP address";
-    return nullptr;
+    co_return nullptr;
   }
-  std::unique_ptr<TcpLink> link(new TcpLink(io, host, port));
-  int last_error = ETIMEDOUT;
-  for (const auto& entry : endpoints) {
-    last_error = connect_with_deadline(link->socket_, entry.endpoint(), deadline);
-    if (last_error == 0) break;
-    link->socket_.close(ec);
-    if (last_error == ETIMEDOUT) break;
-  }
-  if (last_error != 0) {
-    error = connect_error(where, last_error, timeout);
-    return nullptr;
+  in_flight->socket = &link->socket_;
+  co_await asio::async_connect(link->socket_, endpoints, asio::redirect_error(asio::use_awaitable, ec));
+  if (in_flight->expired || ec) {
+    error = connect_error(where, in_flight->expired ? ETIMEDOUT : ec.value(), timeout);
+    co_return nullptr;
   }
   // Commands are two bytes and replies are awaited: do not let Nagle hold them back.
-  link->socket_.set_option(boost::asio::ip::tcp::no_delay(true), ec);
-  return link;
+  link->socket_.set_option(tcp::no_delay(true), ec);
+  co_return link;
 }
 
 void TcpLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {

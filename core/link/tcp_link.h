@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>  // before asio's awaitable.hpp, which uses std::exchange without including it
 
+#include <boost/asio/awaitable.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 
@@ -17,12 +19,12 @@ class TcpLink final : public ByteLink {
  public:
   static constexpr std::chrono::milliseconds kDefaultConnectTimeout{3000};
 
-  // Resolves and connects, waiting at most `timeout` in total. Blocking, but safe to call from
-  // any thread including the io_context's own (it does not need the io_context to run).
-  // On failure returns null and sets `error` to one sentence.
-  static std::unique_ptr<TcpLink> connect(boost::asio::io_context& io, const std::string& host,
-                                          std::uint16_t port, std::string& error,
-                                          std::chrono::milliseconds timeout = kDefaultConnectTimeout);
+  // Resolves and connects on `io`, at most `timeout` in total, without blocking its thread (a
+  // silent host must not stall the session's other work). On failure gives null and sets `error`
+  // (which must outlive the wait) to one sentence.
+  static boost::asio::awaitable<std::unique_ptr<TcpLink>> connect(
+      boost::asio::io_context& io, std::string host, std::uint16_t port, std::string& error,
+      std::chrono::milliseconds timeout = kDefaultConnectTimeout);
 
   void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override;
   void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/link_address.h"
+#include "link/await_support.h"
 
 namespace ydscope {
 namespace {
@@ -70,9 +71,9 @@ TEST(LinkAddress, ErrorsNameTheProblem) {
 TEST(LinkAddress, FactoryReportsParseAndOpenErrors) {
   boost::asio::io_context io;
   std::string error;
-  EXPECT_FALSE(open_byte_link(io, "tcp://host", 230400, error));
+  EXPECT_FALSE(test::run_awaitable(io, open_byte_link(io, "tcp://host", 230400, error)));
   EXPECT_NE(error.find("missing ':port'"), std::string::npos) << error;
-  EXPECT_FALSE(open_byte_link(io, "/dev/ttyDOESNOTEXIST9", 230400, error));
+  EXPECT_FALSE(test::run_awaitable(io, open_byte_link(io, "/dev/ttyDOESNOTEXIST9", 230400, error)));
   EXPECT_NE(error.find("no such device"), std::string::npos) << error;
 }
 

@@ -1,14 +1,18 @@
 // TcpLink against a listener on 127.0.0.1 (an ephemeral port), as a ser2net bridge would be.
 #include <array>
+#include <utility>  // before asio's awaitable.hpp, which uses std::exchange without including it
 #include <chrono>
 #include <thread>
 #include <vector>
 
+#include <boost/asio/co_spawn.hpp>
 #include <boost/asio/read.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
 #include <gtest/gtest.h>
 
 #include "core/link/tcp_link.h"
+#include "link/await_support.h"
 #include "link/link_read_support.h"
 
 namespace ydscope {
@@ -22,12 +26,12 @@ TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
   tcp::acceptor acceptor(io, tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
   const auto port = acceptor.local_endpoint().port();
 
-  // connect() is blocking and must not need the io_context to run: accept on another thread.
+  // The bridge accepts on its own thread while the link connects on `io`.
   boost::asio::io_context bridge_io;
   tcp::socket bridge(bridge_io);
   std::thread accept_thread([&] { acceptor.accept(bridge); });
   std::string error;
-  auto link = TcpLink::connect(io, "127.0.0.1", port, error);
+  auto link = test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", port, error));
   accept_thread.join();
   ASSERT_TRUE(link) << error;
   EXPECT_EQ(link->describe(), "tcp://127.0.0.1:" + std::to_string(port));
@@ -68,7 +72,7 @@ TEST(TcpLink, RefusedConnectionIsOneSentence) {
     port = probe.local_endpoint().port();
   }
   std::string error;
-  EXPECT_FALSE(TcpLink::connect(io, "127.0.0.1", port, error));
+  EXPECT_FALSE(test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", port, error)));
   EXPECT_EQ(error, "cannot connect to tcp://127.0.0.1:" + std::to_string(port) +
                        ": connection refused; is the bridge (e.g. ser2net) running on that port?");
 }
@@ -85,7 +89,7 @@ TEST(TcpLink, SilentListenerTimesOut) {
   std::vector<std::unique_ptr<TcpLink>> queued;
   std::string error;
   for (int i = 0; i < 16; ++i) {
-    auto link = TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(300));
+    auto link = test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(300)));
     if (!link) break;
     queued.push_back(std::move(link));
   }
@@ -94,10 +98,40 @@ TEST(TcpLink, SilentListenerTimesOut) {
                        ": no answer within 300 ms; check the host, the port and any firewall");
 }
 
+TEST(TcpLink, AConnectThatWaitsLeavesTheIoContextFreeForOtherWork) {
+  // The session's I/O thread runs its timers and requests while a bridge keeps it waiting.
+  boost::asio::io_context io;
+  tcp::acceptor acceptor(io);
+  acceptor.open(tcp::v4());
+  acceptor.bind(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+  acceptor.listen(0);
+  const auto port = acceptor.local_endpoint().port();
+  std::vector<std::unique_ptr<TcpLink>> queued;
+  std::string error;
+  for (int i = 0; i < 16; ++i) {  // fill the accept queue, as in SilentListenerTimesOut
+    auto link = test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(300)));
+    if (!link) break;
+    queued.push_back(std::move(link));
+  }
+  ASSERT_LT(queued.size(), 16u);
+
+  bool connect_done = false;
+  bool timer_fired_while_connecting = false;
+  boost::asio::co_spawn(io, TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(1000)),
+                        [&](std::exception_ptr, std::unique_ptr<TcpLink>) { connect_done = true; });
+  boost::asio::steady_timer other_work(io, std::chrono::milliseconds(20));
+  other_work.async_wait([&](const boost::system::error_code&) { timer_fired_while_connecting = !connect_done; });
+  io.restart();
+  io.run_for(kHangGuard);
+  EXPECT_TRUE(connect_done);
+  EXPECT_TRUE(timer_fired_while_connecting);
+  EXPECT_NE(error.find("no answer within 1000 ms"), std::string::npos) << error;
+}
+
 TEST(TcpLink, UnknownHostIsOneSentence) {
   boost::asio::io_context io;
   std::string error;
-  EXPECT_FALSE(TcpLink::connect(io, "no-such-host.invalid", 2000, error, std::chrono::milliseconds(2000)));
+  EXPECT_FALSE(test::run_awaitable(io, TcpLink::connect(io, "no-such-host.invalid", 2000, error, std::chrono::milliseconds(2000))));
   EXPECT_NE(error.find("unknown host 'no-such-host.invalid'"), std::string::npos) << error;
 }
 
@@ -105,7 +139,7 @@ TEST(TcpLink, BaudBelongsToTheBridge) {
   boost::asio::io_context io;
   tcp::acceptor acceptor(io, tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
   std::string error;
-  auto link = TcpLink::connect(io, "127.0.0.1", acceptor.local_endpoint().port(), error);
+  auto link = test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", acceptor.local_endpoint().port(), error));
   ASSERT_TRUE(link) << error;  // the kernel completes the handshake from the backlog
   EXPECT_FALSE(link->set_baud(512000, error));
   EXPECT_NE(error.find("ser2net"), std::string::npos) << error;
