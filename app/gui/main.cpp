@@ -1,5 +1,7 @@
 // ydscope: the desktop window. main owns GLFW, the GL context, ImGui and the loop; App does a frame.
+#include <array>
 #include <chrono>
+#include <cstdint>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +19,7 @@
 #include "app/gui/app_options.h"
 #include "app/gui/screenshot.h"
 #include "ui/render/theme.h"
+#include "ui/view/app_icon.h"
 
 namespace {
 
@@ -28,6 +31,18 @@ void on_glfw_error(int code, const char* description) {
   // Without a window manager (Xvfb) GLFW cannot iconify a full-screen window on focus loss; harmless.
   if (std::strstr(description, "Iconification") != nullptr) return;
   std::fprintf(stderr, "ydscope: GLFW error %d: %s\n", code, description);
+}
+
+// The taskbar and window switcher show the app's icon at the sizes they pick from.
+void set_window_icon(GLFWwindow* window) {
+  constexpr std::array kSizes{16, 32, 48, 64, 128};
+  std::array<std::vector<std::uint8_t>, kSizes.size()> pixels;
+  std::array<GLFWimage, kSizes.size()> images{};
+  for (std::size_t i = 0; i < kSizes.size(); ++i) {
+    pixels[i] = ydscope::ui::app_icon_rgba(kSizes[i]);
+    images[i] = {kSizes[i], kSizes[i], pixels[i].data()};
+  }
+  glfwSetWindowIcon(window, static_cast<int>(images.size()), images.data());  // copied by GLFW
 }
 
 int run(const ydscope::gui::AppOptions& options) {
@@ -49,6 +64,7 @@ int run(const ydscope::gui::AppOptions& options) {
     glfwTerminate();
     return 1;
   }
+  set_window_icon(window);
   glfwMakeContextCurrent(window);
   // Screenshot runs go as fast as laps arrive; interactive runs follow the display.
   glfwSwapInterval(screenshot_mode ? 0 : 1);
