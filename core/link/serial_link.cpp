@@ -121,14 +121,18 @@ void SerialLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handl
       handler(boost::asio::error::operation_aborted, 0);
       return;
     }
-    std::size_t got = 0;
-    const boost::system::error_code ec = read_available(buffer, got);
-    if (got > 0 || ec) {
-      handler(ec, got);
-      return;
-    }
-    wait_then_read(buffer, std::move(handler));
+    read_or_wait(buffer, std::move(handler));
   });
+}
+
+void SerialLink::read_or_wait(std::span<std::uint8_t> buffer, IoHandler handler) {
+  std::size_t got = 0;
+  const boost::system::error_code ec = read_available(buffer, got);
+  if (got > 0 || ec) {
+    handler(ec, got);
+    return;
+  }
+  wait_then_read(buffer, std::move(handler));  // nothing there (yet)
 }
 
 void SerialLink::wait_then_read(std::span<std::uint8_t> buffer, IoHandler handler) {
@@ -138,13 +142,7 @@ void SerialLink::wait_then_read(std::span<std::uint8_t> buffer, IoHandler handle
                        handler(ec, 0);
                        return;
                      }
-                     std::size_t got = 0;
-                     const boost::system::error_code read_ec = read_available(buffer, got);
-                     if (got == 0 && !read_ec) {
-                       wait_then_read(buffer, std::move(handler));  // woken with nothing to read
-                       return;
-                     }
-                     handler(read_ec, got);
+                     read_or_wait(buffer, std::move(handler));
                    });
 }
 
@@ -162,8 +160,6 @@ void SerialLink::watch_input() {
   unwatched_fd_ = -1;
   maybe_more_ = true;  // input has been piling up
 }
-
-int SerialLink::fd() { return unwatched_fd_ >= 0 ? unwatched_fd_ : port_.is_open() ? port_.native_handle() : -1; }
 
 void SerialLink::async_write(std::span<const std::uint8_t> bytes, IoHandler handler) {
   watch_input();
@@ -184,7 +180,7 @@ void SerialLink::close() {
 }
 
 bool SerialLink::set_baud(std::uint32_t baud, std::string& error) {
-  if (fd() < 0) {
+  if (native_handle() < 0) {
     error = path_ + " is closed";
     return false;
   }
@@ -192,7 +188,7 @@ bool SerialLink::set_baud(std::uint32_t baud, std::string& error) {
     error = "baud must be a positive number";
     return false;
   }
-  if (const int err = termios2::set_baud(fd(), baud)) {
+  if (const int err = termios2::set_baud(native_handle(), baud)) {
     error = "cannot set " + path_ + " to " + std::to_string(baud) + " baud: " + std::strerror(err);
     return false;
   }
@@ -202,6 +198,9 @@ bool SerialLink::set_baud(std::uint32_t baud, std::string& error) {
 
 std::string SerialLink::describe() const { return path_ + " at " + std::to_string(baud_) + " baud"; }
 
-int SerialLink::native_handle() { return fd(); }
+int SerialLink::native_handle() {
+  if (unwatched_fd_ >= 0) return unwatched_fd_;
+  return port_.is_open() ? port_.native_handle() : -1;
+}
 
 }  // namespace ydscope

@@ -44,10 +44,11 @@ class SerialLink final : public ByteLink {
   SerialLink(boost::asio::io_context& io, std::string path, std::uint32_t baud);
   // Reads what has arrived into `buffer` until the port is empty or the buffer full.
   boost::system::error_code read_available(std::span<std::uint8_t> buffer, std::size_t& got);
+  // Completes `handler` with what has arrived, or waits for input first if there is none.
+  void read_or_wait(std::span<std::uint8_t> buffer, IoHandler handler);
   void wait_then_read(std::span<std::uint8_t> buffer, IoHandler handler);
   // Puts the port back into the reactor after stop_watching_input().
   void watch_input();
-  int fd();
 
   boost::asio::posix::stream_descriptor port_;
   int unwatched_fd_ = -1;    // the port while it is out of the reactor, else -1

@@ -90,13 +90,13 @@ void SessionIo::on_read(std::uint64_t generation, const boost::system::error_cod
   const std::span<const std::uint8_t> bytes(buffer_.data(), n);
   if (on_wire_) on_wire_(false, bytes, now);
   route(bytes, now);
-  read_on();
+  read_on(now);
 }
 
-void SessionIo::read_on() {
+void SessionIo::read_on(std::int64_t now) {
   if (!link_) return;
   const auto hold = sink_ == Sink::Stream
-                        ? read_hold({link_clock_ns(), stream_outlook_, counters_.bytes_per_s(), link_->line_bytes_per_s()})
+                        ? read_hold({now, stream_outlook_, counters_.bytes_per_s(), link_->line_bytes_per_s()})
                         : std::chrono::nanoseconds(0);
   if (hold.count() == 0) {
     start_read();

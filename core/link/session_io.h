@@ -104,7 +104,7 @@ class SessionIo {
   void route(std::span<const std::uint8_t> bytes, std::int64_t now);
   void set_sink(Sink sink);
   // After stream bytes: read again at once, or hold off for what the forecast allows.
-  void read_on();
+  void read_on(std::int64_t now);
   void end_hold();
   void start_write();
   void raise_fault(std::string sentence);

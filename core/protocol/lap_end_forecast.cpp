@@ -40,7 +40,6 @@ void LapEndForecast::observe(const PacketView& packet) {
     if (stride > 0) {
       r.stride_degrees = stride;
       r.stride_bytes = r.last_size;
-      r.have_stride = true;
     }
   }
   if (zero) {
@@ -72,20 +71,21 @@ void LapEndForecast::observe_close(std::int64_t rx_ns) {
   r.last_close_ns = rx_ns;
 }
 
-std::size_t LapEndForecast::packets_clear_of_lap_end(double fsa_degrees) const {
+std::size_t LapEndForecast::bytes_after_packet_at(double fsa_degrees) const {
   const Rhythm& r = rhythm_;
-  if (!r.have_stride || !r.have_zero) return 0;
+  if (r.stride_degrees == 0 || !r.have_zero) return kSmallestZeroPacket;
   // From the zero packet itself the lap end is a whole turn away.
   const double to_lap_end = fsa_degrees == r.zero_fsa ? 360.0 : clockwise(fsa_degrees, r.zero_fsa);
   const double strides = std::floor(to_lap_end / r.stride_degrees - kStridesHeldBack);
-  return strides > 0 ? static_cast<std::size_t>(strides) : 0;
+  const std::size_t clear_packets = strides > 0 ? static_cast<std::size_t>(strides) : 0;
+  return clear_packets * r.stride_bytes + kSmallestZeroPacket;
 }
 
 LapEndOutlook LapEndForecast::outlook(std::span<const std::uint8_t> partial) const {
   const Rhythm& r = rhythm_;
   LapEndOutlook out;
   out.bytes = bytes_to_wait(partial);
-  out.packet_bytes = r.have_stride ? r.stride_bytes : 0;
+  out.packet_bytes = r.stride_bytes;
   if (r.period_ns > 0) {
     out.next_close_ns = r.last_close_ns + static_cast<std::int64_t>(r.period_ns);
     out.close_slack_ns = std::max(kLeastSlackNs, static_cast<std::int64_t>(kSlackJitters * r.jitter_ns));
@@ -97,7 +97,7 @@ std::size_t LapEndForecast::bytes_to_wait(std::span<const std::uint8_t> partial)
   const Rhythm& r = rhythm_;
   if (partial.empty()) {
     if (!r.have_last) return 1;
-    return packets_clear_of_lap_end(r.last_fsa) * r.stride_bytes + kSmallestZeroPacket;
+    return bytes_after_packet_at(r.last_fsa);
   }
   if (partial.size() < kPacketHeaderSize) {
     // Its length is not known yet: it may be the smallest zero packet.
@@ -107,7 +107,7 @@ std::size_t LapEndForecast::bytes_to_wait(std::span<const std::uint8_t> partial)
   const std::size_t left = size > partial.size() ? size - partial.size() : 1;
   if (is_lap_start(partial[2])) return left;  // the lap closes with this packet
   const double fsa = raw_angle_degrees(read_u16_le(partial.data() + 4));
-  return left + packets_clear_of_lap_end(fsa) * r.stride_bytes + kSmallestZeroPacket;
+  return left + bytes_after_packet_at(fsa);
 }
 
 }  // namespace ydscope

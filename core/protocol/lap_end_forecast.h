@@ -6,8 +6,9 @@
 //
 // The byte forecast errs early: it counts only packets that, at the current angular stride, end
 // well before the previous zero packet's angle comes round again, and then the smallest possible
-// zero packet (one sample; G1's LastCRC byte in front of it only adds to the real distance). Without a rhythm to go on (start-up, junk) it
-// falls back to "the packet in progress plus the smallest zero packet", or 1. The time forecast
+// zero packet (one sample; G1's LastCRC byte in front of it only adds to the real distance).
+// Without a rhythm to go on (start-up, junk) it falls back to "the packet in progress plus the
+// smallest zero packet", or 1. The time forecast
 // is the last close plus the lap period, with a slack that grows with the period's jitter. A
 // stream that breaks rhythm costs latency on a lap, never bytes.
 #include <cstddef>
@@ -37,8 +38,9 @@ class LapEndForecast {
   LapEndOutlook outlook(std::span<const std::uint8_t> partial) const;
 
  private:
-  // Whole packets after one starting at `fsa_degrees` that still end before the lap can close.
-  std::size_t packets_clear_of_lap_end(double fsa_degrees) const;
+  // Bytes that can follow a packet starting at `fsa_degrees` before a lap could close: the whole
+  // packets that still end clear of the lap end, then the smallest zero packet.
+  std::size_t bytes_after_packet_at(double fsa_degrees) const;
   std::size_t bytes_to_wait(std::span<const std::uint8_t> partial) const;
   void observe_close(std::int64_t rx_ns);
 
@@ -50,8 +52,7 @@ class LapEndForecast {
     std::size_t last_size = 0;      // bytes
     bool have_zero = false;         // a zero packet has been observed: its angle is where laps close
     double zero_fsa = 0;
-    bool have_stride = false;       // an ordinary packet followed by another gave the stride
-    double stride_degrees = 0;      // angle one ordinary packet advances
+    double stride_degrees = 0;      // angle one ordinary packet advances, 0 until one was followed
     std::size_t stride_bytes = 0;   // that packet's size
     std::int64_t last_close_ns = 0; // receive time of the last zero packet
     double period_ns = 0;           // smoothed time between zero packets, 0 until two were seen
