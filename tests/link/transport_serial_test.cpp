@@ -60,13 +60,20 @@ class PseudoTerminal {
 
 constexpr auto kHangGuard = std::chrono::seconds(5);
 
+// Opens the pty's slave the way the session opens a port; a failure fails the test with its sentence.
+std::unique_ptr<SerialLink> open_slave(boost::asio::io_context& io, const PseudoTerminal& pty, std::uint32_t baud) {
+  std::string error;
+  auto link = SerialLink::open(io, pty.slave_path(), baud, error);
+  EXPECT_TRUE(link) << error;
+  return link;
+}
+
 TEST(SerialLink, OpensPtyRawAt512000BaudThroughTermios2) {
   PseudoTerminal pty;
   ASSERT_FALSE(pty.slave_path().empty());
   boost::asio::io_context io;
-  std::string error;
-  auto link = SerialLink::open(io, pty.slave_path(), 512000, error);
-  ASSERT_TRUE(link) << error;
+  auto link = open_slave(io, pty, 512000);
+  ASSERT_TRUE(link);
 
   termios2::LineSettings settings;
   ASSERT_EQ(termios2::read_settings(link->native_handle(), settings), 0);
@@ -92,8 +99,8 @@ TEST(SerialLink, SetBaudChangesTheRateAndKeepsRawMode) {
   PseudoTerminal pty;
   boost::asio::io_context io;
   std::string error;
-  auto link = SerialLink::open(io, pty.slave_path(), 230400, error);
-  ASSERT_TRUE(link) << error;
+  auto link = open_slave(io, pty, 230400);
+  ASSERT_TRUE(link);
   ASSERT_TRUE(link->set_baud(512000, error)) << error;
   termios2::LineSettings settings;
   ASSERT_EQ(termios2::read_settings(link->native_handle(), settings), 0);
@@ -106,9 +113,8 @@ TEST(SerialLink, SetBaudChangesTheRateAndKeepsRawMode) {
 TEST(SerialLink, CarriesEveryByteValueBothWays) {
   PseudoTerminal pty;
   boost::asio::io_context io;
-  std::string error;
-  auto link = SerialLink::open(io, pty.slave_path(), 230400, error);
-  ASSERT_TRUE(link) << error;
+  auto link = open_slave(io, pty, 230400);
+  ASSERT_TRUE(link);
 
   // All 256 values: raw mode must not translate CR/LF, eat ^C/^S or echo anything.
   std::vector<std::uint8_t> device_bytes(256);
@@ -139,9 +145,8 @@ TEST(SerialLink, CarriesEveryByteValueBothWays) {
 TEST(SerialLink, CloseAbortsAPendingRead) {
   PseudoTerminal pty;
   boost::asio::io_context io;
-  std::string error;
-  auto link = SerialLink::open(io, pty.slave_path(), 230400, error);
-  ASSERT_TRUE(link) << error;
+  auto link = open_slave(io, pty, 230400);
+  ASSERT_TRUE(link);
   std::array<std::uint8_t, 16> buffer{};
   boost::system::error_code seen;
   bool called = false;
@@ -159,9 +164,8 @@ TEST(SerialLink, CloseAbortsAPendingRead) {
 TEST(SerialLink, InputThatArrivesWhileUnwatchedIsAllReadAfterwards) {
   PseudoTerminal pty;
   boost::asio::io_context io;
-  std::string error;
-  auto link = SerialLink::open(io, pty.slave_path(), 512000, error);
-  ASSERT_TRUE(link) << error;
+  auto link = open_slave(io, pty, 512000);
+  ASSERT_TRUE(link);
   link->stop_watching_input();
   std::vector<std::uint8_t> device_bytes(3000);
   for (std::size_t i = 0; i < device_bytes.size(); ++i) device_bytes[i] = static_cast<std::uint8_t>(i * 7);
@@ -178,9 +182,8 @@ TEST(SerialLink, InputThatArrivesWhileUnwatchedIsAllReadAfterwards) {
 TEST(SerialLink, CommandsGoOutWhileInputIsUnwatched) {
   PseudoTerminal pty;
   boost::asio::io_context io;
-  std::string error;
-  auto link = SerialLink::open(io, pty.slave_path(), 512000, error);
-  ASSERT_TRUE(link) << error;
+  auto link = open_slave(io, pty, 512000);
+  ASSERT_TRUE(link);
   link->stop_watching_input();
   const std::array<std::uint8_t, 2> stop{0xA5, 0x65};
   bool written = false;
@@ -194,8 +197,8 @@ TEST(SerialLink, ASecondOpenOfTheSamePortIsToldItIsBusy) {
   PseudoTerminal pty;
   boost::asio::io_context io;
   std::string error;
-  auto first = SerialLink::open(io, pty.slave_path(), 512000, error);
-  ASSERT_TRUE(first) << error;
+  auto first = open_slave(io, pty, 512000);
+  ASSERT_TRUE(first);
   EXPECT_FALSE(SerialLink::open(io, pty.slave_path(), 512000, error));
   EXPECT_NE(error.find("busy"), std::string::npos) << error;
   first->close();

@@ -77,23 +77,39 @@ TEST(TcpLink, RefusedConnectionIsOneSentence) {
                        ": connection refused; is the bridge (e.g. ser2net) running on that port?");
 }
 
-TEST(TcpLink, SilentListenerTimesOut) {
-  // A listener that never accepts: once its accept queue is full the kernel drops further SYNs,
-  // so a connect never completes and must give up at the timeout.
-  boost::asio::io_context io;
-  tcp::acceptor acceptor(io);
-  acceptor.open(tcp::v4());
-  acceptor.bind(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
-  acceptor.listen(0);
-  const auto port = acceptor.local_endpoint().port();
-  std::vector<std::unique_ptr<TcpLink>> queued;
-  std::string error;
-  for (int i = 0; i < 16; ++i) {
-    auto link = test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(300)));
-    if (!link) break;
-    queued.push_back(std::move(link));
+// A listener that never accepts: once its accept queue is full the kernel drops further SYNs,
+// so a connect never completes and must give up at its timeout.
+class SilentListener {
+ public:
+  explicit SilentListener(boost::asio::io_context& io) : io_(io), acceptor_(io) {
+    acceptor_.open(tcp::v4());
+    acceptor_.bind(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+    acceptor_.listen(0);
   }
-  EXPECT_LT(queued.size(), 16u) << "the listener never stopped answering";
+  std::uint16_t port() const { return acceptor_.local_endpoint().port(); }
+  // Connects (300 ms timeout each) until one is not answered; false if all 16 were. `error` holds
+  // the unanswered connect's sentence.
+  bool fill_accept_queue(std::string& error) {
+    for (int i = 0; i < 16; ++i) {
+      auto link = test::run_awaitable(io_, TcpLink::connect(io_, "127.0.0.1", port(), error, std::chrono::milliseconds(300)));
+      if (!link) return true;
+      queued_.push_back(std::move(link));
+    }
+    return false;
+  }
+
+ private:
+  boost::asio::io_context& io_;
+  tcp::acceptor acceptor_;
+  std::vector<std::unique_ptr<TcpLink>> queued_;
+};
+
+TEST(TcpLink, SilentListenerTimesOut) {
+  boost::asio::io_context io;
+  SilentListener listener(io);
+  const auto port = listener.port();
+  std::string error;
+  EXPECT_TRUE(listener.fill_accept_queue(error)) << "the listener never stopped answering";
   EXPECT_EQ(error, "cannot connect to tcp://127.0.0.1:" + std::to_string(port) +
                        ": no answer within 300 ms; check the host, the port and any firewall");
 }
@@ -101,19 +117,10 @@ TEST(TcpLink, SilentListenerTimesOut) {
 TEST(TcpLink, AConnectThatWaitsLeavesTheIoContextFreeForOtherWork) {
   // The session's I/O thread runs its timers and requests while a bridge keeps it waiting.
   boost::asio::io_context io;
-  tcp::acceptor acceptor(io);
-  acceptor.open(tcp::v4());
-  acceptor.bind(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
-  acceptor.listen(0);
-  const auto port = acceptor.local_endpoint().port();
-  std::vector<std::unique_ptr<TcpLink>> queued;
+  SilentListener listener(io);
+  const auto port = listener.port();
   std::string error;
-  for (int i = 0; i < 16; ++i) {  // fill the accept queue, as in SilentListenerTimesOut
-    auto link = test::run_awaitable(io, TcpLink::connect(io, "127.0.0.1", port, error, std::chrono::milliseconds(300)));
-    if (!link) break;
-    queued.push_back(std::move(link));
-  }
-  ASSERT_LT(queued.size(), 16u);
+  ASSERT_TRUE(listener.fill_accept_queue(error));
 
   bool connect_done = false;
   bool timer_fired_while_connecting = false;
