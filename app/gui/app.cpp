@@ -39,7 +39,9 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   if (persist_ && !dir.empty()) {
     settings_path_ = (dir / "settings.ini").string();
     imgui_ini_path_ = (dir / "imgui.ini").string();
-    settings_ = ui::load_settings(settings_path_);
+    std::vector<std::string> notes;
+    settings_ = ui::load_settings(settings_path_, &notes);
+    for (const auto& note : notes) std::fprintf(stderr, "ydscope: %s: %s\n", settings_path_.c_str(), note.c_str());
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     ImGui::GetIO().IniFilename = imgui_ini_path_.c_str();

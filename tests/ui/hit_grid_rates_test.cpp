@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include "ui/view/grid_layout.h"
@@ -195,9 +196,34 @@ TEST(Settings, RoundTripAndToleranceOfBadLines) {
   s.show_panels = false;
   s.last_replay_file = "/tmp/demo.ydrec";
   EXPECT_EQ(parse_settings(format_settings(s)), s);
-  const ViewSettings odd = parse_settings("nonsense\npersistence_laps = 999\npoint_size_px = abc\nfuture_key = 1\n");
-  EXPECT_EQ(odd.persistence_laps, 60);
+  std::vector<std::string> notes;
+  const ViewSettings odd =
+      parse_settings("nonsense\npersistence_laps = 999\npoint_size_px = abc\nfuture_key = 1\n", &notes);
+  EXPECT_EQ(odd.persistence_laps, ViewSettings{}.persistence_laps);
   EXPECT_FLOAT_EQ(odd.point_size_px, ViewSettings{}.point_size_px);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[0], "persistence_laps = 999 is not a whole number from 1 to 60; using the default, 10");
+  EXPECT_EQ(notes[1], "point_size_px = abc is not a number from 1 to 20; using the default, 3");
+}
+
+// Issue 17: 3e38 laps was a float-to-int conversion out of range (undefined behaviour).
+TEST(Settings, EveryNumericValueOutOfRangeFallsBackToItsDefaultWithANote) {
+  std::vector<std::string> notes;
+  const ViewSettings s = parse_settings(
+      "persistence_laps = 3e38\npersistence_laps = -5\npersistence_laps = 2.5\npoint_size_px = 1e30\n"
+      "point_size_px = 0.5\nnear_mm = -1\nnear_mm = inf\nfar_mm = 1e39\nfar_mm = nan\nfar_mm = 0\n",
+      &notes);
+  EXPECT_EQ(s, ViewSettings{});
+  EXPECT_EQ(notes.size(), 10u);
+  for (const auto& note : notes) EXPECT_NE(note.find("using the default"), std::string::npos) << note;
+  // In range is taken as written, without a note.
+  notes.clear();
+  const ViewSettings edge =
+      parse_settings("persistence_laps = 60\npoint_size_px = 1\nnear_mm = 0\nfar_mm = 100000\n", &notes);
+  EXPECT_TRUE(notes.empty());
+  EXPECT_EQ(edge.persistence_laps, 60);
+  EXPECT_FLOAT_EQ(edge.point_size_px, 1.0f);
+  EXPECT_FLOAT_EQ(edge.colours.far_mm, 100000.0f);
 }
 
 }  // namespace

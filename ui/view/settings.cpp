@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 namespace ydscope::ui {
 namespace {
@@ -16,11 +17,34 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-std::optional<float> to_float(const std::string& v) {
+std::optional<double> to_number(const std::string& v) {
   char* end = nullptr;
-  const float f = std::strtof(v.c_str(), &end);
-  if (end == v.c_str() || *end != '\0' || !std::isfinite(f)) return std::nullopt;
-  return f;
+  const double d = std::strtod(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !std::isfinite(d)) return std::nullopt;
+  return d;
+}
+
+std::string shortest(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// A numeric setting outside [min, max] (or not a number, or not whole where a count is meant)
+// keeps its default and leaves a note: casting an absurd value such as 3e38 to int is undefined.
+template <typename T>
+void take_number(const std::string& key, const std::string& value, double min, double max, T& field,
+                 std::vector<std::string>* notes) {
+  const auto number = to_number(value);
+  const bool whole = !std::is_integral_v<T> || (number && std::floor(*number) == *number);
+  if (number && whole && *number >= min && *number <= max) {
+    field = static_cast<T>(*number);
+    return;
+  }
+  if (!notes) return;
+  const char* kind = std::is_integral_v<T> ? "a whole number" : "a number";
+  notes->push_back(key + " = " + value + " is not " + kind + " from " + shortest(min) + " to " + shortest(max) +
+                   "; using the default, " + shortest(static_cast<double>(field)));
 }
 
 std::optional<bool> to_bool(const std::string& v) {
@@ -37,7 +61,7 @@ std::filesystem::path config_directory() {
   return {};
 }
 
-ViewSettings parse_settings(const std::string& text) {
+ViewSettings parse_settings(const std::string& text, std::vector<std::string>* notes) {
   ViewSettings s;
   std::istringstream in(text);
   std::string line;
@@ -46,7 +70,6 @@ ViewSettings parse_settings(const std::string& text) {
     if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
     const std::string key = trim(line.substr(0, eq));
     const std::string value = trim(line.substr(eq + 1));
-    const auto f = to_float(value);
     const auto b = to_bool(value);
     if (key == "colour_mode") {
       if (value == "range") s.colours.mode = ColourMode::Range;
@@ -55,18 +78,18 @@ ViewSettings parse_settings(const std::string& text) {
     } else if (key == "palette") {
       if (value == "turbo") s.colours.palette = Palette::Turbo;
       else if (value == "viridis") s.colours.palette = Palette::Viridis;
-    } else if (key == "near_mm" && f) {
-      s.colours.near_mm = std::max(*f, 0.0f);
-    } else if (key == "far_mm" && f) {
-      s.colours.far_mm = std::max(*f, 1.0f);
+    } else if (key == "near_mm") {
+      take_number(key, value, 0.0, kMaxColourRangeMm, s.colours.near_mm, notes);
+    } else if (key == "far_mm") {
+      take_number(key, value, 1.0, kMaxColourRangeMm, s.colours.far_mm, notes);
     } else if (key == "fade_old_laps" && b) {
       s.colours.fade_old_laps = *b;
     } else if (key == "auto_range" && b) {
       s.auto_range = *b;
-    } else if (key == "point_size_px" && f) {
-      s.point_size_px = std::clamp(*f, 1.0f, 20.0f);
-    } else if (key == "persistence_laps" && f) {
-      s.persistence_laps = std::clamp(static_cast<int>(*f), 1, 60);
+    } else if (key == "point_size_px") {
+      take_number(key, value, kMinPointSizePx, kMaxPointSizePx, s.point_size_px, notes);
+    } else if (key == "persistence_laps") {
+      take_number(key, value, 1, kMaxPersistenceLaps, s.persistence_laps, notes);
     } else if (key == "drop_specular" && b) {
       s.interference.drop_specular = *b;
     } else if (key == "drop_ambient" && b) {
@@ -106,12 +129,12 @@ std::string format_settings(const ViewSettings& s) {
   return out.str();
 }
 
-ViewSettings load_settings(const std::filesystem::path& file) {
+ViewSettings load_settings(const std::filesystem::path& file, std::vector<std::string>* notes) {
   std::ifstream in(file);
   if (!in) return {};
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parse_settings(buffer.str());
+  return parse_settings(buffer.str(), notes);
 }
 
 bool save_settings(const std::filesystem::path& file, const ViewSettings& settings) {

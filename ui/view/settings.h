@@ -4,11 +4,18 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ui/view/colour_map.h"
 #include "ui/view/point_cloud.h"
 
 namespace ydscope::ui {
+
+// The ranges a hand-edited settings.ini is held to (the panels' sliders stay inside them).
+inline constexpr double kMaxColourRangeMm = 100'000.0;  // beyond any supported lidar's reach
+inline constexpr double kMinPointSizePx = 1.0;
+inline constexpr double kMaxPointSizePx = 20.0;
+inline constexpr double kMaxPersistenceLaps = 60.0;
 
 struct ViewSettings {
   ColourParams colours;
@@ -27,10 +34,12 @@ struct ViewSettings {
 std::filesystem::path config_directory();
 
 // Unknown keys and bad values are ignored, so an older or hand-edited file never stops the app.
-ViewSettings parse_settings(const std::string& text);
+// A numeric value that is not a number or out of its range keeps the default, and one sentence
+// per such line goes to `notes` (when given) for the app to show.
+ViewSettings parse_settings(const std::string& text, std::vector<std::string>* notes = nullptr);
 std::string format_settings(const ViewSettings& settings);
 
-ViewSettings load_settings(const std::filesystem::path& file);
+ViewSettings load_settings(const std::filesystem::path& file, std::vector<std::string>* notes = nullptr);
 // False when the file cannot be written (the app then just does not remember).
 bool save_settings(const std::filesystem::path& file, const ViewSettings& settings);
 
