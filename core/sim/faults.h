@@ -24,7 +24,14 @@ struct FaultConfig {
   std::uint8_t health_bits = 0;
   // Random bytes (never A5, never AA) sent in front of every reply header.
   std::uint32_t junk_before_reply = 0;
+  // A motor that does not hold its set rate: it runs scan_hz_offset Hz off it, and wanders about
+  // that by up to scan_hz_wobble Hz (a sine of period kScanWobblePeriodNs). The ranging clock is
+  // unaffected, so a lap holds ranging Hz / actual rate samples; G1's CT reports the actual rate.
+  double scan_hz_offset = 0.0;
+  double scan_hz_wobble = 0.0;
 };
+
+inline constexpr std::int64_t kScanWobblePeriodNs = 2'000'000'000;
 
 struct FaultCounters {
   std::uint64_t corrupted_bytes = 0;    // sample bytes with a flipped bit

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/protocol/angle_correction.h"
 #include "core/protocol/g1_ct.h"
 #include "core/protocol/scan_packet.h"
+#include "core/sim/faults.h"
 #include "core/sim/scene.h"
 
 namespace ydscope {
@@ -34,15 +36,24 @@ ScanStream::ScanStream(const ModelProfile& profile, double distance_scale, const
 
 void ScanStream::start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz) {
   scan_hz_ = scan_centihz / 100.0;
-  const double ranging_hz = ranging_khz * 1000.0;
-  samples_per_lap_ = std::max<std::uint32_t>(2, static_cast<std::uint32_t>(std::lround(ranging_hz / scan_hz_)));
-  lap_period_ns_ = 1e9 / scan_hz_;
+  ranging_hz_ = ranging_khz * 1000.0;
+  scan_start_ns_ = t_ns;
   lap_start_ns_ = t_ns;
+  begin_lap_at_motor_rate();
   lap_ = 0;
   next_sample_ = 0;
   packet_index_ = 0;
   crc_ = 0;
   first_zero_ = true;
+}
+
+void ScanStream::begin_lap_at_motor_rate() {
+  constexpr double kSlowestMotorHz = 0.5;  // a wild offset still turns, so laps still end
+  const double phase = 2.0 * std::numbers::pi * static_cast<double>(lap_start_ns_ - scan_start_ns_) /
+                       static_cast<double>(kScanWobblePeriodNs);
+  motor_hz_ = std::max(kSlowestMotorHz, scan_hz_ + motor_offset_hz_ + motor_wobble_hz_ * std::sin(phase));
+  samples_per_lap_ = std::max<std::uint32_t>(2, static_cast<std::uint32_t>(std::lround(ranging_hz_ / motor_hz_)));
+  lap_period_ns_ = 1e9 / motor_hz_;
 }
 
 std::int64_t ScanStream::sample_time_ns(std::uint32_t sample) const {
@@ -58,7 +69,7 @@ std::int64_t ScanStream::next_ready_ns() const {
 std::uint8_t ScanStream::packet_ct(std::uint32_t index) const {
   if (!profile_->ct_carries_info) return index == 0 ? kCtLapStart : 0;
   switch (index) {
-    case kG1CtScanHzIndex: return g1_zero_packet_ct(scan_hz_);
+    case kG1CtScanHzIndex: return g1_zero_packet_ct(motor_hz_);
     case kG1CtVersionIndex: return g1_version_ct(version_major_, version_minor_);
     case kG1CtHealthIndex: return g1_health_ct(health_);
     default:  // production debugging information: any value with the lap-start bit clear
@@ -170,6 +181,7 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
     next_sample_ = 0;
     packet_index_ = 0;
     lap_start_ns_ = sample_time_ns(samples_per_lap_);
+    begin_lap_at_motor_rate();
   }
   return packet;
 }

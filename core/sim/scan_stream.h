@@ -39,6 +39,12 @@ class ScanStream {
 
   void start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz);
   void set_health(std::uint8_t bits) { health_ = bits; }
+  // The motor's error against the set rate (FaultConfig::scan_hz_offset / scan_hz_wobble); takes
+  // effect from the next lap.
+  void set_motor_error(double offset_hz, double wobble_hz) {
+    motor_offset_hz_ = offset_hz;
+    motor_wobble_hz_ = wobble_hz;
+  }
   std::int64_t next_ready_ns() const;
   // Appends the next packet's bytes to `bytes`. When truth is not null, fills it (cleared first)
   // with what the host decodes, and scene_angles with the directions the scene was sampled at.
@@ -49,6 +55,8 @@ class ScanStream {
  private:
   std::int64_t sample_time_ns(std::uint32_t sample) const;
   std::uint8_t packet_ct(std::uint32_t index) const;
+  // The motor's rate for the lap starting at lap_start_ns_: sets its period and sample count.
+  void begin_lap_at_motor_rate();
 
   const ModelProfile* profile_;
   double distance_scale_;
@@ -60,7 +68,12 @@ class ScanStream {
   std::uint8_t debug_salt_;
   std::uint8_t health_ = 0;
 
-  double scan_hz_ = 10.0;
+  double scan_hz_ = 10.0;            // set rate
+  double motor_hz_ = 10.0;           // actual rate of the current lap
+  double motor_offset_hz_ = 0.0;
+  double motor_wobble_hz_ = 0.0;
+  double ranging_hz_ = 9000.0;
+  std::int64_t scan_start_ns_ = 0;
   std::uint32_t samples_per_lap_ = 1;
   std::int64_t lap_start_ns_ = 0;
   double lap_period_ns_ = 1e8;

@@ -234,6 +234,7 @@ void VirtualLidar::start_scan(std::int64_t now_ns) {
   last_keepalive_ns_ = now_ns;
   answer(Command::Scan, {}, now_ns);
   stream_->set_health(faults_.health_bits);
+  stream_->set_motor_error(faults_.scan_hz_offset, faults_.scan_hz_wobble);
   stream_->start(now_ns, scan_centihz_, ranging_khz());
   next_periodic_stall_ns_ =
       faults_.stall_ms > 0 && faults_.stall_every_ms > 0 ? now_ns + faults_.stall_every_ms * 1'000'000 : kNever;
@@ -351,6 +352,7 @@ void VirtualLidar::power_cycle(std::int64_t now_ns) {
 void VirtualLidar::set_faults(const FaultConfig& faults) {
   faults_ = faults;
   stream_->set_health(faults_.health_bits);
+  stream_->set_motor_error(faults_.scan_hz_offset, faults_.scan_hz_wobble);
   next_periodic_stall_ns_ = mode_ == DeviceMode::Scanning && faults_.stall_ms > 0 && faults_.stall_every_ms > 0
                                 ? now_ns_ + faults_.stall_every_ms * 1'000'000
                                 : kNever;

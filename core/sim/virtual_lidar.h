@@ -15,9 +15,10 @@
 // - Commands the model's manual does not list get no reply at all (counted as unsupported).
 // - Restart (G1 A5 40, G6/TG A5 80): no reply; back to the power-on state (idle, defaults).
 // - Stream: laps of N = round(ranging Hz / scan Hz) samples evenly spaced over 360 degrees; the
-//   zero packet (LSN 1) holds sample 0, then packets of up to 40 samples. Each sample's range is
-//   taken from the scene at the direction the host's second-level correction will give it (within
-//   0.01 degree); at an edge where no direction is consistent the sample reports no return.
+//   zero packet (LSN 1) holds sample 0, then packets of up to 40 samples. With the motor faults
+//   (FaultConfig::scan_hz_offset, scan_hz_wobble) each lap runs at the motor's actual rate, and N
+//   follows it. Each sample's range is taken from the scene at the direction the host's
+//   second-level correction will give it (within 0.01 degree); at an edge where no direction is consistent the sample reports no return.
 //   G1: CT by packet index (0 scan Hz, 1 version, 3 health, else a debug value) and the LastCRC
 //   byte (CRC8 of the previous lap's CT bytes, 0 before the first zero packet) in front of every
 //   zero packet; samples carry the scene's interference flags.

@@ -1,0 +1,127 @@
+// Lap timing on the virtual lidar's simulated clock: the rate it was set to, no jitter, the
+// ranging frequency as the sample rate, and lost samples counted exactly from the packets the
+// faults kept off the line.
+#include <gtest/gtest.h>
+
+#include "analysis/virtual_laps.h"
+#include "core/analysis/lap_timing.h"
+
+namespace ydscope {
+namespace {
+
+using namespace test;
+
+LapTimingStatistics timing_of(const std::vector<Lap>& laps) {
+  LapTimingAccumulator timing;
+  for (const Lap& lap : laps) timing.add(lap);
+  return timing.statistics();
+}
+
+// Samples that never arrived (lost, stalled or broken packets) in the device laps the host's
+// complete laps cover: from the first zero packet that arrived to the one closing the last lap.
+std::uint64_t truly_missing(const VirtualRun& run) {
+  std::vector<std::uint64_t> arrived_zero_laps;
+  for (const TruthPacket& p : run.truth)
+    if (p.index == 0 && !p.lost && !p.corrupted) arrived_zero_laps.push_back(p.lap);
+  if (arrived_zero_laps.size() <= run.laps.size()) return 0;
+  const std::uint64_t first = arrived_zero_laps.front(), end = arrived_zero_laps[run.laps.size()];
+  std::uint64_t missing = 0;
+  for (const TruthPacket& p : run.truth)
+    if (p.lap >= first && p.lap < end && (p.lost || p.corrupted)) missing += p.points.size();
+  return missing;
+}
+
+class CleanStream : public ::testing::TestWithParam<Model> {};
+
+TEST_P(CleanStream, RateIsTheSetOneAndSamplesAreTheRangingFrequency) {
+  const ModelProfile& profile = profile_for(GetParam());
+  const VirtualRun run = scan_virtual_lidar(GetParam(), 3.0);
+  const LapTimingStatistics t = timing_of(run.laps);
+  EXPECT_EQ(t.laps, run.laps.size());
+  EXPECT_EQ(t.interruptions, 0u);
+  EXPECT_EQ(t.normal_laps, t.laps - 1) << "the first lap has no lap before it to time it from";
+  EXPECT_NEAR(t.mean_hz, profile.default_scan_hz, 0.001 * profile.default_scan_hz);
+  EXPECT_LT(t.jitter_pct, 0.1);  // the line is paced exactly; only byte timing is left
+  EXPECT_NEAR(t.sample_rate_hz, profile.default_ranging_khz * 1000.0, 0.002 * profile.default_ranging_khz * 1000.0);
+  EXPECT_EQ(t.lost_samples, 0u);
+  EXPECT_EQ(t.series.size(), t.normal_laps);
+  std::uint64_t points = 0;
+  for (const Lap& lap : run.laps) points += lap.points.size();
+  EXPECT_EQ(t.points, points);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, CleanStream, ::testing::Values(Model::G1, Model::G6, Model::TG15),
+                         [](const auto& model) { return std::string(profile_for(model.param).name); });
+
+TEST(LapTiming, LostPacketsAreCountedSampleForSample) {
+  FaultConfig faults;
+  faults.lost_packet_rate = 0.02;
+  const VirtualRun run = scan_virtual_lidar(Model::G6, 3.0, faults);
+  ASSERT_GT(run.faults.lost_packets, 5u);
+  const LapTimingStatistics t = timing_of(run.laps);
+  EXPECT_EQ(t.lost_samples, truly_missing(run));
+  EXPECT_EQ(t.interruptions, 0u) << "zero packets are never lost by this fault";
+  EXPECT_NEAR(t.sample_rate_hz, 9000.0, 0.002 * 9000.0) << "lost samples still belong to the device's rate";
+}
+
+TEST(LapTiming, PacketsDroppedForABadChecksumAreLostSamplesToo) {
+  FaultConfig faults;
+  faults.corrupt_byte_rate = 0.0005;
+  const VirtualRun run = scan_virtual_lidar(Model::TG30, 3.0, faults);
+  ASSERT_GT(run.decoder.checksum_errors, 5u);
+  const LapTimingStatistics t = timing_of(run.laps);
+  // A broken zero packet merges two laps: that lap is an interruption, estimated, not exact.
+  if (t.interruptions == 0) {
+    EXPECT_EQ(t.lost_samples, truly_missing(run));
+  } else {
+    EXPECT_NEAR(static_cast<double>(t.lost_samples), static_cast<double>(truly_missing(run)), 2.0 * static_cast<double>(t.interruptions));
+  }
+}
+
+TEST(LapTiming, AStallIsAnInterruptionNotJitter) {
+  FaultConfig faults;
+  faults.stall_ms = 400;
+  faults.stall_every_ms = 1500;
+  const VirtualRun run = scan_virtual_lidar(Model::G6, 4.0, faults);
+  ASSERT_GE(run.faults.stalls, 2u);
+  const LapTimingStatistics t = timing_of(run.laps);
+  EXPECT_GE(t.interruptions, 2u);
+  EXPECT_LT(t.jitter_pct, 0.1);
+  EXPECT_NEAR(t.mean_hz, 8.0, 0.01);
+  // Each 400 ms stall loses about 3.2 laps of 1125 samples; the estimate works in whole periods.
+  const double missing = static_cast<double>(truly_missing(run));
+  EXPECT_NEAR(static_cast<double>(t.lost_samples), missing, 0.15 * missing);
+}
+
+TEST(LapTiming, AMotorOffItsSetRateShowsInTheMeanNotInTheJitter) {
+  FaultConfig faults;
+  faults.scan_hz_offset = 0.5;
+  const LapTimingStatistics t = timing_of(scan_virtual_lidar(Model::G6, 3.0, faults).laps);
+  EXPECT_NEAR(t.mean_hz, 8.5, 0.01);
+  EXPECT_LT(t.jitter_pct, 0.1);
+  EXPECT_NEAR(t.sample_rate_hz, 9000.0, 0.005 * 9000.0) << "the ranging clock does not care about the motor";
+  EXPECT_EQ(t.lost_samples, 0u);
+}
+
+TEST(LapTiming, AWanderingMotorShowsInTheJitterNotInTheMean) {
+  FaultConfig faults;
+  faults.scan_hz_wobble = 0.3;  // +-3.75 % of 8 Hz, a sine of 2 s
+  const LapTimingStatistics t = timing_of(scan_virtual_lidar(Model::G6, 4.0, faults).laps);
+  // Robust std-dev of a sine of amplitude a is 1.4826 * a * sin(45 deg) = 1.05 a, here 3.9 %; the
+  // periods are read on the 1 ms steps of the simulated host, which widens that a little.
+  EXPECT_GT(t.jitter_pct, 3.5);
+  EXPECT_LT(t.jitter_pct, 5.5);
+  EXPECT_NEAR(t.mean_hz, 8.0, 0.05);
+  EXPECT_NEAR(t.min_hz, 7.7, 0.05);
+  EXPECT_NEAR(t.max_hz, 8.3, 0.05);
+  EXPECT_EQ(t.lost_samples, 0u);
+}
+
+TEST(LapTiming, NoLapsGiveZeros) {
+  const LapTimingStatistics t = LapTimingAccumulator{}.statistics();
+  EXPECT_EQ(t.laps, 0u);
+  EXPECT_EQ(t.mean_hz, 0.0);
+}
+
+}  // namespace
+}  // namespace ydscope
