@@ -28,16 +28,19 @@ with their original timing, and decodes them into laps exactly as `ydscope-cli d
 
   FILE                 a .ydrec recording
   --speed X            1 (default) as recorded, 2 twice as fast, 0.5 half speed, 0 as fast as
-                       possible
+                       possible; otherwise from 0.001 to 1000000
   --format FORMAT      jsonl (default): one JSON object per lap, then the summary line;
                        summary: only the summary line (schema: `ydscope-cli decode --help`)
   --model MODEL        decode as this model instead of the one the recording names
   --distance-scale X   mm per raw distance unit, instead of the one used while recording
 
 Ctrl-C stops early; the summary of what was played is still printed. A recording cut off by a
-killed recorder plays up to its last complete record, with a warning on stderr.
+killed recorder plays up to its last complete record, with a warning on stderr. A record time
+that goes back, or jumps more than 60 s ahead, is damage: that record plays at once (the later
+ones keep their spacing), with a warning.
 
-exit status: 0 played to the end (or stopped by Ctrl-C); 1 the file cannot be read; 2 usage error.
+exit status: 0 played to the end (or stopped by Ctrl-C); 1 the file cannot be read; 2 usage error
+(including a recording of a version or header this ydscope cannot read).
 
 examples:
   ydscope-cli replay bench.ydrec --speed 0 --format summary
@@ -53,16 +56,21 @@ int run_replay(std::span<const std::string> raw) {
     return kExitOk;
   }
   const std::string path = args.single_positional("FILE (a .ydrec recording)");
-  const double speed = args.number("speed", 0, 1e6).value_or(1.0);
+  const double speed = args.number("speed", 0, kMaxReplaySpeed).value_or(1.0);
+  if (speed > 0 && speed < kMinReplaySpeed)  // slower would wait for days between two records
+    throw UsageError("--speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '" +
+                     *args.value("speed") + "'");
   const std::string format = args.value("format").value_or("jsonl");
   if (format != "jsonl" && format != "summary")
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
 
   boost::asio::io_context io;
   std::string error;
-  auto link = ReplayLink::open(io, path, {.speed = speed}, error);
-  if (!link) throw std::runtime_error(error);
-  if (!link->warning().empty()) std::fprintf(stderr, "ydscope-cli replay: warning: %s\n", link->warning().c_str());
+  auto failure = RecordingOpenFailure::Unreadable;
+  auto link = ReplayLink::open(io, path, {.speed = speed}, error, &failure);
+  if (!link) throw_open_failure(error, failure);
+  for (const std::string& warning : link->warnings())
+    std::fprintf(stderr, "ydscope-cli replay: warning: %s\n", warning.c_str());
   const ModelProfile& profile = recording_profile(args.value("model"), link->metadata(), path);
   std::optional<double> scale = args.number("distance-scale", 1e-6, 1e6);
   if (!scale && !args.value("model")) scale = link->metadata().distance_scale;

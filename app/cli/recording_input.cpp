@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "app/cli/arguments.h"
-#include "core/record/recording_reader.h"
 
 namespace ydscope::cli {
 
@@ -25,11 +24,17 @@ const ModelProfile& recording_profile(const std::optional<std::string>& model_op
   return *profile;
 }
 
+void throw_open_failure(const std::string& error, RecordingOpenFailure failure) {
+  if (failure == RecordingOpenFailure::Unsupported) throw UsageError(error);
+  throw std::runtime_error(error);
+}
+
 std::optional<RecordingMetadata> recording_metadata_of(const std::string& path) {
   if (path == "-" || !is_recording_file(path)) return std::nullopt;
   std::string error;
-  const auto summary = summarize_recording(path, error);
-  if (!summary) throw std::runtime_error(error);
+  auto failure = RecordingOpenFailure::Unreadable;
+  const auto summary = summarize_recording(path, error, &failure);
+  if (!summary) throw_open_failure(error, failure);
   return summary->metadata;
 }
 
@@ -37,13 +42,15 @@ std::optional<RecordingMetadata> read_recording_device_bytes(
     const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
   if (path == "-" || !is_recording_file(path)) return std::nullopt;
   std::string error;
-  auto reader = RecordingReader::open(path, error);
-  if (!reader) throw std::runtime_error(error);
+  auto failure = RecordingOpenFailure::Unreadable;
+  auto reader = RecordingReader::open(path, error, &failure);
+  if (!reader) throw_open_failure(error, failure);
   RecordView record;
   while (reader->next(record))
     if (record.type == RecordType::DeviceToHost) on_chunk(record.payload);
   if (reader->corrupt() || reader->truncated())
     std::fprintf(stderr, "ydscope-cli: warning: %s\n", (reader->corrupt() ? reader->error() : reader->warning()).c_str());
+  if (reader->time_corrections() > 0) std::fprintf(stderr, "ydscope-cli: warning: %s\n", reader->time_warning().c_str());
   return reader->metadata();
 }
 

@@ -9,6 +9,7 @@
 #include "core/protocol/function_ref.h"
 #include "core/protocol/model_profile.h"
 #include "core/record/recording_metadata.h"
+#include "core/record/recording_reader.h"
 
 namespace ydscope::cli {
 
@@ -16,6 +17,10 @@ namespace ydscope::cli {
 // model (UsageError naming the file when it has none or an unknown one).
 const ModelProfile& recording_profile(const std::optional<std::string>& model_option,
                                       const RecordingMetadata& metadata, const std::string& path);
+
+// Throws the sentence of a recording that did not open: UsageError (exit 2) for a recording of a
+// version or header this ydscope cannot read, std::runtime_error (exit 1) otherwise.
+[[noreturn]] void throw_open_failure(const std::string& error, RecordingOpenFailure failure);
 
 // The metadata of the recording at `path`, every metadata record merged (one pass over the
 // file); empty when `path` is not a recording (or "-"). Throws std::runtime_error if unreadable.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <utility>
@@ -13,6 +14,25 @@
 #include "core/record/recording_reader.h"
 
 namespace ydscope {
+namespace {
+
+// The longest single timer wait; the timer re-checks the playback point when it fires, so a cap
+// changes nothing but keeps the arithmetic far from int64's limits.
+constexpr double kMaxWaitNs = 3600e9;
+
+// ns as int64, saturated: a playback point far in the future must not wrap to the past.
+std::int64_t saturated_ns(double ns) {
+  constexpr double kLimit = 4e18;  // below INT64_MAX (9.2e18), exactly representable
+  return static_cast<std::int64_t>(std::clamp(ns, -kLimit, kLimit));
+}
+
+}  // namespace
+
+double bounded_replay_speed(double speed) {
+  if (std::isnan(speed)) return 1.0;
+  if (speed <= 0.0) return 0.0;
+  return std::clamp(speed, kMinReplaySpeed, kMaxReplaySpeed);
+}
 
 // The playback state. Lives on the io_context's thread; controls reach it through posted
 // handlers that hold a shared_ptr, so a control racing the link's destruction stays safe.
@@ -22,7 +42,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 
   Core(boost::asio::io_context& io, std::unique_ptr<RecordingReader> reader, const ReplayOptions& options,
        std::int64_t duration_ns)
-      : io_(io), timer_(io), reader_(std::move(reader)), speed_(std::max(0.0, options.speed)),
+      : io_(io), timer_(io), reader_(std::move(reader)), speed_(bounded_replay_speed(options.speed)),
         paused_(options.paused), loop_(options.loop), anchor_wall_(Clock::now()) {
     status_duration_.store(duration_ns);
     publish();
@@ -49,7 +69,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 
   void set_speed(double speed) {
     rebase();
-    speed_ = std::max(0.0, speed);
+    speed_ = bounded_replay_speed(speed);
     reschedule();
   }
   void set_paused(bool paused) {
@@ -89,7 +109,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   std::int64_t position_now() const {
     if (paused_ || speed_ == 0.0) return anchor_position_;
     const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - anchor_wall_).count();
-    return anchor_position_ + static_cast<std::int64_t>(static_cast<double>(elapsed) * speed_);
+    return saturated_ns(static_cast<double>(anchor_position_) + static_cast<double>(elapsed) * speed_);
   }
   // Freezes the playback point so the next speed or pause state continues from it.
   void rebase() {
@@ -137,12 +157,14 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
       return;
     }
     if (paused_) return;  // set_paused(false) pumps again
-    const std::int64_t ahead_ns = chunk_t_ - position_now();
-    if (speed_ == 0.0 || ahead_ns <= 0) {
+    // In double and saturated: whatever the times and the speed, the wait is a positive number
+    // of nanoseconds (an overflow here once made the timer fire again and again, forever).
+    const double ahead_ns = static_cast<double>(chunk_t_) - static_cast<double>(position_now());
+    if (speed_ == 0.0 || ahead_ns <= 0.0) {
       deliver();
       return;
     }
-    const auto wait = std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(ahead_ns) / speed_));
+    const auto wait = std::chrono::nanoseconds(saturated_ns(std::clamp(ahead_ns / speed_, 1.0, kMaxWaitNs)));
     timer_.expires_after(wait);
     const std::uint64_t generation = ++wait_generation_;
     timer_.async_wait([self = shared_from_this(), generation](const boost::system::error_code& ec) {
@@ -204,8 +226,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   std::atomic<std::uint64_t> status_bytes_{0};
 };
 
-ReplayLink::ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::string warning)
-    : core_(std::move(core)), path_(std::move(path)), metadata_(std::move(metadata)), warning_(std::move(warning)) {}
+ReplayLink::ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata,
+                       std::vector<std::string> warnings)
+    : core_(std::move(core)), path_(std::move(path)), metadata_(std::move(metadata)), warnings_(std::move(warnings)) {}
 
 ReplayLink::~ReplayLink() {
   // The last owner may be another thread (a UI holding the link for its controls): the playback
@@ -218,8 +241,9 @@ ReplayLink::~ReplayLink() {
 }
 
 std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const std::string& path,
-                                             ReplayOptions options, std::string& error) {
-  const auto summary = summarize_recording(path, error);
+                                             ReplayOptions options, std::string& error,
+                                             RecordingOpenFailure* failure) {
+  const auto summary = summarize_recording(path, error, failure);
   if (!summary) return nullptr;
   if (summary->device_bytes == 0) {
     error = path + " holds no bytes from a device; nothing to replay";
@@ -228,8 +252,10 @@ std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const 
   auto reader = RecordingReader::open(path, error);
   if (!reader) return nullptr;
   auto core = std::make_shared<Core>(io, std::move(reader), options, summary->duration_ns);
-  const std::string& warning = summary->error.empty() ? summary->warning : summary->error;
-  return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, warning));
+  std::vector<std::string> warnings;
+  for (const std::string* warning : {&summary->error, &summary->warning, &summary->time_warning})
+    if (!warning->empty()) warnings.push_back(*warning);
+  return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, std::move(warnings)));
 }
 
 void ReplayLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {

@@ -13,13 +13,22 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <boost/asio/io_context.hpp>
 
 #include "core/link/byte_link.h"
 #include "core/record/recording_metadata.h"
+#include "core/record/recording_reader.h"
 
 namespace ydscope {
+
+// Speeds besides 0 (as fast as possible) are held to this range: a thousandth of the recorded
+// pace is already 17 minutes for each second recorded.
+inline constexpr double kMinReplaySpeed = 0.001;
+inline constexpr double kMaxReplaySpeed = 1e6;
+// speed as ReplayLink uses it: negative 0, NaN 1, others clamped into [kMinReplaySpeed, kMaxReplaySpeed].
+double bounded_replay_speed(double speed);
 
 struct ReplayOptions {
   double speed = 1.0;  // 1 original timing, >1 faster, <1 slower, 0 as fast as possible
@@ -41,9 +50,11 @@ struct ReplayStatus {
 class ReplayLink final : public ByteLink {
  public:
   // Opens the recording and reads its metadata (a pass over the file). Null plus one sentence
-  // in `error` when it is missing, not a recording, or has no device->host bytes at all.
+  // in `error` when it is missing, not a recording (or one this ydscope cannot read: `failure`
+  // says which, RecordingReader::open), or has no device->host bytes at all.
   static std::unique_ptr<ReplayLink> open(boost::asio::io_context& io, const std::string& path,
-                                          ReplayOptions options, std::string& error);
+                                          ReplayOptions options, std::string& error,
+                                          RecordingOpenFailure* failure = nullptr);
   ~ReplayLink() override;
 
   // Completes with the next recorded bytes when their time comes; boost::asio::error::eof after
@@ -57,7 +68,7 @@ class ReplayLink final : public ByteLink {
   std::string describe() const override;
 
   // Controls, any thread.
-  void set_speed(double speed);  // negative values are treated as 0
+  void set_speed(double speed);  // through bounded_replay_speed()
   void set_paused(bool paused);
   void set_loop(bool loop);
   void restart();  // back to the start of the recording, keeping speed/pause/loop
@@ -66,18 +77,19 @@ class ReplayLink final : public ByteLink {
   // The recording's metadata, every metadata record merged (model, baud, device info...).
   const RecordingMetadata& metadata() const { return metadata_; }
   const RecordingMetadata* recording_metadata() const override { return &metadata_; }
-  // A truncated or corrupt tail found while opening, as a sentence (empty when the file is whole).
-  const std::string& warning() const { return warning_; }
+  // What opening found wrong but playable, one sentence each: a truncated or corrupt tail,
+  // damaged record times. Empty when the file is sound.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   class Core;
 
  private:
-  ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::string warning);
+  ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::vector<std::string> warnings);
 
   std::shared_ptr<Core> core_;
   std::string path_;
   RecordingMetadata metadata_;
-  std::string warning_;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace ydscope

@@ -38,7 +38,6 @@ std::optional<FileHeader> parse_file_header(std::span<const std::uint8_t, kFileH
   FileHeader header;
   header.version = read_u16_le(bytes.data() + 12);
   header.header_size = read_u16_le(bytes.data() + 14);
-  if (header.header_size < kFileHeaderSize) return std::nullopt;
   return header;
 }
 

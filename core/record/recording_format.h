@@ -17,7 +17,10 @@
 //     2   2  u16 reserved, 0
 //     4   4  u32 payload length in bytes, at most 1 MiB (kMaxRecordPayload)
 //     8   8  i64 time in nanoseconds since the recording started, from a monotonic clock
-//            (steady clock: never jumps with wall-clock changes); non-decreasing in a file
+//            (steady clock: never jumps with wall-clock changes); non-decreasing in a file.
+//            Readers check: a time before the previous record's, or more than kMaxRecordGapNs
+//            after it, is damage; it is read as the previous time (later records keep their
+//            spacing from it) and reported as a warning, so a bad time never stalls a replay.
 //    16   n  payload
 //
 //   Type 1 / 2 payload: the bytes exactly as read from / written to the link, one record per
@@ -58,8 +61,15 @@ inline constexpr std::array<std::uint8_t, 12> kRecordingMagic = {'Y', 'D', 'S', 
                                                                  'E', '-', 'R', 'E', 'C', 0};
 inline constexpr std::uint16_t kRecordingVersion = 1;
 inline constexpr std::size_t kFileHeaderSize = 16;
+// Room a later version-1 writer may take for more header fields; a larger size is damage.
+inline constexpr std::size_t kMaxFileHeaderSize = 4096;
 inline constexpr std::size_t kRecordHeaderSize = 16;
 inline constexpr std::uint32_t kMaxRecordPayload = 1u << 20;
+// The longest silence between two records a reader takes as real. While its link is up a
+// recording session writes something every few seconds at most (a stall is declared after 2 s
+// and the reconnect sends commands); a longer gap (a cable left unplugged for minutes, or a
+// damaged time such as 1e18) is played on without the pause.
+inline constexpr std::int64_t kMaxRecordGapNs = 60'000'000'000;
 // Suggested file name extension.
 inline constexpr const char* kRecordingExtension = ".ydrec";
 
@@ -82,8 +92,8 @@ struct RecordHeader {
 bool is_recording(std::span<const std::uint8_t> first_bytes);
 
 std::array<std::uint8_t, kFileHeaderSize> encode_file_header();
-// The version and header size of a file header; empty when the magic does not match or the
-// header size is below 16.
+// The version and header size of a file header as written; empty when the magic does not match.
+// Readers check both (see kMaxFileHeaderSize).
 struct FileHeader {
   std::uint16_t version = 0;
   std::uint16_t header_size = 0;

@@ -1,9 +1,13 @@
 #include "core/record/recording_reader.h"
 
+#include <sys/stat.h>
 #include <sys/types.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string_view>
 
@@ -16,6 +20,41 @@ bool known_type(std::uint8_t type) {
          type == static_cast<std::uint8_t>(RecordType::Metadata);
 }
 
+// "2.500 s", "1e+09 s": readable whatever the size of the damage.
+std::string seconds_text(double ns) {
+  char text[48];
+  const double seconds = ns / 1e9;
+  std::snprintf(text, sizeof text, seconds < 1e6 ? "%.3f s" : "%.3g s", seconds);
+  return text;
+}
+
+// One sentence for a file header this reader cannot use (empty when it can), and its kind.
+// `got` bytes of `head` were read from a file of `file_size` bytes.
+std::string header_problem(const std::string& path, const std::array<std::uint8_t, kFileHeaderSize>& head,
+                           std::size_t got, std::uint64_t file_size, RecordingOpenFailure& kind) {
+  kind = RecordingOpenFailure::NotARecording;
+  if (got == 0) return path + " is empty, not a ydscope recording";
+  const std::size_t magic_bytes = std::min(got, kRecordingMagic.size());
+  if (!std::equal(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(magic_bytes), kRecordingMagic.begin()))
+    return path + " is not a ydscope recording (no YDSCOPE-REC header)";
+  if (got < kFileHeaderSize)
+    return path + " ends after " + std::to_string(got) + " bytes, inside its " + std::to_string(kFileHeaderSize) +
+           "-byte file header: the recording was cut off before anything was recorded";
+  const auto header = parse_file_header(head);
+  kind = RecordingOpenFailure::Unsupported;
+  const std::string reads = "this ydscope reads version " + std::to_string(kRecordingVersion);
+  if (header->version == 0)
+    return path + " says it is a version 0 recording, which does not exist (" + reads + "): the file is damaged";
+  if (header->version > kRecordingVersion)
+    return path + " is a version " + std::to_string(header->version) + " recording; " + reads + ", update ydscope";
+  const bool past_end = header->header_size > file_size;
+  if (header->header_size < kFileHeaderSize || header->header_size > kMaxFileHeaderSize || past_end)
+    return path + " has an impossible file-header size of " + std::to_string(header->header_size) + " bytes" +
+           (past_end ? " in a " + std::to_string(file_size) + "-byte file" : "") + " (version " +
+           std::to_string(kRecordingVersion) + " writes " + std::to_string(kFileHeaderSize) + "): the file is damaged";
+  return {};
+}
+
 }  // namespace
 
 RecordingReader::RecordingReader(std::FILE* file, std::string path) : file_(file), path_(std::move(path)) {}
@@ -24,25 +63,29 @@ RecordingReader::~RecordingReader() {
   if (file_) std::fclose(file_);
 }
 
-std::unique_ptr<RecordingReader> RecordingReader::open(const std::string& path, std::string& error) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) {
-    error = "cannot open recording " + path + ": " + std::strerror(errno);
+std::unique_ptr<RecordingReader> RecordingReader::open(const std::string& path, std::string& error,
+                                                       RecordingOpenFailure* failure) {
+  RecordingOpenFailure kind = RecordingOpenFailure::Unreadable;
+  const auto fail = [&](std::string sentence) {
+    error = std::move(sentence);
+    if (failure) *failure = kind;
     return nullptr;
-  }
+  };
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    return fail(path + " is a folder; pass a recording file (.ydrec) instead");
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return fail("cannot open recording " + path + ": " + std::strerror(errno));
   std::unique_ptr<RecordingReader> reader(new RecordingReader(file, path));
   std::array<std::uint8_t, kFileHeaderSize> head{};
   const std::size_t got = std::fread(head.data(), 1, head.size(), file);
-  const auto header = got == head.size() ? parse_file_header(head) : std::nullopt;
-  if (!header) {
-    error = path + " is not a ydscope recording (no YDSCOPE-REC header)";
-    return nullptr;
-  }
-  if (header->version > kRecordingVersion) {
-    error = path + " is a version " + std::to_string(header->version) +
-            " recording; this ydscope reads version " + std::to_string(kRecordingVersion) + ", update ydscope";
-    return nullptr;
-  }
+  if (std::ferror(file)) return fail("cannot read recording " + path + ": " + std::strerror(errno));
+  // Only a regular file has a size to hold the header size against.
+  const bool sized = ::fstat(::fileno(file), &info) == 0 && S_ISREG(info.st_mode);
+  const auto file_size = sized ? static_cast<std::uint64_t>(info.st_size) : UINT64_MAX;
+  if (std::string problem = header_problem(path, head, got, file_size, kind); !problem.empty())
+    return fail(std::move(problem));
+  const auto header = parse_file_header(head);
   reader->version_ = header->version;
   reader->first_record_offset_ = header->header_size;
   reader->rewind();
@@ -60,6 +103,41 @@ void RecordingReader::rewind() {
   records_read_ = 0;
   warning_.clear();
   error_.clear();
+  last_t_ns_ = time_anchor_file_ns_ = time_anchor_ns_ = 0;
+  time_corrections_ = 0;
+  first_time_problem_.clear();
+}
+
+std::int64_t RecordingReader::checked_time(std::int64_t file_t_ns, std::uint64_t record_offset) {
+  // Overflow-checked: a damaged time may be anything, INT64_MIN included.
+  std::int64_t since_anchor = 0;
+  std::int64_t t_ns = 0;
+  const bool representable = !__builtin_sub_overflow(file_t_ns, time_anchor_file_ns_, &since_anchor) &&
+                             !__builtin_add_overflow(time_anchor_ns_, since_anchor, &t_ns);
+  if (representable && t_ns >= last_t_ns_ && t_ns - last_t_ns_ <= kMaxRecordGapNs) {
+    last_t_ns_ = t_ns;
+    return t_ns;
+  }
+  if (time_corrections_++ == 0) {
+    // In double: the step itself may not fit in 64 bits.
+    const double step = static_cast<double>(file_t_ns) - static_cast<double>(time_anchor_file_ns_) -
+                        static_cast<double>(last_t_ns_ - time_anchor_ns_);
+    first_time_problem_ = "the record at byte " + std::to_string(record_offset) +
+                          (step < 0 ? " goes back " + seconds_text(-step) + " in time"
+                                    : " jumps " + seconds_text(step) + " ahead (more than " +
+                                          std::to_string(kMaxRecordGapNs / 1'000'000'000) + " s)");
+  }
+  // Re-anchor: this record plays right after the previous one, the next ones keep their spacing.
+  time_anchor_file_ns_ = file_t_ns;
+  time_anchor_ns_ = last_t_ns_;
+  return last_t_ns_;
+}
+
+std::string RecordingReader::time_warning() const {
+  if (time_corrections_ == 0) return {};
+  const std::string count = time_corrections_ == 1 ? "" : " (" + std::to_string(time_corrections_) + " such records)";
+  return path_ + " has damaged record times: " + first_time_problem_ + count +
+         "; each plays right after the record before it, and the ones after keep their spacing";
 }
 
 bool RecordingReader::next(RecordView& out) {
@@ -90,7 +168,7 @@ bool RecordingReader::next(RecordView& out) {
     if (!known_type(header.type)) continue;  // a later version's record: skip it
     ++records_read_;
     out.type = static_cast<RecordType>(header.type);
-    out.t_ns = header.t_ns;
+    out.t_ns = checked_time(header.t_ns, record_offset);
     out.payload = payload_;
     out.file_offset = record_offset;
     if (out.type == RecordType::Metadata) {
@@ -110,8 +188,9 @@ bool is_recording_file(const std::string& path) {
   return ok;
 }
 
-std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error) {
-  auto reader = RecordingReader::open(path, error);
+std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error,
+                                                    RecordingOpenFailure* failure) {
+  auto reader = RecordingReader::open(path, error, failure);
   if (!reader) return std::nullopt;
   RecordingSummary summary;
   RecordView record;
@@ -124,6 +203,7 @@ std::optional<RecordingSummary> summarize_recording(const std::string& path, std
   summary.metadata = reader->metadata();
   summary.warning = reader->warning();
   summary.error = reader->error();
+  summary.time_warning = reader->time_warning();
   return summary;
 }
 

@@ -18,16 +18,26 @@ namespace ydscope {
 
 struct RecordView {
   RecordType type = RecordType::DeviceToHost;
-  std::int64_t t_ns = 0;                  // since the recording started
+  std::int64_t t_ns = 0;                  // since the recording started; checked (see time_warning())
   std::span<const std::uint8_t> payload;  // valid until the next call to next() or rewind()
   std::uint64_t file_offset = 0;          // of the record header, for messages
 };
 
+// Why a recording did not open. The CLI exits 2 (usage) for Unsupported: the file is a
+// recording, but of a version or header this ydscope cannot read, and retrying will not help.
+enum class RecordingOpenFailure : std::uint8_t {
+  Unreadable,     // missing, no permission, a folder, a read error
+  NotARecording,  // no magic, or cut off inside the file header
+  Unsupported,    // unknown version, impossible header size
+};
+
 class RecordingReader {
  public:
-  // Checks the magic and version. Null plus one sentence in `error` for a missing file, a file
-  // that is not a recording, or a newer format version.
-  static std::unique_ptr<RecordingReader> open(const std::string& path, std::string& error);
+  // Checks the magic, version and header size. Null plus one sentence in `error` (and the kind
+  // in `failure`, when given) saying what is really wrong: a missing file, a folder, a file that
+  // is not a recording, one cut off inside its header, an unknown version, a damaged header.
+  static std::unique_ptr<RecordingReader> open(const std::string& path, std::string& error,
+                                               RecordingOpenFailure* failure = nullptr);
   ~RecordingReader();
   RecordingReader(const RecordingReader&) = delete;
   RecordingReader& operator=(const RecordingReader&) = delete;
@@ -47,6 +57,11 @@ class RecordingReader {
   // "... ends inside a record at byte N (the recorder was probably killed); the K records before it are intact"
   const std::string& warning() const { return warning_; }
   bool corrupt() const { return !error_.empty(); }
+  // Record times that went backwards or jumped more than kMaxRecordGapNs ahead, found so far:
+  // one sentence naming the first and how many there were; empty when every time was sound.
+  // Such records are returned at the previous record's time, later ones keep their spacing.
+  std::string time_warning() const;
+  std::uint64_t time_corrections() const { return time_corrections_; }
   const std::string& error() const { return error_; }
   std::uint16_t version() const { return version_; }
   const std::string& path() const { return path_; }
@@ -54,6 +69,8 @@ class RecordingReader {
 
  private:
   RecordingReader(std::FILE* file, std::string path);
+  // The file's time of a record, mapped onto a timeline that never goes back nor jumps.
+  std::int64_t checked_time(std::int64_t file_t_ns, std::uint64_t record_offset);
 
   std::FILE* file_;
   std::string path_;
@@ -66,6 +83,12 @@ class RecordingReader {
   std::vector<std::string> metadata_warnings_;
   std::string warning_;
   std::string error_;
+  // checked_time(): file time `time_anchor_file_ns_` reads as `time_anchor_ns_`; the others follow it.
+  std::int64_t last_t_ns_ = 0;
+  std::int64_t time_anchor_file_ns_ = 0;
+  std::int64_t time_anchor_ns_ = 0;
+  std::uint64_t time_corrections_ = 0;
+  std::string first_time_problem_;
 };
 
 // True when the file at `path` starts with the recording magic (false if it cannot be read).
@@ -80,7 +103,9 @@ struct RecordingSummary {
   std::int64_t duration_ns = 0;  // time of the last record
   std::string warning;           // truncated tail
   std::string error;             // corrupt record
+  std::string time_warning;      // damaged record times (RecordingReader::time_warning())
 };
-std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error);
+std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error,
+                                                    RecordingOpenFailure* failure = nullptr);
 
 }  // namespace ydscope

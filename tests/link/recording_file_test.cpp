@@ -7,8 +7,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -16,6 +14,7 @@
 
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
+#include "link/raw_recording.h"
 
 namespace ydscope {
 namespace {
@@ -39,14 +38,8 @@ class RecordingFileTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-  static Bytes file_bytes(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    return Bytes(std::istreambuf_iterator<char>(in), {});
-  }
-  static void write_bytes(const std::string& file, const Bytes& bytes) {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  }
+  static Bytes file_bytes(const std::string& file) { return test::read_file_bytes(file); }
+  static void write_bytes(const std::string& file, const Bytes& bytes) { test::write_file_bytes(file, bytes); }
   // Every record of a file, as the reader returns them.
   static std::vector<Expected> read_all(RecordingReader& reader) {
     std::vector<Expected> out;

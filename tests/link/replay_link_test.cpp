@@ -74,7 +74,7 @@ TEST_F(ReplayLinkTest, FastestSpeedReturnsExactlyTheDeviceBytesThenEof) {
   EXPECT_FALSE(link->accepts_commands());
   EXPECT_EQ(link->metadata().model, "G1");
   EXPECT_EQ(link->metadata().baud, 230400u);
-  EXPECT_TRUE(link->warning().empty());
+  EXPECT_TRUE(link->warnings().empty());
   EXPECT_EQ(link->describe(), "replay of " + fs::path(path_).filename().string());
 
   const auto [bytes, end] = read_until(io, *link, SIZE_MAX, 5);
