@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -64,7 +65,7 @@ jsonl schema, one object per line:
                      CT bit 0 set; laps: complete laps
 
 exit status: 0 the input was read to the end; 1 reading failed; 2 usage error (unknown model,
-missing file, bad option).
+missing file, bad option, a recording of a version or header this ydscope cannot read).
 
 examples:
   ydscope-cli decode --model G6 scan.bin
@@ -74,18 +75,26 @@ examples:
 
 constexpr std::size_t kReadChunk = 1 << 20;
 
-// Calls on_chunk for every chunk of the input, in order. Usage error when the file does not exist.
-void read_input(const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
-  std::FILE* file = stdin;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> owned(nullptr, &std::fclose);
-  if (path != "-") {
-    file = std::fopen(path.c_str(), "rb");
-    if (!file) {
-      if (errno == ENOENT) throw UsageError("input file '" + path + "' was not found");
-      throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
-    }
-    owned.reset(file);
+using InputFile = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+// The input, opened before anything else is checked so a missing file or a folder is what the
+// user hears about (not a missing --model): UsageError when it does not exist, std::runtime_error
+// when it cannot be read (a folder included). "-" is standard input (not closed).
+InputFile open_input(const std::string& path) {
+  if (path == "-") return InputFile(stdin, [](std::FILE*) { return 0; });
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error("'" + path + "' is a folder; pass a file or - for standard input");
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) {
+    if (errno == ENOENT) throw UsageError("input file '" + path + "' was not found");
+    throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
   }
+  return InputFile(file, &std::fclose);
+}
+
+// Calls on_chunk for every chunk of the input, in order.
+void read_input(std::FILE* file, const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
   std::vector<std::uint8_t> buffer(kReadChunk);
   for (;;) {
     const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file);
@@ -119,6 +128,7 @@ int run_decode(std::span<const std::string> raw) {
     return kExitOk;
   }
   const std::string path = args.single_positional("FILE (or - for standard input)");
+  const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
   const auto recording = recording_metadata_of(path);
   const std::string model = recording ? "" : args.required("model");
@@ -144,7 +154,7 @@ int run_decode(std::span<const std::string> raw) {
   };
   const auto feed = [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, on_lap); };
   if (recording) read_recording_device_bytes(path, feed);
-  else read_input(path, feed);
+  else read_input(input.get(), path, feed);
   decoder.finish(on_lap);
   write_summary(out, decoder.counters());
   out.flush();

@@ -1,0 +1,139 @@
+// ydscope-cli given damaged recordings and odd options (issue 17), as a user would run it: one
+// sentence that says what is really wrong and the documented exit status, or a warning and the
+// laps; never a hang, never invalid JSON.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/record/recording_reader.h"
+#include "link/cli_run_support.h"
+#include "link/raw_recording.h"
+
+namespace ydscope {
+namespace {
+
+namespace fs = std::filesystem;
+using Bytes = std::vector<std::uint8_t>;
+using test::RawRecording;
+using test::run_cli_apart;
+
+const std::string kDemo = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+
+class BadInputCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("ydscope-badcli-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // The demo recording with the time field of every record from the `first`-th on rewritten.
+  std::string demo_with_times(const std::string& name, std::size_t first,
+                              std::int64_t (*rewrite)(std::int64_t t_ns, std::size_t index)) const {
+    Bytes bytes = test::read_file_bytes(kDemo);
+    std::string error;
+    auto reader = RecordingReader::open(kDemo, error);
+    EXPECT_TRUE(reader) << error;
+    RecordView record;
+    for (std::size_t index = 0; reader && reader->next(record); ++index) {
+      if (index < first) continue;
+      const std::int64_t t_ns = rewrite(record.t_ns, index - first);
+      std::memcpy(bytes.data() + record.file_offset + 8, &t_ns, sizeof t_ns);  // little-endian host
+    }
+    const std::string file = path(name);
+    test::write_file_bytes(file, bytes);
+    return file;
+  }
+  static std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+  fs::path dir_;
+};
+
+TEST_F(BadInputCli, ReplaySpeedOutsideItsRangeIsAUsageError) {
+  for (const std::string speed : {"1e-300", "1e-10", "0.0009", "-1", "nan", "1e7"}) {
+    const auto run = run_cli_apart("replay '" + kDemo + "' --speed " + speed);
+    EXPECT_EQ(run.status, 2) << speed;
+    EXPECT_EQ(lines(run.err), 1u) << run.err;
+    EXPECT_NE(run.err.find("--speed must be"), std::string::npos) << run.err;
+    EXPECT_EQ(run.out, "") << speed;
+  }
+  EXPECT_EQ(run_cli_apart("replay '" + kDemo + "' --speed 1e-300").err,
+            "ydscope-cli replay: --speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '1e-300'\n");
+}
+
+// A record at INT64_MIN (once undefined behaviour and a hang), and the rest of the recording
+// shifted 1e18 ns ahead (once a 31-year wait): both play to the end, with the laps a sound file
+// gives and a warning.
+TEST_F(BadInputCli, DamagedTimesPlayToTheEndWithAWarning) {
+  const auto sound = run_cli_apart("decode --format summary '" + kDemo + "'");
+  ASSERT_EQ(sound.status, 0) << sound.err;
+  const std::string back = demo_with_times("back.ydrec", 200, [](std::int64_t t, std::size_t i) {
+    return i == 0 ? std::numeric_limits<std::int64_t>::min() : t;
+  });
+  const std::string ahead = demo_with_times("ahead.ydrec", 200, [](std::int64_t t, std::size_t) {
+    return t + 1'000'000'000'000'000'000;
+  });
+  for (const std::string& file : {back, ahead}) {
+    const auto run = run_cli_apart("replay --speed 100 --format summary '" + file + "'");
+    EXPECT_EQ(run.status, 0) << run.err;
+    EXPECT_EQ(run.out, sound.out) << file;
+    EXPECT_EQ(lines(run.err), 1u) << run.err;
+    EXPECT_NE(run.err.find("ydscope-cli replay: warning: " + file + " has damaged record times: the record at byte "),
+              std::string::npos)
+        << run.err;
+  }
+}
+
+TEST_F(BadInputCli, RecordingsThisYdscopeCannotReadAreAUsageError) {
+  RawRecording(0, 16).write(path("v0.ydrec"));
+  RawRecording(1, 0xFFFF).write(path("hffff.ydrec"));
+  RawRecording(1, 4).write(path("h4.ydrec"));
+  for (const std::string name : {"v0.ydrec", "hffff.ydrec", "h4.ydrec"}) {
+    for (const std::string command : {"replay", "decode"}) {
+      const auto run = run_cli_apart(command + " '" + path(name) + "'");
+      EXPECT_EQ(run.status, 2) << command << " " << name << ": " << run.err;
+      EXPECT_EQ(lines(run.err), 1u) << run.err;
+      EXPECT_NE(run.err.find("the file is damaged"), std::string::npos) << run.err;
+      EXPECT_EQ(run.out, "");
+    }
+  }
+  // Cut inside the header: the magic is there, so it is not "not a recording".
+  const Bytes demo = test::read_file_bytes(kDemo);
+  test::write_file_bytes(path("cut.ydrec"), Bytes(demo.begin(), demo.begin() + 15));
+  const auto cut = run_cli_apart("replay '" + path("cut.ydrec") + "'");
+  EXPECT_EQ(cut.status, 1);
+  EXPECT_EQ(cut.err, "ydscope-cli replay: " + path("cut.ydrec") +
+                         " ends after 15 bytes, inside its 16-byte file header: the recording was cut off before "
+                         "anything was recorded\n");
+  const auto folder = run_cli_apart("replay '" + dir_.string() + "'");
+  EXPECT_EQ(folder.status, 1);
+  EXPECT_EQ(folder.err, "ydscope-cli replay: " + dir_.string() + " is a folder; pass a recording file (.ydrec) instead\n");
+}
+
+// decode without --model once said "missing required option --model" for these.
+TEST_F(BadInputCli, DecodeChecksTheFileBeforeAskingForAModel) {
+  auto run = run_cli_apart("decode '" + dir_.string() + "'");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(run.err, "ydscope-cli decode: '" + dir_.string() + "' is a folder; pass a file or - for standard input\n");
+  run = run_cli_apart("decode '" + path("missing.bin") + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err, "ydscope-cli decode: input file '" + path("missing.bin") + "' was not found\n");
+  // A readable raw file still needs the model.
+  test::write_file_bytes(path("raw.bin"), {0xAA, 0x55});
+  run = run_cli_apart("decode '" + path("raw.bin") + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("missing required option --model"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace ydscope

@@ -1,0 +1,38 @@
+#pragma once
+// Test helper: runs ydscope-cli as a user would from a shell, with stdout and stderr apart.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace ydscope::test {
+
+struct CliResult {
+  int status = -1;  // exit status, -1 when killed by a signal
+  std::string out;
+  std::string err;
+};
+
+// `arguments` goes through the shell: quote paths with spaces.
+inline CliResult run_cli_apart(const std::string& arguments) {
+  const auto err_path = std::filesystem::temp_directory_path() / ("ydscope-cli-err-" + std::to_string(::getpid()));
+  const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' " + arguments + " 2>'" + err_path.string() + "'";
+  CliResult result;
+  std::FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return result;
+  char buffer[65536];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, got);
+  const int status = ::pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_path, std::ios::binary);
+  result.err.assign(std::istreambuf_iterator<char>(err), {});
+  std::filesystem::remove(err_path);
+  return result;
+}
+
+}  // namespace ydscope::test
