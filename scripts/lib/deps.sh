@@ -2,6 +2,8 @@
 ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev)
 ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
 ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core)
+# libFuzzer and the sanitizer runtimes come with Debian's clang (scripts/fuzz, scripts/test --fuzz).
+ydscope_packages_fuzz=(clang-14 libclang-rt-14-dev)
 
 ydscope_install_deps() {  # ydscope_install_deps build test run ...
   local wanted=() missing=() set

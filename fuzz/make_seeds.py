@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz targets (fuzz/corpus/) from short recordings of the
+virtual lidar. Run by hand when the formats change; the outputs are committed.
+
+    ydscope-cli sim --model G1 --pty /tmp/lidar &
+    ydscope-cli record --port /tmp/lidar --out /tmp/g1.ydrec --seconds 0.4
+    (the same for G6 and TG30)
+    fuzz/make_seeds.py /tmp/g1.ydrec /tmp/g6.ydrec /tmp/tg30.ydrec
+
+The real captures (../shared/captures) and assets/demo-g6.ydrec are added by scripts/fuzz at run
+time instead of being copied here.
+"""
+import pathlib
+import struct
+import sys
+
+HERE = pathlib.Path(__file__).resolve().parent
+TARGET_OF_MODEL = {"G1": "scan_g1", "G6": "scan_g6", "TG30": "scan_tg"}
+
+
+def records(data):
+    offset = struct.unpack_from("<H", data, 14)[0]
+    while offset + 16 <= len(data):
+        kind, _flags, _reserved, length, t_ns = struct.unpack_from("<BBHIq", data, offset)
+        yield kind, data[offset + 16:offset + 16 + length]
+        offset += 16 + length
+
+
+def model_of(data):
+    for kind, payload in records(data):
+        if kind == 3:
+            for line in payload.decode("utf-8", "replace").splitlines():
+                if line.startswith("model="):
+                    return line[len("model="):]
+    raise SystemExit("recording has no model")
+
+
+def write(target, name, data):
+    folder = HERE / "corpus" / target
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / name).write_bytes(data)
+
+
+def main(paths):
+    for path in map(pathlib.Path, paths):
+        data = path.read_bytes()
+        model = model_of(data)
+        device = b"".join(p for kind, p in records(data) if kind == 1)
+        # Scan targets: byte 0 is the chunking (fuzz_input.h), then the stream as the device sent it.
+        write(TARGET_OF_MODEL[model], f"sim-{model}-chunks32", b"\x20" + device)
+        write(TARGET_OF_MODEL[model], f"sim-{model}-whole", b"\xff" + device)
+        # Replies: chunking, junk limit, then the start-up replies and the first scan packets.
+        write("replies", f"sim-{model}-startup", b"\x05\x10" + device[:160])
+        write("recording", f"sim-{model}.ydrec", data)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
