@@ -1,4 +1,4 @@
-// Real device bytes (../shared/captures), decoded with the G6 formulas as their README says.
+// Real device bytes (tests/data/captures), decoded with the G6 formulas as their README says.
 // Every count below was checked independently of this decoder by walking each file packet by
 // packet from its known start (offset 7 after the A5 5A 05 00 00 40 81 reply header; offset 10 in
 // the X4-class file) with a separate script: sizes 10 + 2*LSN chain exactly to the cut-off tail.

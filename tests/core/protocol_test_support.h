@@ -16,6 +16,7 @@
 #include "core/protocol/model_profile.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/protocol/scan_packet.h"
+#include "test_data.h"
 
 namespace ydscope::test {
 
@@ -89,7 +90,7 @@ inline Bytes read_file(const std::filesystem::path& path) {
 }
 
 inline std::filesystem::path capture(const std::string& name) {
-  return std::filesystem::path(YDSCOPE_CAPTURES_DIR) / name;
+  return captures_dir() / name;
 }
 
 // The .hex captures: whitespace-separated hex bytes; lines starting with '#' are notes.

@@ -16,6 +16,7 @@
 #include "core/record/recording_reader.h"
 #include "link/cli_run_support.h"
 #include "link/raw_recording.h"
+#include "test_data.h"
 
 namespace ydscope {
 namespace {
@@ -25,7 +26,7 @@ using Bytes = std::vector<std::uint8_t>;
 using test::RawRecording;
 using test::run_cli_apart;
 
-const std::string kDemo = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+std::string demo_recording() { return (test::assets_dir() / "demo-g6.ydrec").string(); }
 
 class BadInputCli : public ::testing::Test {
  protected:
@@ -40,9 +41,9 @@ class BadInputCli : public ::testing::Test {
   // The demo recording with the time field of every record from the `first`-th on rewritten.
   std::string demo_with_times(const std::string& name, std::size_t first,
                               std::int64_t (*rewrite)(std::int64_t t_ns, std::size_t index)) const {
-    Bytes bytes = test::read_file_bytes(kDemo);
+    Bytes bytes = test::read_file_bytes(demo_recording());
     std::string error;
-    auto reader = RecordingReader::open(kDemo, error);
+    auto reader = RecordingReader::open(demo_recording(), error);
     EXPECT_TRUE(reader) << error;
     RecordView record;
     for (std::size_t index = 0; reader && reader->next(record); ++index) {
@@ -61,13 +62,13 @@ class BadInputCli : public ::testing::Test {
 
 TEST_F(BadInputCli, ReplaySpeedOutsideItsRangeIsAUsageError) {
   for (const std::string speed : {"1e-300", "1e-10", "0.0009", "-1", "nan", "1e7"}) {
-    const auto run = run_cli_apart("replay '" + kDemo + "' --speed " + speed);
+    const auto run = run_cli_apart("replay '" + demo_recording() + "' --speed " + speed);
     EXPECT_EQ(run.status, 2) << speed;
     EXPECT_EQ(lines(run.err), 1u) << run.err;
     EXPECT_NE(run.err.find("--speed must be"), std::string::npos) << run.err;
     EXPECT_EQ(run.out, "") << speed;
   }
-  EXPECT_EQ(run_cli_apart("replay '" + kDemo + "' --speed 1e-300").err,
+  EXPECT_EQ(run_cli_apart("replay '" + demo_recording() + "' --speed 1e-300").err,
             "ydscope-cli replay: --speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '1e-300'\n");
 }
 
@@ -75,7 +76,7 @@ TEST_F(BadInputCli, ReplaySpeedOutsideItsRangeIsAUsageError) {
 // shifted 1e18 ns ahead (once a 31-year wait): both play to the end, with the laps a sound file
 // gives and a warning.
 TEST_F(BadInputCli, DamagedTimesPlayToTheEndWithAWarning) {
-  const auto sound = run_cli_apart("decode --format summary '" + kDemo + "'");
+  const auto sound = run_cli_apart("decode --format summary '" + demo_recording() + "'");
   ASSERT_EQ(sound.status, 0) << sound.err;
   const std::string back = demo_with_times("back.ydrec", 200, [](std::int64_t t, std::size_t i) {
     return i == 0 ? std::numeric_limits<std::int64_t>::min() : t;
@@ -108,7 +109,7 @@ TEST_F(BadInputCli, RecordingsThisYdscopeCannotReadAreAUsageError) {
     }
   }
   // Cut inside the header: the magic is there, so it is not "not a recording".
-  const Bytes demo = test::read_file_bytes(kDemo);
+  const Bytes demo = test::read_file_bytes(demo_recording());
   test::write_file_bytes(path("cut.ydrec"), Bytes(demo.begin(), demo.begin() + 15));
   const auto cut = run_cli_apart("replay '" + path("cut.ydrec") + "'");
   EXPECT_EQ(cut.status, 1);

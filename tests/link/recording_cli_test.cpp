@@ -23,6 +23,7 @@
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
 #include "core/sim/sim_server.h"
+#include "test_data.h"
 
 extern char** environ;
 
@@ -234,7 +235,7 @@ TEST_F(RecordingCli, UsageAndFailureSentences) {
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
   EXPECT_FALSE(fs::exists(path("nope.ydrec")));  // nothing was recorded: no empty file left behind
 
-  const std::string raw = std::string(YDSCOPE_CAPTURES_DIR) + "/x4-scan1.bin";
+  const std::string raw = (test::captures_dir() / "x4-scan1.bin").string();
   result = run({"replay", raw});
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.err.find("is not a ydscope recording"), std::string::npos) << result.err;

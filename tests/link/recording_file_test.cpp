@@ -15,6 +15,7 @@
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
 #include "link/raw_recording.h"
+#include "test_data.h"
 
 namespace ydscope {
 namespace {
@@ -196,7 +197,7 @@ TEST_F(RecordingFileTest, MagicIdentifiesRecordings) {
   EXPECT_FALSE(is_recording(std::span<const std::uint8_t>(head).first(11)));  // too short to tell
   EXPECT_TRUE(is_recording_file(path("m.ydrec")));
 
-  const std::string raw = std::string(YDSCOPE_CAPTURES_DIR) + "/x4-scan1.bin";
+  const std::string raw = (test::captures_dir() / "x4-scan1.bin").string();
   EXPECT_FALSE(is_recording_file(raw));
   EXPECT_FALSE(is_recording_file(path("missing.ydrec")));
   EXPECT_FALSE(RecordingReader::open(raw, error));

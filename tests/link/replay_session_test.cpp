@@ -15,6 +15,7 @@
 #include "core/link/session.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
+#include "test_data.h"
 
 namespace ydscope {
 namespace {
@@ -122,7 +123,7 @@ TEST(RecordThenReplay, G6GivesBackTheSameLaps) { record_and_replay(Model::G6); }
 TEST(RecordThenReplay, Tg30GivesBackTheSameLaps) { record_and_replay(Model::TG30); }
 
 TEST(ReplayThroughASession, ShowsTheDeviceTheRecordingCameFrom) {
-  const std::string file = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+  const std::string file = (test::assets_dir() / "demo-g6.ydrec").string();
   Session session(16);
   SessionConfig config;
   config.address = file;

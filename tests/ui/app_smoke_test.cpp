@@ -9,6 +9,8 @@
 #include <memory>
 #include <string>
 
+#include "test_data.h"
+
 namespace {
 
 #ifdef YDSCOPE_APP_PATH
@@ -84,7 +86,7 @@ TEST(AppSmoke, VirtualG6RendersAScreenshot) {
 
 TEST(AppSmoke, DemoRecordingReplaysIntoAScreenshot) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
-  const std::string recording = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+  const std::string recording = (ydscope::test::assets_dir() / "demo-g6.ydrec").string();
   ASSERT_TRUE(std::filesystem::exists(recording)) << recording;
   EXPECT_LT(std::filesystem::file_size(recording), 1'000'000u) << "keep the committed demo recording small";
   const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-replay.png";
