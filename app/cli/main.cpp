@@ -5,6 +5,7 @@
 
 #include "app/cli/arguments.h"
 #include "app/cli/cli_command.h"
+#include "core/version.h"
 
 namespace {
 
@@ -32,8 +33,8 @@ int main(int argc, char** argv) {
     print_overview(std::cout);
     return kExitOk;
   }
-  if (args[0] == "--version") {
-    std::cout << "ydscope-cli 0.1.0\n";
+  if (args[0] == "--version" || args[0] == "-V") {
+    std::cout << "ydscope-cli " << ydscope::kVersion << "\n";
     return kExitOk;
   }
   for (const auto& command : registered_commands()) {

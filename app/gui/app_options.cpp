@@ -2,28 +2,12 @@
 
 #include <charconv>
 
+#include "app/gui/app_help.h"
 #include "core/protocol/model_profile.h"
 
 namespace ydscope::gui {
 
-const char* const kAppHelp =
-    "usage: ydscope [--port PATH|tcp://HOST:PORT [--model M] [--baud B] | --sim MODEL [--scene room|demo]\n"
-    "               | --replay FILE] [--fullscreen] [--screenshot PNG --frames N]\n"
-    "\n"
-    "Shows a YDLIDAR G1, G6 or TG15/TG30/TG50 scan live. With no source it connects to the first\n"
-    "lidar found, and otherwise starts the virtual G6 (demo scene).\n"
-    "\n"
-    "  --port PATH        serial port (or tcp://host:port for a serial-to-network bridge)\n"
-    "  --model M          G1, G6, TG15, TG30 or TG50 (default: detected from the device)\n"
-    "  --baud B           baud rate (default: the model's)\n"
-    "  --sim MODEL        the virtual lidar of MODEL on a pseudo-terminal\n"
-    "  --scene NAME       the virtual lidar's scene: room or demo (default demo)\n"
-    "  --replay FILE      play a recording (.ydrec)\n"
-    "  --fullscreen       start full-screen with the panels hidden\n"
-    "  --screenshot PNG   render --frames N frames (default 120) with laps arriving, save the window\n"
-    "                     as PNG and exit\n"
-    "\n"
-    "Keys: F11 full-screen, Tab panels, R reset view, A auto-range, P pause, S screenshot, Esc clear ruler.\n";
+const char* const kAppHelp = kAppHelpText;
 
 namespace {
 
@@ -48,6 +32,8 @@ AppOptions parse_app_options(std::span<const std::string> args) {
     const std::string& a = args[i];
     if (a == "-h" || a == "--help") {
       options.help = true;
+    } else if (a == "-V" || a == "--version") {
+      options.version = true;
     } else if (a == "--port") {
       set_source(options, SourceKind::Port, a);
       options.port = value_of(args, i);

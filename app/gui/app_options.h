@@ -20,6 +20,7 @@ struct AppOptions {
   std::string screenshot_path;       // --screenshot PNG
   int frames = 120;                  // --frames N with --screenshot
   bool help = false;
+  bool version = false;
 };
 
 class OptionsError : public std::runtime_error {

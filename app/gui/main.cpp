@@ -18,6 +18,7 @@
 #include "app/gui/app.h"
 #include "app/gui/app_options.h"
 #include "app/gui/screenshot.h"
+#include "core/version.h"
 #include "ui/render/theme.h"
 #include "ui/view/app_icon.h"
 
@@ -153,6 +154,10 @@ int main(int argc, char** argv) {
   }
   if (options.help) {
     std::fputs(ydscope::gui::kAppHelp, stdout);
+    return 0;
+  }
+  if (options.version) {
+    std::printf("ydscope %s\n", ydscope::kVersion);
     return 0;
   }
   return run(options);

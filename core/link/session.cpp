@@ -9,6 +9,7 @@
 
 #include "core/link/device_probe.h"
 #include "core/link/session_impl.h"
+#include "core/version.h"
 
 namespace ydscope {
 
@@ -158,7 +159,7 @@ void Session::Impl::post_start_recording(std::string path, CommandCallback done)
     result.what = "record to " + path;
     RecordingMetadata metadata;
     metadata.start_wall_time = iso8601_utc_now();
-    metadata.software = "ydscope 0.1.0";
+    metadata.software = std::string("ydscope ") + kVersion;
     if (config_) metadata.port = config_->address;
     recorder_.stop();
     std::string error;
