@@ -1,5 +1,5 @@
 // Fuzzes the ydscope window's command line (arguments split at NUL bytes). A bad command line
-// must end in one OptionsError sentence; a good one must satisfy the parser's own rules.
+// must end in one UsageError sentence; a good one must satisfy the parser's own rules.
 #include <cstdint>
 #include <string>
 
@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (options.model && *options.model != "auto") {
       FUZZ_CHECK(ydscope::find_profile(*options.model) != nullptr, "an unknown model was accepted");
     }
-  } catch (const OptionsError& error) {
+  } catch (const ydscope::UsageError& error) {
     FUZZ_CHECK(*error.what() != '\0', "an options error without a sentence");
   }
   return 0;

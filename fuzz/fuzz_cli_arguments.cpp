@@ -6,16 +6,16 @@
 #include <set>
 #include <string>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using ydscope::cli::Arguments;
-  using ydscope::cli::UsageError;
+  using ydscope::Arguments;
+  using ydscope::UsageError;
   const auto args = ydscope::fuzz::split_arguments(data, size);
   try {
     const Arguments parsed(args, {"port", "model", "baud", "seconds", "out", "laps", "distance-scale", "scan-hz"},
-                           {"force", "json", "summary", "verbose"});
+                           {"force", "json", "summary", "verbose"}, /*max_positionals=*/1);
     if (const auto seconds = parsed.number("seconds", 0.001, 86400.0)) {
       FUZZ_CHECK(std::isfinite(*seconds) && *seconds >= 0.001 && *seconds <= 86400.0, "--seconds out of its range");
     }

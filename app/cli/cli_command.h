@@ -16,8 +16,8 @@ inline constexpr int kExitUsage = 2;
 struct CliCommand {
   std::string_view name;
   std::string_view summary;  // one line for the command list
-  std::string_view help;     // full --help text of the subcommand
-  int (*run)(std::span<const std::string> args);  // args exclude the subcommand name
+  std::string_view help;     // full help text; main prints it for --help, -h and `help COMMAND`
+  int (*run)(std::span<const std::string> args);  // args exclude the subcommand name; parse them with Arguments
 };
 
 std::span<const CliCommand> registered_commands();

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/recording_input.h"
@@ -122,11 +122,7 @@ InterferenceFilter parse_filter(const std::string& list) {
 }
 
 int run_decode(std::span<const std::string> raw) {
-  const Arguments args(raw, {"model", "format", "filter", "distance-scale"}, {});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
+  const Arguments args(raw, {"model", "format", "filter", "distance-scale"}, {}, /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (or - for standard input)");
   const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <string>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
@@ -37,10 +37,6 @@ example:
 
 int run_info(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({}), {});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
   const SessionConfig config = session_config_from(args, /*scan=*/false);
   Session session(1);
   const SessionSnapshot s = connect_or_throw(session, config);

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "core/link/port_discovery.h"
@@ -98,12 +98,6 @@ void print_json(const std::vector<SerialPortInfo>& ports) {
 
 int run_ports(std::span<const std::string> raw) {
   const Arguments args(raw, {"format", "dev-root", "sys-root"}, {});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
-  if (!args.positionals().empty())
-    throw UsageError("ports takes no arguments besides options, not '" + args.positionals().front() + "'");
   const std::string format = args.value("format").value_or("table");
   if (format != "table" && format != "json") throw UsageError("--format must be table or json, not '" + format + "'");
   const PortDiscovery discovery(args.value("dev-root").value_or("/dev"), args.value("sys-root").value_or("/sys"));

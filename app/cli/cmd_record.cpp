@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/session_cli.h"
@@ -90,10 +90,6 @@ std::string laps_in(const std::string& path, const RecordingMetadata& metadata) 
 
 int run_record(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"out", "seconds"}), {"force"});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
   const std::string out = args.required("out");
   const auto seconds = args.number("seconds", 0.001, 1e7);
   if (!args.has("force") && std::filesystem::exists(out))

@@ -10,7 +10,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/recording_input.h"
@@ -50,12 +50,9 @@ examples:
 constexpr std::size_t kReadBuffer = 4096;
 
 int run_replay(std::span<const std::string> raw) {
-  const Arguments args(raw, {"speed", "format", "model", "distance-scale"}, {});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
+  const Arguments args(raw, {"speed", "format", "model", "distance-scale"}, {}, /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (a .ydrec recording)");
+  require_existing_file(path, "recording");
   const double speed = args.number("speed", 0, kMaxReplaySpeed).value_or(1.0);
   if (speed > 0 && speed < kMinReplaySpeed)  // slower would wait for days between two records
     throw UsageError("--speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '" +

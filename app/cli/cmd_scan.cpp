@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
@@ -63,10 +63,6 @@ struct LapBell {
 
 int run_scan(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
   const auto laps_wanted = args.integer("laps", 1, 1'000'000);
   if (!laps_wanted) throw UsageError("--laps N is required (how many laps to print)");
   const std::string format = args.value("format").value_or("jsonl");

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
@@ -39,10 +39,6 @@ examples:
 
 int run_set(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"scan-hz", "ranging-khz"}), {});
-  if (args.help_requested()) {
-    std::fwrite(kHelpText.data(), 1, kHelpText.size(), stdout);
-    return kExitOk;
-  }
   const auto scan_hz = args.number("scan-hz", 0.1, 100.0);
   const auto ranging_khz = args.integer("ranging-khz", 1, 100);
   if (scan_hz.has_value() == ranging_khz.has_value())

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "core/protocol/model_profile.h"
 #include "core/sim/scene.h"
@@ -81,11 +81,6 @@ int run_sim(std::span<const std::string> raw) {
                         "lose-packets", "stall-ms", "stall-every-ms", "health-bits", "junk", "unplug-after-ms",
                         "replug-after-ms"},
                        {"verbose", "health-quirk"});
-  if (args.help_requested()) {
-    std::cout << kHelpText;
-    return kExitOk;
-  }
-  if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals().front() + "'");
 
   const std::string model_name = args.required("model");
   const ModelProfile* profile = find_profile(model_name);

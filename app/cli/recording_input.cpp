@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 
 namespace ydscope::cli {
 

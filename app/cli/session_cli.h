@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-#include "app/cli/arguments.h"
+#include "app/common/arguments.h"
 #include "app/cli/lap_json.h"
 #include "core/link/session.h"
 

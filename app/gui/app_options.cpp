@@ -1,7 +1,5 @@
 #include "app/gui/app_options.h"
 
-#include <charconv>
-
 #include "app/gui/app_help.h"
 #include "core/protocol/model_profile.h"
 
@@ -9,75 +7,40 @@ namespace ydscope::gui {
 
 const char* const kAppHelp = kAppHelpText;
 
-namespace {
-
-const std::string& value_of(std::span<const std::string> args, std::size_t& i) {
-  if (i + 1 >= args.size()) throw OptionsError(args[i] + " needs a value; see ydscope --help.");
-  return args[++i];
-}
-
-void set_source(AppOptions& options, SourceKind kind, const std::string& flag) {
-  if (options.source != SourceKind::Auto && options.source != kind) {
-    throw OptionsError("choose one source: --port, --sim or --replay (" + flag + " came after another).");
-  }
-  options.source = kind;
-}
-
-}  // namespace
-
-AppOptions parse_app_options(std::span<const std::string> args) {
+AppOptions parse_app_options(std::span<const std::string> raw) {
+  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames"},
+                       {"fullscreen"});
   AppOptions options;
-  bool frames_given = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-h" || a == "--help") {
-      options.help = true;
-    } else if (a == "-V" || a == "--version") {
-      options.version = true;
-    } else if (a == "--port") {
-      set_source(options, SourceKind::Port, a);
-      options.port = value_of(args, i);
-    } else if (a == "--sim") {
-      set_source(options, SourceKind::Sim, a);
-      options.model = value_of(args, i);
-    } else if (a == "--replay") {
-      set_source(options, SourceKind::Replay, a);
-      options.replay_file = value_of(args, i);
-    } else if (a == "--model") {
-      options.model = value_of(args, i);
-    } else if (a == "--scene") {
-      options.scene = value_of(args, i);
-    } else if (a == "--baud") {
-      const std::string& v = value_of(args, i);
-      unsigned baud = 0;
-      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), baud);
-      if (ec != std::errc{} || end != v.data() + v.size() || baud == 0) {
-        throw OptionsError("--baud takes a positive number such as 230400 or 512000, not '" + v + "'.");
-      }
-      options.baud = baud;
-    } else if (a == "--fullscreen") {
-      options.fullscreen = true;
-    } else if (a == "--screenshot") {
-      options.screenshot_path = value_of(args, i);
-    } else if (a == "--frames") {
-      const std::string& v = value_of(args, i);
-      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), options.frames);
-      if (ec != std::errc{} || end != v.data() + v.size() || options.frames < 1) {
-        throw OptionsError("--frames takes a positive number of frames, not '" + v + "'.");
-      }
-      frames_given = true;
-    } else {
-      throw OptionsError("unknown option '" + a + "'; see ydscope --help.");
-    }
+  const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
+  if (int(port) + int(sim) + int(replay) > 1)
+    throw UsageError("choose one source: --port, --sim or --replay, not more than one.");
+  if (port) {
+    options.source = SourceKind::Port;
+    options.port = *args.value("port");
+  } else if (sim) {
+    options.source = SourceKind::Sim;
+    options.model = args.value("sim");
+  } else if (replay) {
+    options.source = SourceKind::Replay;
+    options.replay_file = *args.value("replay");
+  }
+  if (const auto model = args.value("model")) {
+    if (sim) throw UsageError("--sim names the model already; drop --model.");
+    options.model = model;
+  }
+  if (const auto baud = args.integer("baud", 50, 4'000'000)) options.baud = static_cast<unsigned>(*baud);
+  options.scene = args.value("scene").value_or(options.scene);
+  options.fullscreen = args.has("fullscreen");
+  options.screenshot_path = args.value("screenshot").value_or("");
+  if (const auto frames = args.integer("frames", 1, 1'000'000)) {
+    if (options.screenshot_path.empty()) throw UsageError("--frames goes with --screenshot PNG.");
+    options.frames = static_cast<int>(*frames);
   }
   if (options.model && !find_profile(*options.model) && !(options.source == SourceKind::Port && *options.model == "auto")) {
-    throw OptionsError("unknown model '" + *options.model + "'; choose one of " + std::string(model_names()) + ".");
+    throw UsageError("unknown model '" + *options.model + "'; choose one of " + std::string(model_names()) + ".");
   }
   if (options.source == SourceKind::Auto && (options.model || options.baud)) {
-    throw OptionsError("--model and --baud go with --port (or --sim MODEL); see ydscope --help.");
-  }
-  if (frames_given && options.screenshot_path.empty()) {
-    throw OptionsError("--frames goes with --screenshot PNG.");
+    throw UsageError("--model and --baud go with --port (or --sim MODEL); see ydscope --help.");
   }
   return options;
 }

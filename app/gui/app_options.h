@@ -2,8 +2,9 @@
 // The command line of `ydscope`: which source to show and the screenshot mode used by CI.
 #include <optional>
 #include <span>
-#include <stdexcept>
 #include <string>
+
+#include "app/common/arguments.h"
 
 namespace ydscope::gui {
 
@@ -19,16 +20,9 @@ struct AppOptions {
   bool fullscreen = false;
   std::string screenshot_path;       // --screenshot PNG
   int frames = 120;                  // --frames N with --screenshot
-  bool help = false;
-  bool version = false;
 };
 
-class OptionsError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Throws OptionsError with one sentence for a bad command line.
+// Throws UsageError (the shared parser's, app/common/arguments.h) with one sentence for a bad command line.
 AppOptions parse_app_options(std::span<const std::string> args);
 extern const char* const kAppHelp;
 

@@ -144,21 +144,22 @@ int run(const ydscope::gui::AppOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  ydscope::gui::AppOptions options;
-  try {
-    options = ydscope::gui::parse_app_options(args);
-  } catch (const ydscope::gui::OptionsError& e) {
-    std::fprintf(stderr, "ydscope: %s\n", e.what());
-    return 2;
-  }
-  if (options.help) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  // Help and version win over everything else on the line, as in ydscope-cli.
+  if (ydscope::asks_for_help(args)) {
     std::fputs(ydscope::gui::kAppHelp, stdout);
     return 0;
   }
-  if (options.version) {
+  if (ydscope::asks_for_version(args)) {
     std::printf("ydscope %s\n", ydscope::kVersion);
     return 0;
+  }
+  ydscope::gui::AppOptions options;
+  try {
+    options = ydscope::gui::parse_app_options(args);
+  } catch (const ydscope::UsageError& e) {
+    std::fprintf(stderr, "ydscope: %s\n", e.what());
+    return 2;
   }
   return run(options);
 }
