@@ -32,8 +32,9 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
                        They may start with the scan reply header (A5 5A 05 00 00 40 81) and may hold
                        junk; junk is skipped and counted, packets with a bad checksum are dropped.
                        FILE may also be a recording (.ydrec, from `ydscope-cli record`, recognised
-                       by its header): its device->host bytes are decoded, with its model unless
-                       --model is given.
+                       by its header): its device->host bytes are decoded, with its model and
+                       the distance scale it was recorded with (as replay does) unless --model
+                       is given.
   --model MODEL        G1, G6, TG15, TG30 or TG50 (any letter case). Picks the distance formula
                        (G1: S>>2 mm with the interference flag in S&3; G6: S/4 mm; TG: S/2 mm, as
                        the manuals give them) and, on G1, the CT information and LastCRC byte.
@@ -43,7 +44,8 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
                        (flag 3), or both as specular,ambient. Only the lap points change.
   --distance-scale X   millimetres per raw distance unit (after the flag bits), overriding the
                        model's value (G1 1, G6 0.25, TG 0.5). Some vendor-SDK firmware uses other
-                       scales (G6 0.5; TG firmware above 1.2 uses 1).
+                       scales (G6 0.5; TG firmware above 1.2 uses 1). From 0.000001 to 1000000;
+                       a recording's scale outside that range is ignored with a warning.
 
 A lap runs from a zero packet (CT bit 0 set), inclusive, to the next one, exclusive. Bytes before
 the first zero packet and a cut-off packet at the end are not part of any lap.
@@ -135,7 +137,9 @@ int run_decode(std::span<const std::string> raw) {
   if (format != "jsonl" && format != "summary")
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
-  const auto scale = args.number("distance-scale", 1e-6, 1e6);
+  const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
+  const auto scale = recording ? recording_distance_scale(scale_option, args.value("model").has_value(), *recording)
+                               : scale_option;
 
   ScanDecoder decoder(*profile, scale);
   JsonOut out(stdout);

@@ -69,8 +69,8 @@ int run_replay(std::span<const std::string> raw) {
   for (const std::string& warning : link->warnings())
     std::fprintf(stderr, "ydscope-cli replay: warning: %s\n", warning.c_str());
   const ModelProfile& profile = recording_profile(args.value("model"), link->metadata(), path);
-  std::optional<double> scale = args.number("distance-scale", 1e-6, 1e6);
-  if (!scale && !args.value("model")) scale = link->metadata().distance_scale;
+  const auto scale = recording_distance_scale(args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale),
+                                              args.value("model").has_value(), link->metadata());
 
   ScanDecoder decoder(profile, scale);
   JsonOut out(stdout);

@@ -69,7 +69,7 @@ int run_scan(std::span<const std::string> raw) {
   if (format != "jsonl" && format != "summary")
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
   SessionConfig config = session_config_from(args, /*scan=*/true);
-  config.distance_scale = args.number("distance-scale", 1e-6, 1e6);
+  config.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
 
   LapBell bell;
   Session session(64, [&bell] { bell.ring(); });

@@ -29,6 +29,13 @@ void throw_open_failure(const std::string& error, RecordingOpenFailure failure) 
   throw std::runtime_error(error);
 }
 
+std::optional<double> recording_distance_scale(const std::optional<double>& scale_option, bool model_forced,
+                                               const RecordingMetadata& metadata) {
+  if (scale_option) return scale_option;
+  if (model_forced) return std::nullopt;  // the recorded scale belonged to the recorded model
+  return metadata.distance_scale;
+}
+
 std::optional<RecordingMetadata> recording_metadata_of(const std::string& path) {
   if (path == "-" || !is_recording_file(path)) return std::nullopt;
   std::string error;
@@ -50,7 +57,10 @@ std::optional<RecordingMetadata> read_recording_device_bytes(
     if (record.type == RecordType::DeviceToHost) on_chunk(record.payload);
   if (reader->corrupt() || reader->truncated())
     std::fprintf(stderr, "ydscope-cli: warning: %s\n", (reader->corrupt() ? reader->error() : reader->warning()).c_str());
-  if (reader->time_corrections() > 0) std::fprintf(stderr, "ydscope-cli: warning: %s\n", reader->time_warning().c_str());
+  if (reader->time_corrections() > 0)
+    std::fprintf(stderr, "ydscope-cli: warning: %s\n", reader->time_warning().c_str());
+  for (const std::string& warning : reader->metadata_warnings())
+    std::fprintf(stderr, "ydscope-cli: warning: %s: %s\n", path.c_str(), warning.c_str());
   return reader->metadata();
 }
 

@@ -18,6 +18,12 @@ namespace ydscope::cli {
 const ModelProfile& recording_profile(const std::optional<std::string>& model_option,
                                       const RecordingMetadata& metadata, const std::string& path);
 
+// The scale to decode a recording with, the same in decode and replay: --distance-scale when
+// given; else the recording's own (already held to kMin/kMaxDistanceScale when its metadata was
+// read) unless --model forced another model; else empty (the model's).
+std::optional<double> recording_distance_scale(const std::optional<double>& scale_option, bool model_forced,
+                                               const RecordingMetadata& metadata);
+
 // Throws the sentence of a recording that did not open: UsageError (exit 2) for a recording of a
 // version or header this ydscope cannot read, std::runtime_error (exit 1) otherwise.
 [[noreturn]] void throw_open_failure(const std::string& error, RecordingOpenFailure failure);

@@ -255,6 +255,7 @@ std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const 
   std::vector<std::string> warnings;
   for (const std::string* warning : {&summary->error, &summary->warning, &summary->time_warning})
     if (!warning->empty()) warnings.push_back(*warning);
+  for (const std::string& warning : summary->metadata_warnings) warnings.push_back(path + ": " + warning);
   return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, std::move(warnings)));
 }
 

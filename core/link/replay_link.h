@@ -78,13 +78,14 @@ class ReplayLink final : public ByteLink {
   const RecordingMetadata& metadata() const { return metadata_; }
   const RecordingMetadata* recording_metadata() const override { return &metadata_; }
   // What opening found wrong but playable, one sentence each: a truncated or corrupt tail,
-  // damaged record times. Empty when the file is sound.
+  // damaged record times, damaged metadata fields. Empty when the file is sound.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
   class Core;
 
  private:
-  ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata, std::vector<std::string> warnings);
+  ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata,
+             std::vector<std::string> warnings);
 
   std::shared_ptr<Core> core_;
   std::string path_;

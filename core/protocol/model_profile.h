@@ -12,6 +12,16 @@ namespace ydscope {
 
 enum class Model : std::uint8_t { G1, G6, TG15, TG30, TG50 };
 
+// The distance scales (mm per raw count) any source may ask for: --distance-scale, a
+// recording's metadata, the app. Wide enough for every firmware seen; anything else (0, negative,
+// NaN, 1e300) would turn ranges into nonsense or invalid JSON.
+inline constexpr double kMinDistanceScale = 1e-6;
+inline constexpr double kMaxDistanceScale = 1e6;
+// False for NaN and infinities too.
+constexpr bool distance_scale_in_range(double mm_per_count) {
+  return mm_per_count >= kMinDistanceScale && mm_per_count <= kMaxDistanceScale;
+}
+
 struct ModelProfile {
   Model model;
   std::string_view name;        // "G1", "G6", "TG15", ...

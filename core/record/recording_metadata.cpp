@@ -7,6 +7,8 @@
 #include <ctime>
 #include <sstream>
 
+#include "core/protocol/model_profile.h"
+
 namespace ydscope {
 namespace {
 
@@ -112,10 +114,12 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
     } else if (key == "baud") {
       number(metadata.baud);
     } else if (key == "distance_scale") {
-      if (const auto parsed = parse_double(value)) {
+      // The same bounds as --distance-scale: a damaged scale would make every range nonsense.
+      if (const auto parsed = parse_double(value); parsed && distance_scale_in_range(*parsed)) {
         metadata.distance_scale = parsed;
       } else {
-        warn("metadata distance_scale='" + value + "' is not a number; ignored");
+        warn("metadata distance_scale='" + value + "' is not a number from " + format_double(kMinDistanceScale) +
+             " to " + format_double(kMaxDistanceScale) + " mm per count; ignored, the model's own scale is used");
       }
     } else if (key == "port") {
       metadata.port = value;

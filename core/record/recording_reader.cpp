@@ -171,9 +171,12 @@ bool RecordingReader::next(RecordView& out) {
     out.t_ns = checked_time(header.t_ns, record_offset);
     out.payload = payload_;
     out.file_offset = record_offset;
-    if (out.type == RecordType::Metadata) {
+    // Each metadata record is merged once: after a rewind, an early record must not undo a
+    // later one, nor repeat its warnings.
+    if (out.type == RecordType::Metadata && record_offset >= metadata_merged_to_) {
       const std::string_view text(reinterpret_cast<const char*>(payload_.data()), payload_.size());
       metadata_.merge(RecordingMetadata::parse(text, &metadata_warnings_));
+      metadata_merged_to_ = offset_;
     }
     return true;
   }
@@ -204,6 +207,7 @@ std::optional<RecordingSummary> summarize_recording(const std::string& path, std
   summary.warning = reader->warning();
   summary.error = reader->error();
   summary.time_warning = reader->time_warning();
+  summary.metadata_warnings = reader->metadata_warnings();
   return summary;
 }
 

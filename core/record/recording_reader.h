@@ -80,6 +80,7 @@ class RecordingReader {
   std::uint64_t records_read_ = 0;
   std::vector<std::uint8_t> payload_;
   RecordingMetadata metadata_;
+  std::uint64_t metadata_merged_to_ = 0;  // file offset up to which metadata records are merged
   std::vector<std::string> metadata_warnings_;
   std::string warning_;
   std::string error_;
@@ -104,6 +105,7 @@ struct RecordingSummary {
   std::string warning;           // truncated tail
   std::string error;             // corrupt record
   std::string time_warning;      // damaged record times (RecordingReader::time_warning())
+  std::vector<std::string> metadata_warnings;  // damaged metadata fields that were skipped
 };
 std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error,
                                                     RecordingOpenFailure* failure = nullptr);

@@ -55,7 +55,9 @@ class BadInputCli : public ::testing::Test {
     test::write_file_bytes(file, bytes);
     return file;
   }
-  static std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+  static std::size_t lines(const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  }
 
   fs::path dir_;
 };
@@ -119,6 +121,47 @@ TEST_F(BadInputCli, RecordingsThisYdscopeCannotReadAreAUsageError) {
   const auto folder = run_cli_apart("replay '" + dir_.string() + "'");
   EXPECT_EQ(folder.status, 1);
   EXPECT_EQ(folder.err, "ydscope-cli replay: " + dir_.string() + " is a folder; pass a recording file (.ydrec) instead\n");
+}
+
+// A recording's distance_scale once went unchecked into replay ("points":[[nan,nan,0],...) and
+// was ignored by decode, so the two disagreed on the same file.
+TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
+  std::string error;
+  auto demo = RecordingReader::open(kDemo, error);
+  ASSERT_TRUE(demo) << error;
+  const auto with_scale = [&](const std::string& name, const std::string& scale) {
+    RawRecording recording(1, 16, "model=G6\ndistance_scale=" + scale + "\n");
+    demo->rewind();
+    RecordView record;
+    while (demo->next(record))
+      if (record.type == RecordType::DeviceToHost)
+        recording.add(record.type, record.t_ns, Bytes(record.payload.begin(), record.payload.end()));
+    recording.write(path(name));
+    return path(name);
+  };
+  const auto plain = run_cli_apart("decode '" + kDemo + "'");  // the demo records the manual's 0.25
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  for (const std::string bad : {"nan", "inf", "1e300", "-1", "0"}) {
+    const std::string file = with_scale("bad.ydrec", bad);
+    const auto decoded = run_cli_apart("decode '" + file + "'");
+    const auto replayed = run_cli_apart("replay --speed 0 '" + file + "'");
+    EXPECT_EQ(decoded.status, 0) << decoded.err;
+    EXPECT_EQ(replayed.status, 0) << replayed.err;
+    EXPECT_EQ(decoded.out, plain.out) << bad << ": the model's own scale";
+    EXPECT_EQ(replayed.out, plain.out) << bad;
+    for (const auto* run : {&decoded, &replayed}) {
+      EXPECT_EQ(lines(run->err), 1u) << run->err;
+      EXPECT_NE(run->err.find(file + ": metadata distance_scale='" + bad + "' is not a number from 1e-06 to 1e+06"),
+                std::string::npos)
+          << run->err;
+    }
+  }
+  const std::string doubled = with_scale("half.ydrec", "0.5");
+  const auto decoded = run_cli_apart("decode '" + doubled + "'");
+  EXPECT_EQ(decoded.err, "");
+  EXPECT_NE(decoded.out, plain.out);
+  EXPECT_EQ(decoded.out, run_cli_apart("replay --speed 0 '" + doubled + "'").out);
+  EXPECT_EQ(decoded.out, run_cli_apart("decode --model G6 --distance-scale 0.5 '" + kDemo + "'").out);
 }
 
 // decode without --model once said "missing required option --model" for these.

@@ -117,6 +117,23 @@ TEST_F(BadRecordings, ExtremeTimesAtEitherEndNeverOverflow) {
   EXPECT_GT(reader->time_corrections(), 0u);
 }
 
+// After a rewind an early metadata record must neither undo a later one nor repeat its warnings.
+TEST_F(BadRecordings, MetadataIsMergedOnceWhateverTheRewinds) {
+  RawRecording recording(1, 16, "model=G6\nbaud=fast\n");
+  recording.add_device_records({1 * kMs});
+  const std::string later = "model=TG30\n";
+  recording.add(RecordType::Metadata, 2 * kMs, Bytes(later.begin(), later.end()));
+  std::string error;
+  auto reader = RecordingReader::open(write("meta.ydrec", recording.bytes()), error);
+  ASSERT_TRUE(reader) << error;
+  for (int pass = 0; pass < 3; ++pass) {
+    device_times(*reader);
+    EXPECT_EQ(reader->metadata().model, "TG30") << "pass " << pass;
+    EXPECT_EQ(reader->metadata_warnings().size(), 1u) << "pass " << pass;
+    reader->rewind();
+  }
+}
+
 // Each kind of bad header is named for what it is, and a version or header size this ydscope
 // cannot read is Unsupported (the CLI's exit 2), not "not a recording".
 TEST_F(BadRecordings, HeadersSayWhatIsReallyWrong) {

@@ -1,6 +1,10 @@
 // Metadata text of a recording: every field round-trips, escaping, unknown keys, damaged values.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
+#include "core/protocol/model_profile.h"
 #include "core/record/recording_metadata.h"
 
 namespace ydscope {
@@ -41,6 +45,24 @@ TEST(RecordingMetadata, DamagedFieldsAreSkippedWithWarnings) {
   EXPECT_EQ(metadata.hardware, 2u);
   ASSERT_EQ(warnings.size(), 3u);
   EXPECT_NE(warnings[0].find("baud='fast'"), std::string::npos);
+}
+
+// Issue 17: a scale of nan once reached the JSON as [nan,nan,0]; 0, -1, inf, 1e300 gave nonsense.
+TEST(RecordingMetadata, DistanceScaleIsHeldToTheBoundsOfTheOption) {
+  for (const std::string bad : {"nan", "inf", "-inf", "1e300", "-1", "0", "1e-7", "1000001"}) {
+    std::vector<std::string> warnings;
+    const auto metadata = RecordingMetadata::parse("model=G6\ndistance_scale=" + bad + "\n", &warnings);
+    EXPECT_FALSE(metadata.distance_scale) << bad;
+    EXPECT_EQ(metadata.model, "G6");
+    ASSERT_EQ(warnings.size(), 1u) << bad;
+    EXPECT_EQ(warnings[0], "metadata distance_scale='" + bad +
+                               "' is not a number from 1e-06 to 1e+06 mm per count; ignored, the model's own scale is used");
+  }
+  for (const double good : {kMinDistanceScale, 0.25, 1.0, kMaxDistanceScale}) {
+    RecordingMetadata metadata;
+    metadata.distance_scale = good;
+    EXPECT_EQ(RecordingMetadata::parse(metadata.encode()).distance_scale, good);
+  }
 }
 
 TEST(RecordingMetadata, MergeTakesOnlyTheFieldsSetLater) {
