@@ -127,7 +127,7 @@ TEST_F(BadInputCli, RecordingsThisYdscopeCannotReadAreAUsageError) {
 // was ignored by decode, so the two disagreed on the same file.
 TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
   std::string error;
-  auto demo = RecordingReader::open(kDemo, error);
+  auto demo = RecordingReader::open(demo_recording(), error);
   ASSERT_TRUE(demo) << error;
   const auto with_scale = [&](const std::string& name, const std::string& scale) {
     RawRecording recording(1, 16, "model=G6\ndistance_scale=" + scale + "\n");
@@ -139,7 +139,7 @@ TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
     recording.write(path(name));
     return path(name);
   };
-  const auto plain = run_cli_apart("decode '" + kDemo + "'");  // the demo records the manual's 0.25
+  const auto plain = run_cli_apart("decode '" + demo_recording() + "'");  // the demo records the manual's 0.25
   ASSERT_EQ(plain.status, 0) << plain.err;
   for (const std::string bad : {"nan", "inf", "1e300", "-1", "0"}) {
     const std::string file = with_scale("bad.ydrec", bad);
@@ -161,7 +161,7 @@ TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
   EXPECT_EQ(decoded.err, "");
   EXPECT_NE(decoded.out, plain.out);
   EXPECT_EQ(decoded.out, run_cli_apart("replay --speed 0 '" + doubled + "'").out);
-  EXPECT_EQ(decoded.out, run_cli_apart("decode --model G6 --distance-scale 0.5 '" + kDemo + "'").out);
+  EXPECT_EQ(decoded.out, run_cli_apart("decode --model G6 --distance-scale 0.5 '" + demo_recording() + "'").out);
 }
 
 // decode without --model once said "missing required option --model" for these.
