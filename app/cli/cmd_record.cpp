@@ -17,6 +17,7 @@
 #include "app/cli/session_cli.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/record/recording_reader.h"
+#include "core/record/recording_writer.h"
 
 namespace ydscope::cli {
 namespace {
@@ -32,8 +33,9 @@ file is still readable up to the last ~100 ms.
 
 options:
   --port PATH      serial port (see `ydscope-cli ports`) or tcp://host:port
-  --out FILE       the recording to write (.ydrec by convention); an existing file is refused
-                   unless --force is given
+  --out FILE       the recording to write (.ydrec by convention): a regular file in a folder
+                   that exists (not a device such as /dev/null: a recording is read back); an
+                   existing file is refused unless --force is given
   --model MODEL    auto (default: detect from the device info), G1, G6, TG15, TG30, TG50
   --baud B         line rate, or auto to probe (default: the model's, 230400 when auto)
   --seconds S      stop after S seconds of scanning (default: until Ctrl-C)
@@ -92,6 +94,8 @@ int run_record(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"out", "seconds"}), {"force"});
   const std::string out = args.required("out");
   const auto seconds = args.number("seconds", 0.001, 1e7);
+  // Before connecting: /dev/null once recorded for a second and then failed as "not a recording".
+  if (const std::string problem = recording_output_problem(out); !problem.empty()) throw UsageError(problem);
   if (!args.has("force") && std::filesystem::exists(out))
     throw UsageError(out + " already exists; choose another --out or add --force to overwrite it");
   const SessionConfig config = session_config_from(args, /*scan=*/true);

@@ -11,6 +11,7 @@ SessionRecorder::~SessionRecorder() { stop(); }
 bool SessionRecorder::start(const std::string& path, const RecordingMetadata& metadata, std::string& error) {
   stop();
   error_.clear();
+  if (error = recording_output_problem(path); !error.empty()) return false;
   writer_ = RecordingWriter::create(path, metadata, link_clock_ns(), error);
   if (!writer_) return false;
   path_ = path;

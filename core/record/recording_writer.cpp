@@ -1,8 +1,12 @@
 #include "core/record/recording_writer.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 namespace ydscope {
 namespace {
@@ -18,6 +22,26 @@ std::string write_error_sentence(const std::string& path, const std::string& wha
 }
 
 }  // namespace
+
+std::string recording_output_problem(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0) {
+    if (S_ISDIR(info.st_mode))
+      return "cannot record to " + path + ": it is a folder; give a file name such as " +
+             (std::filesystem::path(path) / "bench.ydrec").string();
+    if (!S_ISREG(info.st_mode))
+      return "cannot record to " + path + ": it is not a regular file (a device or a pipe), and a recording " +
+             "must be read back; give a file name such as bench.ydrec";
+    return {};
+  }
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string folder = parent.empty() ? "." : parent.string();
+  if (::stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
+    return "cannot record to " + path + ": the folder " + folder + " does not exist; create it or choose another";
+  if (::access(folder.c_str(), W_OK) != 0)
+    return "cannot record to " + path + ": the folder " + folder + " is not writable; choose a folder you can write to";
+  return {};
+}
 
 RecordingWriter::RecordingWriter(std::FILE* file, std::string path, std::int64_t start_ns)
     : file_(file), path_(std::move(path)), start_ns_(start_ns) {}

@@ -18,6 +18,12 @@
 
 namespace ydscope {
 
+// Why `path` cannot take a recording, in one sentence; empty when it can. A recording must be a
+// regular file it can be read back from: a folder, a device such as /dev/null or a pipe is
+// refused, and so is a path whose folder is missing or not writable. The session checks it when
+// a recording starts, the CLI before it connects, so a user hears it at once.
+std::string recording_output_problem(const std::string& path);
+
 class RecordingWriter {
  public:
   static constexpr std::int64_t kFlushInterval = 100'000'000;  // ns of recorded time
@@ -25,7 +31,8 @@ class RecordingWriter {
   // Creates (or truncates) `path`, writes the file header and `metadata` as the first record.
   // `start_ns` is t=0 on the clock that append() timestamps use (the steady clock, as Lap
   // rx_ns). A missing start_wall_time is filled with the current time. Null plus one sentence in
-  // `error` on failure.
+  // `error` on failure. Any path the OS can write is taken (tests write /dev/full); sessions
+  // check recording_output_problem() first.
   static std::unique_ptr<RecordingWriter> create(const std::string& path, RecordingMetadata metadata,
                                                  std::int64_t start_ns, std::string& error);
   ~RecordingWriter();  // close()

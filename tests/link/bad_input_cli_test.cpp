@@ -164,6 +164,34 @@ TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
   EXPECT_EQ(decoded.out, run_cli_apart("decode --model G6 --distance-scale 0.5 '" + demo_recording() + "'").out);
 }
 
+// record --out /dev/null once recorded for a second and then failed with "/dev/null is not a
+// ydscope recording": the output is checked before anything connects (the port here does not
+// exist, so any other failure would name it).
+TEST_F(BadInputCli, RecordChecksItsOutputBeforeStarting) {
+  const std::string port = "/dev/ttyDOESNOTEXIST9";
+  struct Case {
+    std::string out;
+    std::string sentence;
+  };
+  const std::vector<Case> cases{
+      {"/dev/null", "cannot record to /dev/null: it is not a regular file (a device or a pipe), and a recording must "
+                    "be read back; give a file name such as bench.ydrec"},
+      {dir_.string(), "cannot record to " + dir_.string() + ": it is a folder; give a file name such as " +
+                          (dir_ / "bench.ydrec").string()},
+      {path("missing/x.ydrec"), "cannot record to " + path("missing/x.ydrec") + ": the folder " + path("missing") +
+                                    " does not exist; create it or choose another"},
+  };
+  for (const Case& c : cases) {
+    for (const std::string force : {"", " --force"}) {
+      const auto run = run_cli_apart("record --port " + port + " --out '" + c.out + "'" + force);
+      EXPECT_EQ(run.status, 2) << c.out << force;
+      EXPECT_EQ(run.err, "ydscope-cli record: " + c.sentence + "\n") << force;
+      EXPECT_EQ(run.out, "");
+    }
+  }
+  EXPECT_FALSE(fs::exists(path("missing")));
+}
+
 // decode without --model once said "missing required option --model" for these.
 TEST_F(BadInputCli, DecodeChecksTheFileBeforeAskingForAModel) {
   auto run = run_cli_apart("decode '" + dir_.string() + "'");

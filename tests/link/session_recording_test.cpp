@@ -6,6 +6,7 @@
 
 #include "core/protocol/scan_decoder.h"
 #include "core/record/recording_reader.h"
+#include "core/record/recording_writer.h"
 #include "session_test_support.h"
 
 namespace ydscope {
@@ -62,6 +63,19 @@ TEST(SessionRecording, RecordsBothDirectionsAndTheDeviceMetadata) {
   EXPECT_GE(decoded_laps + 2, session_laps);
   EXPECT_GE(decoded_laps, 8u);
   std::filesystem::remove(path);
+}
+
+// The app records through the session: a device or a folder is refused at once, with the
+// sentence the CLI gives, instead of a file that cannot be read back.
+TEST(SessionRecording, RefusesAnOutputThatIsNotARegularFile) {
+  Session session(4);
+  for (const std::string& path : {std::string("/dev/null"), std::filesystem::temp_directory_path().string()}) {
+    const CommandResult started = run_command([&](CommandCallback done) { session.start_recording(path, done); });
+    EXPECT_FALSE(started.ok) << path;
+    EXPECT_EQ(started.message, recording_output_problem(path));
+    EXPECT_NE(started.message.find("cannot record to " + path + ": it is "), std::string::npos) << started.message;
+    EXPECT_FALSE(session.snapshot().recording);
+  }
 }
 
 }  // namespace
