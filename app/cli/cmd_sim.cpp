@@ -49,7 +49,7 @@ Faults (all off by default; every injected fault is counted):
   --lose-packets RATE    never send a non-zero scan packet, with probability RATE per packet (on
                          G1 the lap's CRC8 check then fails on the host).
   --stall-ms N           stop sending for N ms (packets and replies due then are lost) ...
-  --stall-every-ms M     ... every M ms of scanning (both needed).
+  --stall-every-ms M     ... every M ms of scanning (both needed; N < M).
   --health-bits N        raise health bits (0..255): G1 status bits in A5 92 and in CT; G6/TG
                          A5 91 status 2 (error) with N as the error code.
   --junk N               send N junk bytes in front of every reply header.
@@ -104,6 +104,9 @@ int run_sim(std::span<const std::string> raw) {
   faults.stall_every_ms = args.integer("stall-every-ms", 0, 86'400'000).value_or(0);
   if ((faults.stall_ms > 0) != (faults.stall_every_ms > 0))
     throw UsageError("--stall-ms and --stall-every-ms go together: give both or neither");
+  if (faults.stall_ms > 0 && faults.stall_ms >= faults.stall_every_ms)  // a stall that never ends
+    throw UsageError("--stall-ms (" + std::to_string(faults.stall_ms) + ") must be shorter than --stall-every-ms (" +
+                     std::to_string(faults.stall_every_ms) + "), or the virtual lidar never sends again");
   faults.health_bits = static_cast<std::uint8_t>(args.integer("health-bits", 0, 255).value_or(0));
   faults.junk_before_reply = static_cast<std::uint32_t>(args.integer("junk", 0, 4096).value_or(0));
   options.unplug_after = std::chrono::milliseconds(args.integer("unplug-after-ms", 0, 86'400'000).value_or(0));

@@ -21,6 +21,10 @@ std::optional<LinkAddress> parse_tcp(std::string_view original, std::string_view
       return std::nullopt;
     }
     host = rest.substr(1, close - 1);
+    if (host.find('[') != std::string_view::npos) {  // tcp://[[a]:1 once became host "[a"
+      error = "bad address " + quoted + ": a bracketed host cannot hold another '[' (write tcp://[::1]:2000)";
+      return std::nullopt;
+    }
     const std::string_view after = rest.substr(close + 1);
     if (after.empty() || after.front() != ':') {
       error = "bad address " + quoted + ": missing ':port' (write tcp://host:port, e.g. tcp://192.168.1.20:2000)";
@@ -37,6 +41,10 @@ std::optional<LinkAddress> parse_tcp(std::string_view original, std::string_view
     port_text = rest.substr(colon + 1);
     if (host.find(':') != std::string_view::npos) {
       error = "bad address " + quoted + ": put an IPv6 host in brackets, e.g. tcp://[::1]:2000";
+      return std::nullopt;
+    }
+    if (host.find_first_of("[]") != std::string_view::npos) {
+      error = "bad address " + quoted + ": brackets go around a whole IPv6 host, e.g. tcp://[::1]:2000";
       return std::nullopt;
     }
   }

@@ -59,6 +59,10 @@ TEST(LinkAddress, ErrorsNameTheProblem) {
       {"tcp://::1:2000", "brackets"},
       {"tcp://[::1", "missing ']'"},
       {"tcp://[::1]2000", "missing ':port'"},
+      {"tcp://[[a]:1", "cannot hold another '['"},  // issue 17: was host "[a", printed as tcp://[a:1
+      {"tcp://[a[b]:1", "cannot hold another '['"},
+      {"tcp://a]:1", "brackets go around a whole IPv6 host"},
+      {"tcp://[a]]:1", "missing ':port'"},
       {"udp://host:2000", "unknown scheme 'udp'"},
   };
   for (const auto& bad : cases) {

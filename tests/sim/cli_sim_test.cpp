@@ -185,6 +185,17 @@ TEST(CliSim, NeedsExactlyOneTransport) {
   EXPECT_EQ(both.wait(10s), 2);
 }
 
+// Issue 17: a stall as long as its period was accepted, and the virtual lidar went silent for good.
+TEST(CliSim, AStallMustBeShorterThanItsPeriod) {
+  for (const char* stall : {"1000", "1500"}) {
+    Child child({"sim", "--model", "G6", "--pty", "/tmp/ydscope-never", "--stall-ms", stall, "--stall-every-ms", "1000"});
+    EXPECT_EQ(child.wait(10s), 2) << stall;
+    EXPECT_EQ(child.read_stderr(), "ydscope-cli sim: --stall-ms (" + std::string(stall) +
+                                       ") must be shorter than --stall-every-ms (1000), or the virtual lidar never "
+                                       "sends again\n");
+  }
+}
+
 TEST(CliSim, HelpExplainsEveryFaultOption) {
   Child child({"sim", "--help"});
   EXPECT_EQ(child.wait(10s), 0);
