@@ -15,8 +15,8 @@ namespace {
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli ports [--format table|json]
 
 Lists the serial ports a lidar may be on: /dev/serial/by-id/* (names that survive re-plugging),
-/dev/ydlidar (made by assets/99-ydlidar.rules), /dev/ttyUSB* and /dev/ttyACM*, with the USB vendor:product id, manufacturer, product, serial
-number and driver that the system reports. Ports on the USB-serial chips YDLIDAR boards use
+/dev/ydlidar-* (made by the udev rule 70-ydlidar.rules), /dev/ttyUSB* and /dev/ttyACM*, with the
+USB vendor:product id, manufacturer, product, serial number and driver that the system reports. Ports on the USB-serial chips YDLIDAR boards use
 (CP210x 10c4:ea60, CH340 1a86:7523, CH9102 1a86:55d4) come first and are marked "lidar?".
 Pass the PORT column to --port of the other commands.
 

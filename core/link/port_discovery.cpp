@@ -129,15 +129,23 @@ std::vector<SerialPortInfo> PortDiscovery::list() const {
     if (port.path.empty()) port.path = (fs::path(dev_root_) / name).string();
     if (port.by_id.empty()) port.by_id = link.string();
   }
-  const fs::path alias = fs::path(dev_root_) / "ydlidar";
-  if (const fs::path target = fs::canonical(alias, ec); !ec) {
+  // Names the udev rule makes: /dev/ydlidar-SERIAL per bridge, or /dev/ydlidar from older rules.
+  std::vector<fs::path> aliases;
+  for (const auto& entry : fs::directory_iterator(dev_root_, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "ydlidar" || name.rfind("ydlidar-", 0) == 0) aliases.push_back(entry.path());
+  }
+  std::sort(aliases.begin(), aliases.end());
+  for (const auto& alias : aliases) {
+    std::error_code resolve_error;
+    const fs::path target = fs::canonical(alias, resolve_error);
+    if (resolve_error) continue;
     const std::string name = target.filename().string();
-    if (is_candidate_name(name)) {
-      SerialPortInfo& port = by_name[name];
-      port.name = name;
-      if (port.path.empty()) port.path = (fs::path(dev_root_) / name).string();
-      port.alias = alias.string();
-    }
+    if (!is_candidate_name(name)) continue;
+    SerialPortInfo& port = by_name[name];
+    port.name = name;
+    if (port.path.empty()) port.path = (fs::path(dev_root_) / name).string();
+    if (port.alias.empty()) port.alias = alias.string();
   }
   std::vector<SerialPortInfo> ports;
   for (auto& [name, port] : by_name) {

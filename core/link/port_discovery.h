@@ -1,6 +1,6 @@
 #pragma once
-// Lists the serial ports a lidar may be on: /dev/serial/by-id/* (stable names), /dev/ydlidar
-// (made by assets/99-ydlidar.rules), /dev/ttyUSB*, /dev/ttyACM*, with the USB identity sysfs knows (vendor/product id, manufacturer, product,
+// Lists the serial ports a lidar may be on: /dev/serial/by-id/* (stable names), /dev/ydlidar-*
+// (made by assets/70-ydlidar.rules; /dev/ydlidar by older versions of it), /dev/ttyUSB*, /dev/ttyACM*, with the USB identity sysfs knows (vendor/product id, manufacturer, product,
 // serial, driver). The roots are parameters so tests can point it at a fake /dev and /sys.
 #include <cstdint>
 #include <optional>
@@ -12,7 +12,7 @@ namespace ydscope {
 struct SerialPortInfo {
   std::string path;   // device node, e.g. /dev/ttyUSB0
   std::string by_id;  // stable /dev/serial/by-id/... name pointing at it, if any
-  std::string alias;  // /dev/ydlidar when the udev rule points it here
+  std::string alias;  // /dev/ydlidar-SERIAL (or the older /dev/ydlidar) when the udev rule points it here
   std::string name;   // ttyUSB0
   std::optional<std::uint16_t> vendor_id;
   std::optional<std::uint16_t> product_id;

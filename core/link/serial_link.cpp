@@ -24,8 +24,9 @@ std::string serial_open_error(const std::string& path, int errno_value) {
       return head + "no such device; is the lidar plugged in? 'ydscope-cli ports' lists serial ports";
     case EACCES:
     case EPERM:
-      return head + "permission denied; add yourself to the dialout group (then log in again) or "
-                    "copy assets/99-ydlidar.rules to /etc/udev/rules.d";
+      return head + "permission denied; add yourself to the dialout group (then log in again), or install "
+                    "ydscope's udev rule /usr/lib/udev/rules.d/70-ydlidar.rules (in the .deb; by hand from "
+                    "assets/70-ydlidar.rules), which gives the logged-in user the port";
     case EBUSY:
       return head + "the port is busy; close the other program using it";
     case ENOTTY:

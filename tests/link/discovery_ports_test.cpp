@@ -135,6 +135,19 @@ TEST_F(FakeSystem, UdevAliasJoinsItsPort) {
             (dev() / "serial/by-id/usb-Silicon_Labs_CP2102-if00-port0").string());
 }
 
+TEST_F(FakeSystem, PerBridgeUdevNamesJoinTheirPorts) {
+  node("ttyUSB0");
+  node("ttyUSB1");
+  fs::create_symlink("ttyUSB1", dev() / "ydlidar-0001");
+  fs::create_symlink("ttyUSB0", dev() / "ydlidar-pci-0000_00_14_0-usb-0_2_1_0");
+  fs::create_symlink("ttyUSB7", dev() / "ydlidar-gone");  // dangling: that bridge was unplugged
+  const auto ports = PortDiscovery(dev().string(), sys().string()).list();
+  ASSERT_EQ(ports.size(), 2u);
+  EXPECT_EQ(ports[0].alias, (dev() / "ydlidar-pci-0000_00_14_0-usb-0_2_1_0").string());
+  EXPECT_EQ(ports[1].alias, (dev() / "ydlidar-0001").string());
+  EXPECT_EQ(ports[1].preferred_path(), (dev() / "ydlidar-0001").string());
+}
+
 TEST_F(FakeSystem, NoPortsAndMissingFoldersAreJustEmpty) {
   EXPECT_TRUE(PortDiscovery(dev().string(), sys().string()).list().empty());
   EXPECT_TRUE(PortDiscovery((root_ / "nope").string(), (root_ / "nosys").string()).list().empty());
