@@ -1,7 +1,9 @@
-# Debian packages ydscope needs, installed only when missing. Sourced by scripts/test and scripts/run.
+# Debian packages ydscope needs, installed only when missing. Sourced by scripts/test, scripts/run
+# and scripts/package.
 ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev)
 ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
 ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core)
+ydscope_packages_package=(help2man dpkg-dev fakeroot file lintian appstream)
 # libFuzzer and the sanitizer runtimes come with Debian's clang (scripts/fuzz, scripts/test --fuzz).
 ydscope_packages_fuzz=(clang-14 libclang-rt-14-dev)
 
