@@ -75,7 +75,8 @@ Session::Impl::Impl(LapQueue& queue, WakeFn wake)
       link_(io_, counters_),
       sequencer_(link_),
       signal_(io_),
-      tick_(io_) {
+      tick_(io_),
+      port_watch_(io_) {
   link_.on_fault([this] { notify(); });
   link_.on_stream([this](std::span<const std::uint8_t> bytes, std::int64_t rx_ns) { return on_stream(bytes, rx_ns); });
   thread_ = std::thread([this] { run_thread(); });

@@ -42,7 +42,10 @@ struct SessionConfig {
   std::optional<std::uint32_t> baud;  // empty: the model's default (230400 when the model is unknown)
   bool probe_baud = false;            // try kProbeBauds (starting with `baud` if given) until A5 90 answers
   bool scan = true;                   // start scanning after start-up; false for info / set
-  bool reconnect = true;              // after a fault, reopen with backoff (0.25 s doubling to 4 s)
+  bool reconnect = true;              // after a fault, reopen with backoff; a serial port that comes
+                                      // back (see PortWatch) ends the wait at once
+  std::chrono::milliseconds first_backoff{250};  // doubling after each failed reopen ...
+  std::chrono::milliseconds max_backoff{4000};   // ... up to this (a TCP bridge: at most 750 ms)
   std::optional<double> distance_scale;  // overrides the profile's mm per count
   std::chrono::milliseconds reply_timeout{1000};
   int command_attempts = 2;                      // sends per command before it is reported failed

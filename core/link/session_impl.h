@@ -16,6 +16,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include "core/link/command_sequencer.h"
+#include "core/link/port_watch.h"
 #include "core/link/session.h"
 #include "core/link/session_io.h"
 #include "core/link/session_recorder.h"
@@ -78,6 +79,8 @@ class Session::Impl {
   CommandSequencer sequencer_;
   boost::asio::steady_timer signal_;  // the supervisor's wait; notify() ends it early
   boost::asio::steady_timer tick_;    // watchdog, rates, power-down keepalive
+  PortWatch port_watch_;              // ends a reconnect's backoff when the serial port comes back
+  bool port_changed_ = false;
 
   // I/O thread only.
   bool stopping_ = false;

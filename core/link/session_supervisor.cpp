@@ -21,8 +21,19 @@ namespace asio = boost::asio;
 using namespace std::chrono_literals;
 
 namespace {
-constexpr std::chrono::milliseconds kFirstBackoff{250};
-constexpr std::chrono::milliseconds kMaxBackoff{4000};
+// A serial port's return is seen by the PortWatch at once, so its timer is only the fallback and
+// for faults that are not a missing port. A TCP bridge cannot be watched: its backoff stays short
+// enough that a restarted bridge is used again within a second (a refused connect costs nothing).
+constexpr std::chrono::milliseconds kMaxTcpBackoff{750};
+
+// The serial device path a session opens, when it opens one (not TCP, not a test's own opener).
+std::optional<std::string> watchable_path(const SessionConfig& config) {
+  if (config.open_link) return std::nullopt;
+  std::string ignored;
+  const auto address = parse_link_address(config.address, ignored);
+  if (!address || address->kind != LinkAddress::Kind::Serial) return std::nullopt;
+  return address->path;
+}
 
 std::string seconds_text(std::chrono::milliseconds duration) {
   char text[16];
@@ -92,11 +103,11 @@ void Session::Impl::spawn_supervisor() {
 
 asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
   sequencer_.configure(config.reply_timeout, config.command_attempts);
-  auto delay = kFirstBackoff;
+  auto delay = config.first_backoff;
   while (!disconnect_requested_ && !stopping_) {
     std::string error;
     if (co_await connect_and_start(config, error)) {
-      delay = kFirstBackoff;
+      delay = config.first_backoff;
       co_await serve();
       if (disconnect_requested_ || stopping_) break;
       error = link_.fault().empty() ? "the link closed" : link_.fault();
@@ -108,10 +119,18 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
       set_state(LinkState::Failed, error);
       co_return;
     }
-    set_state(LinkState::Reconnecting, error + "; retrying in " + seconds_text(delay));
+    const auto port_path = watchable_path(config);
+    const bool watching = port_path && port_watch_.arm(*port_path, [this] {
+      port_changed_ = true;
+      notify();
+    });
+    set_state(LinkState::Reconnecting, error + (watching ? "; retrying when " + *port_path + " comes back, or in "
+                                                         : "; retrying in ") + seconds_text(delay));
     co_await backoff(delay);
+    port_watch_.disarm();
     counters_.add_reconnect();
-    delay = std::min(delay * 2, kMaxBackoff);
+    const bool tcp = !port_path && !config.open_link;
+    delay = std::min(delay * 2, tcp ? std::min(config.max_backoff, kMaxTcpBackoff) : config.max_backoff);
   }
   if (link_.attached() && !stopping_) {
     if (link_.device_scanning()) {  // leave the lidar stopped, as we found it
@@ -126,7 +145,8 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
 
 asio::awaitable<void> Session::Impl::backoff(std::chrono::milliseconds duration) {
   const auto deadline = std::chrono::steady_clock::now() + duration;
-  while (!disconnect_requested_ && !stopping_ && std::chrono::steady_clock::now() < deadline) {
+  port_changed_ = false;
+  while (!disconnect_requested_ && !stopping_ && !port_changed_ && std::chrono::steady_clock::now() < deadline) {
     signal_.expires_at(deadline);
     boost::system::error_code ec;
     co_await signal_.async_wait(asio::redirect_error(asio::use_awaitable, ec));

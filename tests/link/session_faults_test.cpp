@@ -32,6 +32,31 @@ TEST(SessionFaults, UnplugAndReplugRecoversByItself) {
   EXPECT_EQ(sim.counters().device.ignored_during_scan, 0u);
 }
 
+TEST(SessionFaults, APortThatComesBackEndsTheBackoffAtOnce) {
+  SimOnPty sim(Model::G6);
+  Session session(64);
+  SessionConfig config = config_for(sim.port(), Model::G6);
+  // A minute between attempts: only the port watch can bring the session back within kPatience.
+  config.first_backoff = 60s;
+  config.max_backoff = 60s;
+  session.connect(config);
+  ASSERT_EQ(take_laps(session, 2), 2u) << describe_snapshot(session.snapshot());
+
+  sim.server().unplug();
+  const SessionSnapshot lost = session.wait_until(
+      [](const SessionSnapshot& s) { return s.state == LinkState::Reconnecting; }, kPatience);
+  ASSERT_EQ(lost.state, LinkState::Reconnecting) << describe_snapshot(lost);
+  EXPECT_NE(lost.message.find("retrying when " + sim.port() + " comes back"), std::string::npos) << lost.message;
+
+  sim.server().replug();
+  const SessionSnapshot back = wait_for_state(session, LinkState::Scanning);
+  ASSERT_EQ(back.state, LinkState::Scanning) << describe_snapshot(back);
+  Lap lap;
+  while (session.laps().try_pop(lap)) {
+  }
+  EXPECT_EQ(take_laps(session, 2), 2u) << describe_snapshot(session.snapshot());
+}
+
 TEST(SessionFaults, AStalledStreamIsNoticedAndTheScanRestarts) {
   SimOnPty sim(Model::TG30);
   Session session(64);
