@@ -7,7 +7,7 @@ virtual lidar. Run by hand when the formats change; the outputs are committed.
     (the same for G6 and TG30)
     fuzz/make_seeds.py /tmp/g1.ydrec /tmp/g6.ydrec /tmp/tg30.ydrec
 
-The real captures (../shared/captures) and assets/demo-g6.ydrec are added by scripts/fuzz at run
+The real captures (tests/data/captures) and assets/demo-g6.ydrec are added by scripts/fuzz at run
 time instead of being copied here.
 """
 import pathlib
