@@ -52,19 +52,26 @@ the first zero packet and a cut-off packet at the end are not part of any lap.
 
 jsonl schema, one object per line:
   {"type":"lap","index":I,"points":[[angle_deg,range_mm,flag],...],"scan_hz":F|null,
-   "health":H|null,"crc_ok":true|false|null,"packets":N,"checksum_errors":E}
+   "health":H|null,"crc_ok":true|false|null,"packets":N,"checksum_errors":E[,"cut_points":C]}
     index            0 for the first complete lap
     points           in received order; angle corrected (both levels of the manuals) in [0,360)
                      with 4 decimals, range in mm with up to 2 decimals (0 = no return), flag S&3 on
                      G1 and 0 otherwise
     scan_hz, health  G1 CT information (scan frequency of the zero packet, health bits of packet 3);
                      null on other models, when the packet was missing, or when crc_ok is false
-    crc_ok           G1: whether the CRC8 of the lap's CT bytes matched the LastCRC byte; else null
+    crc_ok           G1: whether the CRC8 of the lap's CT bytes matched the LastCRC byte; null on
+                     other models and when no byte lay between the lap's last packet and the zero
+                     packet that closes it (nothing to check: scan_hz and health are then kept,
+                     unverified). With several bytes there, the one right before the zero packet
+                     is the LastCRC.
     packets          valid packets in the lap
     checksum_errors  packets of this lap dropped for a bad checksum
-  {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L}
+    cut_points       only present when the lap held more than 24000 points (a stream whose zero
+                     packets were lost): how many points beyond that were dropped
+  {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L[,"cut_points":C]}
     bytes            bytes read; packets: packets with a valid checksum; zero_packets: those with
-                     CT bit 0 set; laps: complete laps
+                     CT bit 0 set; laps: complete laps; cut_points (only when not 0): points
+                     dropped from over-long laps, the partial lap included
 
 exit status: 0 the input was read to the end; 1 reading failed; 2 usage error (unknown model,
 missing file, bad option, a recording of a version or header this ydscope cannot read).

@@ -108,6 +108,10 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
   out.integer(lap.packets);
   out.raw(R"(,"checksum_errors":)");
   out.integer(lap.checksum_errors);
+  if (lap.cut_points > 0) {  // only a damaged stream: a sound lap's line stays as it was
+    out.raw(R"(,"cut_points":)");
+    out.integer(lap.cut_points);
+  }
   out.raw("}\n");
   out.maybe_flush();
 }
@@ -123,6 +127,10 @@ void write_summary(JsonOut& out, const DecoderCounters& c) {
   out.integer(c.zero_packets);
   out.raw(R"(,"laps":)");
   out.integer(c.laps);
+  if (c.overflow_points > 0) {
+    out.raw(R"(,"cut_points":)");
+    out.integer(c.overflow_points);
+  }
   out.raw("}\n");
 }
 

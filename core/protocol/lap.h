@@ -17,7 +17,9 @@ struct LapPoint {
 };
 
 // Verdict of G1's CRC8 over the lap's CT bytes, compared with the LastCRC byte that closes it.
-enum class CrcVerdict : std::uint8_t { NotApplicable, Ok, Mismatch };
+// Unknown: no byte lay between the lap's last packet and the closing zero packet, so there was
+// nothing to compare with (the CT information is kept, but unverified).
+enum class CrcVerdict : std::uint8_t { NotApplicable, Ok, Mismatch, Unknown };
 
 struct FirmwareVersion {
   std::uint8_t major = 0;
@@ -25,7 +27,8 @@ struct FirmwareVersion {
 };
 
 struct Lap {
-  // Enough for the slowest scan at the fastest ranging rate (18 kHz at 1 Hz) with headroom.
+  // Enough for the slowest scan at the fastest ranging rate (18 kHz at 1 Hz) with headroom; a
+  // lap longer than that (a stream whose zero packets were lost) is cut and says how much.
   static constexpr std::size_t kMaxPoints = 24000;
 
   std::uint64_t index = 0;         // 0 for the first complete lap of a stream
@@ -37,6 +40,7 @@ struct Lap {
   CrcVerdict crc = CrcVerdict::NotApplicable;
   std::uint32_t packets = 0;          // valid scan packets in this lap
   std::uint32_t checksum_errors = 0;  // packets of this lap dropped for a bad checksum
+  std::uint32_t cut_points = 0;       // samples beyond kMaxPoints, dropped (only a damaged stream)
   std::int64_t first_rx_ns = 0;       // steady-clock receive time of the lap's first byte
   std::int64_t last_rx_ns = 0;        // receive time of the byte that closed the lap
 

@@ -46,6 +46,7 @@ void LapAssembler::start_lap(const PacketView& zero) {
   building_.crc = CrcVerdict::NotApplicable;
   building_.packets = 0;
   building_.checksum_errors = 0;
+  building_.cut_points = 0;
   building_.first_rx_ns = zero.first_rx_ns;
   building_.last_rx_ns = zero.rx_ns;
   packet_index_ = 0;
@@ -58,10 +59,16 @@ bool LapAssembler::add_packet(const PacketView& packet) {
   if (packet.lap_start()) {
     if (in_lap_) {
       if (profile_->last_crc_before_zero) {
-        // A missing LastCRC byte means the stream lost bytes, so the lap cannot be vouched for.
-        const bool ok = packet.last_crc && *packet.last_crc == crc_;
-        building_.crc = ok ? CrcVerdict::Ok : CrcVerdict::Mismatch;
-        ++(ok ? counters_.crc_ok : counters_.crc_mismatches);
+        // Without a LastCRC byte there is nothing to compare with: the verdict is unknown, not
+        // a failure (the README's schema: null where absent).
+        if (!packet.last_crc) {
+          building_.crc = CrcVerdict::Unknown;
+          ++counters_.crc_unknown;
+        } else {
+          const bool ok = *packet.last_crc == crc_;
+          building_.crc = ok ? CrcVerdict::Ok : CrcVerdict::Mismatch;
+          ++(ok ? counters_.crc_ok : counters_.crc_mismatches);
+        }
       }
       building_.last_rx_ns = packet.rx_ns;
       std::swap(building_, done_);
@@ -107,6 +114,7 @@ void LapAssembler::add_points(const PacketView& packet) {
   const std::size_t room = Lap::kMaxPoints - std::min(building_.points.size(), Lap::kMaxPoints);
   if (count > room) {
     counters_.overflow_points += count - room;
+    building_.cut_points += static_cast<std::uint32_t>(count - room);
     count = room;
   }
   const unsigned flag_bits = profile_->flag_bits;

@@ -27,7 +27,10 @@ struct PacketView {
   std::uint16_t fsa = 0;
   std::uint16_t lsa = 0;
   const std::uint8_t* sample_bytes = nullptr;  // 2*lsn bytes, little-endian u16 each
-  // G1: the LastCRC byte that preceded this zero packet; empty when none did (or not G1).
+  // G1: the LastCRC byte that preceded this zero packet; empty when none did (or not G1). When
+  // several bytes lie between the previous packet and the zero packet, the last one (right
+  // before the AA 55) is taken: the device sends LastCRC immediately before the zero packet,
+  // so earlier bytes are junk.
   std::optional<std::uint8_t> last_crc;
   std::int64_t first_rx_ns = 0;  // receive time of the chunk holding the packet's first byte
   std::int64_t rx_ns = 0;        // receive time of the chunk that completed it

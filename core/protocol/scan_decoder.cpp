@@ -53,6 +53,7 @@ DecoderCounters ScanDecoder::counters() const {
   c.discarded_packets = l.discarded_packets;
   c.crc_ok = l.crc_ok;
   c.crc_mismatches = l.crc_mismatches;
+  c.crc_unknown = l.crc_unknown;
   c.overflow_points = l.overflow_points;
   return c;
 }

@@ -25,6 +25,7 @@ struct DecoderCounters {
   std::uint64_t discarded_packets = 0; // packets before the first zero packet (partial lap)
   std::uint64_t crc_ok = 0;            // G1 laps whose CT CRC8 matched
   std::uint64_t crc_mismatches = 0;    // G1 laps whose CT CRC8 did not match
+  std::uint64_t crc_unknown = 0;       // G1 laps closed without a LastCRC byte
   std::uint64_t overflow_points = 0;   // points dropped from laps longer than Lap::kMaxPoints
 };
 

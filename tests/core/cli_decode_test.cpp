@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/protocol/lap.h"
 #include "core/protocol/reply.h"
 #include "protocol_test_support.h"
 
@@ -156,6 +157,43 @@ TEST(CliDecode, CrcMismatchNullsTheCtInformation) {
   const auto run = run_cli("decode --model G1 '" + path + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find(R"("scan_hz":null,"health":null,"crc_ok":false,)"), std::string::npos) << run.out;
+  std::filesystem::remove(path);
+}
+
+// Issue 17: with no LastCRC byte before the closing zero packet, crc_ok was false; it is unknown.
+TEST(CliDecode, MissingLastCrcIsNullNotFalse) {
+  test::G1LapSpec spec;
+  Bytes stream;
+  test::append_g1_lap(stream, spec, 0x00);
+  Bytes next;
+  test::append_g1_lap(next, spec, 0x00);
+  append(stream, Bytes(next.begin() + 1, next.end()));  // no byte between the last packet and the zero packet
+  test::append_g1_lap(stream, spec, 0x00);
+  const std::string path = write_temp("g1nocrc.bin", stream);
+  const auto run = run_cli("decode --model G1 '" + path + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto all = lines(run.out);
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_NE(all[0].find(R"("scan_hz":9.6,"health":32,"crc_ok":null,)"), std::string::npos) << all[0];
+  EXPECT_NE(all[1].find(R"("crc_ok":true,)"), std::string::npos) << all[1];
+  std::filesystem::remove(path);
+}
+
+// Issue 17: 110 packets of 255 samples came out as 24000 points without a word.
+TEST(CliDecode, AnOverlongLapSaysHowManyPointsWereCut) {
+  Bytes stream = test::packet(kCtLapStart, 0.0, 0.0, {40});
+  for (int i = 0; i < 110; ++i) append(stream, test::packet(0, 10.0, 20.0, std::vector<std::uint16_t>(255, 400)));
+  append(stream, test::packet(kCtLapStart, 0.0, 0.0, {40}));
+  const std::string path = write_temp("long.bin", stream);
+  const auto run = run_cli("decode --model G6 '" + path + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto all = lines(run.out);
+  ASSERT_EQ(all.size(), 2u);
+  const std::size_t cut = 1 + 110 * 255 - Lap::kMaxPoints;  // 4051
+  EXPECT_NE(all[0].find(R"("packets":111,"checksum_errors":0,"cut_points":)" + std::to_string(cut) + "}"),
+            std::string::npos)
+      << all[0].substr(all[0].size() - 120);
+  EXPECT_NE(all[1].find(R"("laps":1,"cut_points":)" + std::to_string(cut) + "}"), std::string::npos) << all[1];
   std::filesystem::remove(path);
 }
 

@@ -229,7 +229,8 @@ TEST(G1, LostPacketMakesTheCrcFail) {
   EXPECT_FALSE(decoded.laps[1].ct_info_trusted());
 }
 
-TEST(G1, MissingLastCrcByteIsAMismatch) {
+// Issue 17: this was a Mismatch (crc_ok false), but with no byte there is nothing to compare.
+TEST(G1, MissingLastCrcByteIsAnUnknownVerdict) {
   test::G1LapSpec spec;
   Bytes stream;
   test::append_g1_lap(stream, spec, 0x00);
@@ -239,7 +240,11 @@ TEST(G1, MissingLastCrcByteIsAMismatch) {
   test::append_g1_lap(stream, spec, 0x00);
   const auto decoded = decode(profile_for(Model::G1), stream);
   ASSERT_EQ(decoded.laps.size(), 2u);
-  EXPECT_EQ(decoded.laps[0].crc, CrcVerdict::Mismatch);
+  EXPECT_EQ(decoded.laps[0].crc, CrcVerdict::Unknown);
+  EXPECT_TRUE(decoded.laps[0].ct_info_trusted());
+  EXPECT_EQ(decoded.laps[1].crc, CrcVerdict::Ok);
+  EXPECT_EQ(decoded.counters.crc_unknown, 1u);
+  EXPECT_EQ(decoded.counters.crc_mismatches, 0u);
 }
 
 TEST(Laps, PointStorageIsBounded) {
@@ -253,6 +258,8 @@ TEST(Laps, PointStorageIsBounded) {
   ASSERT_EQ(decoded.laps.size(), 1u);
   EXPECT_EQ(decoded.laps[0].points.size(), Lap::kMaxPoints);
   EXPECT_EQ(decoded.counters.overflow_points, 1 + packets * 255 - Lap::kMaxPoints);
+  // Issue 17: the cut was silent; the lap itself now says how many points it lost.
+  EXPECT_EQ(decoded.laps[0].cut_points, 1 + packets * 255 - Lap::kMaxPoints);
 }
 
 }  // namespace
