@@ -74,15 +74,15 @@ CriterionResult scan_rate(const CheckObservations& o, const AcceptanceLimits& l)
 
 CriterionResult scan_jitter(const CheckObservations& o, const AcceptanceLimits& l) {
   const LapTimingStatistics& t = o.timing;
-  CriterionResult r{"scan_jitter", "scan jitter", "", format_text("at most %.2f %% of the period", l.scan_jitter_max_pct),
+  CriterionResult r{"scan_jitter", "scan jitter", "", format_text("at most %.2f %%", l.scan_jitter_max_pct),
                     Verdict::Fail, std::nullopt};
   if (t.normal_laps < 3) {
     r.measured = format_text("too few laps (%llu)", static_cast<unsigned long long>(t.normal_laps));
     return r;
   }
   r.value = t.jitter_pct;
-  r.measured = format_text("%.2f %% (robust std-dev of %.2f ms periods; plain std-dev %.2f %%)", t.jitter_pct,
-                           1e3 * t.median_period_s, t.period_stddev_pct);
+  r.measured = format_text("%.2f %% (robust std-dev of the samples per lap, %.1f on average)", t.jitter_pct,
+                           t.samples_per_lap);
   r.verdict = within(t.jitter_pct, l.scan_jitter_max_pct) ? Verdict::Pass : Verdict::Fail;
   return r;
 }

@@ -21,17 +21,19 @@ double step_between(double a, double b) {
 // A gap is a step of more than 1.5 samples: quantisation of the packet end angles (1/64 degree)
 // moves a step by far less than half a sample at any rate the lidars support.
 constexpr double kGapSteps = 1.5;
-// A lap lasting more than 1.5 median periods has lost at least one lap start.
+// A lap lasting more than 1.5 median periods (beyond its turns) was not all heard, unless the laps
+// after it make up for the time (a late read, see statistics()); they get this many laps to.
 constexpr double kInterruptionPeriods = 1.5;
+constexpr std::size_t kCatchUpLaps = 8;
 
 }  // namespace
 
 void LapTimingAccumulator::add(const Lap& lap) {
   // Close to close is the same event each time. The lap's own first byte to last byte is not (the
   // zero packet's first byte against the next one's last byte), so a lap without its predecessor
-  // (the first, or one after laps the queue dropped) has no period: it counts for samples only.
+  // (the first, or one after laps the queue dropped) has no period of its own.
   const bool follows = have_previous_ && lap.index == previous_index_ + 1;
-  LapRecord record{lap.last_rx_ns, follows ? lap.last_rx_ns - previous_close_ns_ : 0,
+  LapRecord record{lap.index, lap.last_rx_ns, follows, follows ? lap.last_rx_ns - previous_close_ns_ : 0,
                    static_cast<std::uint32_t>(lap.points.size()), 0, 0.0};
   have_previous_ = true;
   previous_index_ = lap.index;
@@ -61,55 +63,94 @@ void LapTimingAccumulator::add(const Lap& lap) {
   laps_.push_back(record);
 }
 
+namespace {
+
+// Median of (t[i + h] - t[i]) / (count[i + h] - count[i]) with h half the laps: the time per lap
+// over half-run baselines. Theil-Sen restricted to long pairs, so it stays linear in the laps.
+double robust_seconds_per_lap(const std::vector<std::pair<double, double>>& count_and_time) {
+  const std::size_t n = count_and_time.size();
+  if (n < 2) return 0;
+  const std::size_t h = std::max<std::size_t>(1, n / 2);
+  std::vector<double> slopes;
+  for (std::size_t i = 0; i + h < n; ++i) {
+    const double laps = count_and_time[i + h].first - count_and_time[i].first;
+    if (laps > 0) slopes.push_back((count_and_time[i + h].second - count_and_time[i].second) / laps);
+  }
+  return summarize_values(std::span<double>(slopes)).median;
+}
+
+}  // namespace
+
 LapTimingStatistics LapTimingAccumulator::statistics() const {
   LapTimingStatistics s;
   s.laps = laps_.size();
   if (laps_.empty()) return s;
   std::vector<double> periods;
   for (const LapRecord& r : laps_)
-    if (r.period_ns > 0) periods.push_back(static_cast<double>(r.period_ns) * 1e-9);
-  const double median = summarize_values(std::span<double>(periods)).median;
-  s.median_period_s = median;
-  // How many lap periods each lap lasted, by its time and by the angle it covered.
-  const auto periods_spanned = [median](const LapRecord& r) {
-    if (r.period_ns > 0 && median > 0) {
-      const double by_time = static_cast<double>(r.period_ns) * 1e-9 / median;
-      if (by_time > kInterruptionPeriods) return std::max(2.0, std::round(by_time));
+    if (r.timed) periods.push_back(static_cast<double>(r.period_ns) * 1e-9);
+  const double median_period = summarize_values(std::span<double>(periods)).median;
+  // How many lap periods each lap lasted. The angle tells a lost lap start (two turns in one
+  // lap). Time tells laps the lidar sent nothing for (a stall), but a host that read late sees
+  // the same long gap, followed by laps closing in a burst as it catches up. So a gap counts as
+  // silence only for the excess time the next few laps do not make up for.
+  std::vector<double> turns(laps_.size()), excess(laps_.size(), 0.0);
+  for (std::size_t i = 0; i < laps_.size(); ++i) {
+    turns[i] = std::max(1.0, std::round(laps_[i].turns));
+    if (laps_[i].timed && median_period > 0)
+      excess[i] = static_cast<double>(laps_[i].period_ns) * 1e-9 - median_period * turns[i];
+  }
+  std::vector<double> spans(laps_.size());
+  for (std::size_t i = 0; i < laps_.size(); ++i) {
+    double silent = excess[i];
+    double made_up = 0;
+    for (std::size_t j = i + 1; j < laps_.size() && j <= i + kCatchUpLaps && laps_[j].timed; ++j) {
+      made_up += excess[j];
+      silent = std::min(silent, excess[i] + made_up);
     }
-    return std::max(1.0, std::round(r.turns));
-  };
+    const double silent_laps = silent > (kInterruptionPeriods - 1.0) * median_period ? std::round(silent / median_period) : 0.0;
+    spans[i] = turns[i] + std::max(0.0, silent_laps);
+  }
 
-  std::vector<double> normal;
-  double samples = 0, seconds = 0;
+  std::vector<double> samples;                              // per normal lap
+  std::vector<std::pair<double, double>> count_and_time;    // revolutions so far, close time (s)
+  double revolutions = 0;
   const std::int64_t t0 = laps_.front().close_ns;
-  for (const LapRecord& r : laps_) {
+  for (std::size_t i = 0; i < laps_.size(); ++i) {
+    const LapRecord& r = laps_[i];
     s.points += r.points;
-    if (periods_spanned(r) != 1.0) {
+    const double spanned = spans[i];
+    // Laps the queue dropped turned too, and an interrupted lap turned `spanned` times.
+    const double dropped = i ? static_cast<double>(r.index - laps_[i - 1].index - 1) : 0.0;
+    revolutions += dropped + spanned;
+    count_and_time.emplace_back(revolutions, static_cast<double>(r.close_ns - t0) * 1e-9);
+    if (spanned != 1.0) {
       ++s.interruptions;
       continue;
     }
     s.lost_samples += r.missing;
-    if (r.period_ns <= 0) continue;
-    const double period = static_cast<double>(r.period_ns) * 1e-9;
-    normal.push_back(period);
-    samples += r.points + r.missing;
-    seconds += period;
-    s.series.push_back({static_cast<double>(r.close_ns - t0) * 1e-9, 1.0 / period, r.points});
+    samples.push_back(r.points + r.missing);
   }
-  s.normal_laps = normal.size();
-  if (!normal.empty()) {
-    s.samples_per_lap = samples / static_cast<double>(normal.size());
-    s.sample_rate_hz = samples / seconds;
-    const ValueSummary p = summarize_values(std::span<double>(normal));
-    s.mean_hz = 1.0 / p.mean;
-    s.min_hz = 1.0 / p.max;
-    s.max_hz = 1.0 / p.min;
-    s.period_stddev_pct = 100.0 * p.stddev / median;
-    s.jitter_pct = 100.0 * robust_stddev(std::span<double>(normal)) / median;
+  s.normal_laps = samples.size();
+  const double seconds_per_lap = robust_seconds_per_lap(count_and_time);
+  if (seconds_per_lap > 0) s.mean_hz = 1.0 / seconds_per_lap;
+  if (!samples.empty()) {
+    std::vector<double> scratch = samples;
+    const ValueSummary n = summarize_values(std::span<double>(scratch));
+    s.samples_per_lap = n.mean;
+    s.sample_rate_hz = n.mean * s.mean_hz;
+    s.min_hz = n.max > 0 ? s.sample_rate_hz / n.max : 0;
+    s.max_hz = n.min > 0 ? s.sample_rate_hz / n.min : 0;
+    s.jitter_pct = n.median > 0 ? 100.0 * robust_stddev(std::span<double>(scratch)) / n.median : 0;
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < laps_.size(); ++i) {
+      if (spans[i] != 1.0) continue;
+      s.series.push_back({count_and_time[i].second, s.sample_rate_hz / samples[k++], laps_[i].points});
+    }
   }
   // An interrupted lap should have held one normal lap's samples per period it spanned.
-  for (const LapRecord& r : laps_) {
-    const double spanned = periods_spanned(r);
+  for (std::size_t i = 0; i < laps_.size(); ++i) {
+    const LapRecord& r = laps_[i];
+    const double spanned = spans[i];
     if (spanned <= 1.0) continue;
     const double expected = spanned * s.samples_per_lap;
     const double short_by = std::max(0.0, expected - r.points);

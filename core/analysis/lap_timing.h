@@ -1,11 +1,16 @@
 #pragma once
 // How regularly the laps come and how many samples they should have held: the measured scan rate
-// and its lap-to-lap jitter, the sample rate, and an estimate of samples lost on the way.
+// and its lap-to-lap variation, the sample rate, and an estimate of samples lost on the way.
 //
-// The period of a lap is the time between the closing of the lap before it and its own closing, as
-// the host received them (Lap::last_rx_ns): the same event each time, so byte timing cancels. A lap that spans several periods (its
-// closing zero packet was lost, or the stream stalled) is an interruption: it is left out of the
-// rate statistics and its missing samples are counted instead.
+// Host timing is the weak spot: a read that wakes late on a busy machine moves one lap's close by
+// tens of milliseconds. So:
+// - the scan rate is the slope of lap-close times against lap count, the median of the slopes
+//   over half-run baselines: one late read moves few of them, and none by much;
+// - the jitter comes from the lidar itself: its sample clock (the ranging frequency) is steady,
+//   so the samples a lap holds measure how fast the motor turned in that lap. It is the robust
+//   std-dev (robust_stddev) of the samples per lap, in % of their median;
+// - a lap lasting more than 1.5 periods (its closing zero packet was lost, or the stream stalled)
+//   is an interruption: left out of the per-lap figures, its missing samples counted instead.
 //
 // Missing samples are found from the angles: undoing the distance-only second-level correction
 // gives each point's first-level angle, which the lidar spaces evenly, so a gap of k steps means
@@ -19,23 +24,21 @@
 namespace ydscope {
 
 struct LapRateSample {
-  double t_s = 0;       // lap close, seconds after the first lap's close
-  double hz = 0;        // 1 / that lap's period
-  std::uint32_t points = 0;
+  double t_s = 0;            // lap close, seconds after the first lap's close (host clock)
+  double hz = 0;             // that lap's rate: sample rate / its samples
+  std::uint32_t points = 0;  // received
 };
 
 struct LapTimingStatistics {
   std::uint64_t laps = 0;           // laps added
-  std::uint64_t normal_laps = 0;    // laps of one known period, used for the rate statistics
+  std::uint64_t normal_laps = 0;    // laps of one period, used for the per-lap figures
   std::uint64_t interruptions = 0;  // laps spanning more than one period
-  double mean_hz = 0;               // 1 / mean period of the normal laps
-  double min_hz = 0;
+  double mean_hz = 0;               // robust slope of the lap-close times
+  double min_hz = 0;                // per-lap rates of the normal laps
   double max_hz = 0;
-  double median_period_s = 0;
-  double jitter_pct = 0;            // robust std-dev of the period (see robust_stddev), % of the median
-  double period_stddev_pct = 0;     // plain std-dev, % of the median (for the record; outliers count)
+  double jitter_pct = 0;            // robust std-dev of samples per lap, % of their median
   double samples_per_lap = 0;       // mean of received + missing samples over the normal laps
-  double sample_rate_hz = 0;        // samples (received + missing) / time, normal laps
+  double sample_rate_hz = 0;        // samples_per_lap * mean_hz
   std::uint64_t points = 0;         // points received in all laps
   std::uint64_t lost_samples = 0;   // estimated samples that never arrived
   std::vector<LapRateSample> series;  // one entry per normal lap, in order
@@ -52,8 +55,10 @@ class LapTimingAccumulator {
 
  private:
   struct LapRecord {
+    std::uint64_t index;    // Lap::index: laps the queue dropped leave a gap
     std::int64_t close_ns;
-    std::int64_t period_ns;
+    bool timed;             // the previous lap was seen, so period_ns means something
+    std::int64_t period_ns; // from the previous lap's close; 0 when both closed in one read
     std::uint32_t points;
     std::uint32_t missing;  // from gaps in the first-level angles
     double turns;           // first-level angle covered, in turns (2 when a zero packet was lost)

@@ -19,7 +19,6 @@ CheckObservations good_g6() {
   o.timing.mean_hz = 8.02;
   o.timing.min_hz = 7.98;
   o.timing.max_hz = 8.05;
-  o.timing.median_period_s = 0.125;
   o.timing.jitter_pct = 0.3;
   o.timing.sample_rate_hz = 9003;
   o.timing.samples_per_lap = 1125;
