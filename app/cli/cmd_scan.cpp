@@ -1,15 +1,14 @@
 // ydscope-cli scan: N laps from a live lidar, as decode prints them.
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <csignal>
 #include <cstdio>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
+#include "app/cli/lap_bell.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
 
@@ -41,25 +40,6 @@ example:
 
 std::atomic<bool> interrupted{false};
 extern "C" void on_signal(int) { interrupted.store(true); }
-
-// The I/O thread calls wake() after every lap it queues; the main thread sleeps until then.
-struct LapBell {
-  std::mutex mutex;
-  std::condition_variable rang;
-  bool pending = false;
-  void ring() {
-    {
-      std::lock_guard lock(mutex);
-      pending = true;
-    }
-    rang.notify_one();
-  }
-  void wait(std::chrono::milliseconds at_most) {
-    std::unique_lock lock(mutex);
-    rang.wait_for(lock, at_most, [this] { return pending; });
-    pending = false;
-  }
-};
 
 int run_scan(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {});

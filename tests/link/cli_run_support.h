@@ -1,5 +1,6 @@
 #pragma once
-// Test helper: runs ydscope-cli as a user would from a shell, with stdout and stderr apart.
+// Test helper: runs ydscope-cli as a user would from a shell, with stdout and stderr apart or
+// folded together.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -34,5 +35,8 @@ inline CliResult run_cli_apart(const std::string& arguments) {
   std::filesystem::remove(err_path);
   return result;
 }
+
+// Both streams in `out`, in the order they were written.
+inline CliResult run_cli(const std::string& arguments) { return run_cli_apart(arguments + " 2>&1"); }
 
 }  // namespace ydscope::test

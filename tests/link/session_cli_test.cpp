@@ -2,35 +2,15 @@
 // pseudo-terminal: one JSON object (or N laps and a summary), and a sentence plus exit 1 on failure.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
+#include "cli_run_support.h"
 #include "session_test_support.h"
 
 namespace ydscope {
 namespace {
 
 using namespace test;
-
-struct CliRun {
-  int status = -1;
-  std::string out;
-};
-
-// Runs the CLI with stderr folded into the output.
-CliRun run_cli(const std::string& arguments) {
-  CliRun run;
-  const std::string command = std::string(YDSCOPE_CLI_PATH) + " " + arguments + " 2>&1";
-  std::FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-  const int status = pclose(pipe);
-  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -40,7 +20,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 TEST(SessionCli, InfoPrintsOneJsonObjectWithTheDeviceDetails) {
   SimOnPty sim(Model::TG50);
-  const CliRun run = run_cli("info --port " + sim.port());
+  const CliResult run = run_cli("info --port " + sim.port());
   ASSERT_EQ(run.status, 0) << run.out;
   EXPECT_EQ(count(run.out, "\n"), 1u) << run.out;
   for (const char* field : {"\"model\":\"TG50\"", "\"model_code\":102", "\"firmware\":\"1.2\"", "\"hardware\":1",
@@ -50,19 +30,19 @@ TEST(SessionCli, InfoPrintsOneJsonObjectWithTheDeviceDetails) {
 
 TEST(SessionCli, AForcedModelThatDisagreesWithTheDeviceIsWarnedAbout) {
   SimOnPty sim(Model::TG50);
-  const CliRun forced = run_cli("info --port " + sim.port() + " --model G6");
+  const CliResult forced = run_cli("info --port " + sim.port() + " --model G6");
   ASSERT_EQ(forced.status, 0) << forced.out;
   EXPECT_NE(forced.out.find("warning: the device reports model code 102 (TG50) but G6 was asked for"),
             std::string::npos)
       << forced.out;
-  const CliRun matching = run_cli("info --port " + sim.port() + " --model TG50");
+  const CliResult matching = run_cli("info --port " + sim.port() + " --model TG50");
   ASSERT_EQ(matching.status, 0) << matching.out;
   EXPECT_EQ(matching.out.find("warning"), std::string::npos) << matching.out;
 }
 
 TEST(SessionCli, ScanPrintsNLapsAndTheSummary) {
   SimOnPty sim(Model::G1);
-  const CliRun run = run_cli("scan --port " + sim.port() + " --model G1 --laps 4");
+  const CliResult run = run_cli("scan --port " + sim.port() + " --model G1 --laps 4");
   ASSERT_EQ(run.status, 0) << run.out.substr(0, 400);
   EXPECT_EQ(count(run.out, "{\"type\":\"lap\""), 4u);
   EXPECT_EQ(count(run.out, "{\"type\":\"summary\""), 1u);
@@ -74,10 +54,10 @@ TEST(SessionCli, ScanPrintsNLapsAndTheSummary) {
 
 TEST(SessionCli, SetReachesTheTargetAndPrintsTheReadBack) {
   SimOnPty sim(Model::G6);
-  const CliRun hz = run_cli("set --port " + sim.port() + " --scan-hz 9.4");
+  const CliResult hz = run_cli("set --port " + sim.port() + " --scan-hz 9.4");
   ASSERT_EQ(hz.status, 0) << hz.out;
   EXPECT_NE(hz.out.find("\"scan_hz\":9.4"), std::string::npos) << hz.out;
-  const CliRun khz = run_cli("set --port " + sim.port() + " --ranging-khz 4");
+  const CliResult khz = run_cli("set --port " + sim.port() + " --ranging-khz 4");
   ASSERT_EQ(khz.status, 0) << khz.out;
   EXPECT_NE(khz.out.find("\"ranging_khz\":4"), std::string::npos) << khz.out;
   std::uint32_t centihz = 0;
@@ -92,13 +72,13 @@ TEST(SessionCli, SetReachesTheTargetAndPrintsTheReadBack) {
 
 TEST(SessionCli, SetExitsOneWhenTheTargetCannotBeReached) {
   SimOnPty sim(Model::G1);
-  const CliRun run = run_cli("set --port " + sim.port() + " --ranging-khz 8");
+  const CliResult run = run_cli("set --port " + sim.port() + " --ranging-khz 8");
   EXPECT_EQ(run.status, 1) << run.out;
   EXPECT_NE(run.out.find("read-only"), std::string::npos) << run.out;
 }
 
 TEST(SessionCli, FailuresAreOneSentenceAndANonZeroExit) {
-  const CliRun missing = run_cli("info --port /dev/ydscope-no-such-port");
+  const CliResult missing = run_cli("info --port /dev/ydscope-no-such-port");
   EXPECT_EQ(missing.status, 1);
   EXPECT_EQ(count(missing.out, "\n"), 1u) << missing.out;
   EXPECT_NE(missing.out.find("/dev/ydscope-no-such-port"), std::string::npos) << missing.out;
