@@ -1,0 +1,137 @@
+#include "app/cli/check_output.h"
+
+#include <algorithm>
+#include <string>
+
+#include "app/cli/lap_json.h"
+#include "app/cli/session_cli.h"
+
+namespace ydscope::cli {
+
+namespace {
+
+const char* verdict_word(Verdict v) { return v == Verdict::Pass ? "PASS" : "FAIL"; }
+
+std::string failed_ids(const CheckRecord& record) {
+  std::string ids;
+  for (const CriterionResult& r : record.results)
+    if (r.verdict == Verdict::Fail) ids += (ids.empty() ? "" : ", ") + r.id;
+  return ids;
+}
+
+}  // namespace
+
+void print_check_text(std::FILE* out, const CheckRecord& record) {
+  const SessionSnapshot& s = record.started;
+  const ModelProfile* profile = record.observations.profile;
+  std::fprintf(out, "check of %s on %s, serial %s: %.1f s measured, %llu laps%s\n",
+               profile ? std::string(profile->name).c_str() : "?", s.link.c_str(),
+               s.device ? s.device->serial.c_str() : "?", record.measured_seconds,
+               static_cast<unsigned long long>(record.observations.timing.laps),
+               record.interrupted ? " (interrupted)" : "");
+  std::size_t width = 0;
+  for (const CriterionResult& r : record.results) width = std::max(width, r.title.size());
+  for (const CriterionResult& r : record.results)
+    std::fprintf(out, "%s  %-*s  %s  [limit: %s]\n", verdict_word(r.verdict), static_cast<int>(width), r.title.c_str(),
+                 r.measured.c_str(), r.limit.c_str());
+  const std::size_t failed = static_cast<std::size_t>(
+      std::count_if(record.results.begin(), record.results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; }));
+  if (failed == 0)
+    std::fprintf(out, "verdict: PASS (%zu criteria)\n", record.results.size());
+  else
+    std::fprintf(out, "verdict: FAIL (%zu of %zu criteria: %s)\n", failed, record.results.size(),
+                 failed_ids(record).c_str());
+}
+
+void print_check_json(std::FILE* file, const CheckRecord& record) {
+  JsonOut out(file);
+  const LapTimingStatistics& t = record.observations.timing;
+  out.raw(R"({"type":"check","verdict":)");
+  out.string(all_passed(record.results) ? "pass" : "fail");
+  out.raw(R"(,"failed":[)");
+  bool first = true;
+  for (const CriterionResult& r : record.results) {
+    if (r.verdict == Verdict::Pass) continue;
+    if (!first) out.raw(",");
+    first = false;
+    out.string(r.id);
+  }
+  out.raw(R"(],"interrupted":)");
+  out.raw(record.interrupted ? "true" : "false");
+  out.raw(R"(,"failure":)");
+  if (record.failure.empty()) out.raw("null");
+  else out.string(record.failure);
+  out.raw(R"(,"seconds":)");
+  out.fixed(record.measured_seconds, 3);
+  out.raw(R"(,"device":{)");
+  write_device_fields(out, record.started);
+  out.raw(R"(},"criteria":[)");
+  for (std::size_t i = 0; i < record.results.size(); ++i) {
+    const CriterionResult& r = record.results[i];
+    out.raw(i ? R"(,{"id":)" : R"({"id":)");
+    out.string(r.id);
+    out.raw(R"(,"title":)");
+    out.string(r.title);
+    out.raw(R"(,"verdict":)");
+    out.string(r.verdict == Verdict::Pass ? "pass" : "fail");
+    out.raw(R"(,"value":)");
+    out.fixed_or_null(r.value, 6);
+    out.raw(R"(,"measured":)");
+    out.string(r.measured);
+    out.raw(R"(,"limit":)");
+    out.string(r.limit);
+    out.raw("}");
+  }
+  out.raw(R"(],"timing":{"laps":)");
+  out.integer(t.laps);
+  out.raw(R"(,"normal_laps":)");
+  out.integer(t.normal_laps);
+  out.raw(R"(,"interruptions":)");
+  out.integer(t.interruptions);
+  out.raw(R"(,"mean_hz":)");
+  out.fixed(t.mean_hz, 4);
+  out.raw(R"(,"jitter_pct":)");
+  out.fixed(t.jitter_pct, 3);
+  out.raw(R"(,"sample_rate_hz":)");
+  out.fixed(t.sample_rate_hz, 1);
+  out.raw(R"(,"points":)");
+  out.integer(t.points);
+  out.raw(R"(,"lost_samples":)");
+  out.integer(t.lost_samples);
+  out.raw("}");
+  out.raw(R"(,"sector":)");
+  if (record.sector) {
+    const SectorStatistics& s = *record.sector;
+    out.raw(R"({"name":)");
+    out.string(record.observations.sector_name.value_or(""));
+    out.raw(R"(,"points":)");
+    out.integer(s.points);
+    out.raw(R"(,"valid":)");
+    out.integer(s.valid);
+    const auto summary = [&out](const char* name, const ValueSummary& v) {
+      out.raw(name);
+      out.raw(R"({"count":)");
+      out.integer(v.count);
+      out.raw(R"(,"mean":)");
+      out.fixed(v.mean, 2);
+      out.raw(R"(,"median":)");
+      out.fixed(v.median, 2);
+      out.raw(R"(,"stddev":)");
+      out.fixed(v.stddev, 2);
+      out.raw(R"(,"min":)");
+      out.fixed(v.min, 2);
+      out.raw(R"(,"max":)");
+      out.fixed(v.max, 2);
+      out.raw("}");
+    };
+    summary(R"(,"range_mm":)", s.range_mm);
+    summary(R"(,"flat_distance_mm":)", s.flat_distance_mm);
+    out.raw("}");
+  } else {
+    out.raw("null");
+  }
+  out.raw("}\n");
+  out.flush();
+}
+
+}  // namespace ydscope::cli

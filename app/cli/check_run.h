@@ -1,0 +1,51 @@
+#pragma once
+// The measuring half of `ydscope-cli check`: connect, set the scan (and ranging) frequency, let
+// the motor settle, then gather laps for the run's length into the core/analysis accumulators,
+// read the health again, and stop the lidar. What comes out is a CheckRecord: the observations,
+// the verdicts, and what the text, JSON and HTML outputs show.
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/analysis/acceptance.h"
+#include "core/analysis/sector.h"
+#include "core/link/session.h"
+
+namespace ydscope::cli {
+
+struct CheckPlan {
+  SessionConfig session;
+  std::optional<double> distance_scale;
+  std::optional<double> scan_hz;             // empty: the model's default
+  std::optional<std::uint16_t> ranging_khz;  // empty: whatever the unit uses
+  double seconds = 10;
+  double settle_seconds = 1;
+  std::optional<Sector> sector;
+  std::optional<double> target_mm;
+  // Applied to the model's default limits once the model is known (it may be detected).
+  std::vector<std::pair<double AcceptanceLimits::*, double>> limit_overrides;
+  std::optional<double> bias_tolerance_mm;
+  std::optional<double> noise_max_mm;
+  bool progress = false;                     // progress lines on stderr (a terminal)
+};
+
+struct CheckRecord {
+  SessionSnapshot started;  // the device as it answered at connect time
+  AcceptanceLimits limits;
+  CheckObservations observations;
+  std::vector<CriterionResult> results;
+  std::optional<SectorStatistics> sector;
+  Lap last_lap;              // the polar snapshot of the report
+  double measured_seconds = 0;
+  bool interrupted = false;  // Ctrl-C: the results cover only what was measured until then
+  std::string failure;       // the device failed mid-run: one sentence (results are partial)
+};
+
+// Throws UsageError for a request the detected model cannot do (a scan rate out of its span, a
+// ranging frequency it lacks) and std::runtime_error when the device fails before measuring.
+// `stop` (set by a signal handler) ends the measurement early.
+CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop);
+
+}  // namespace ydscope::cli

@@ -1,0 +1,174 @@
+// ydscope-cli check: an acceptance test of one unit against its model's limits, for the bench and
+// the production line.
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "app/common/arguments.h"
+#include "app/cli/check_output.h"
+#include "app/cli/check_run.h"
+#include "app/cli/cli_command.h"
+#include "app/cli/session_cli.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli check --port PATH [--model auto|M] [--seconds S] [--scan-hz F] [--ranging-khz K]
+                         [--sector A:B --target-mm D [--tolerance-mm T] [--noise-mm N]]
+                         [--format text|json] [limit options]
+
+Runs an acceptance test of the lidar: reads its identity and health, sets the scan frequency (and
+the ranging frequency when asked), lets the motor settle, measures for S seconds, reads the health
+again and stops the lidar. Then one line per criterion with the measured value, the limit and
+PASS or FAIL:
+
+  identity       the model code matches the model; firmware and serial were read
+  health         no error or warning (A5 91/92 before and after; on G1 also every lap's CT bits)
+  scan rate      the mean measured rate within a tolerance of the target
+  scan jitter    the lap period's robust std-dev below a limit
+  sample rate    samples per second against the ranging frequency in use
+  link           checksum errors, resync bytes, G1 CRC8 failures, queue drops, lost samples
+  valid returns  the share of points with a return and no interference flag
+  and with --sector: the valid share in the sector; with --target-mm too: the range bias and noise
+  (std-dev) of the sector's points against a flat target square to the sector's middle.
+
+Limits come from the manuals where they give one, otherwise from documented defaults (the table
+is in the README, "Acceptance limits"); every limit has an option below.
+
+options:
+  --port PATH            serial port (see `ydscope-cli ports`) or tcp://host:port
+  --model MODEL          auto (default: from the device-info model code), G1, G6, TG15, TG30, TG50
+  --baud B               line rate, or auto to probe (see `ydscope-cli info --help`)
+  --seconds S            how long to measure (default 10, 1 to 3600)
+  --settle-seconds S     laps not judged after setting the frequencies (default 1, 0 to 60)
+  --scan-hz F            the scan rate to set and hold the unit to (default: the model's: G1 9,
+                         G6 8, TG 10 Hz; within 5 to 12 Hz)
+  --ranging-khz K        set this ranging frequency first (G6/TG: 4, 8 or 9; G1's is fixed)
+  --sector A:B           also judge the points from A to B degrees (may cross 0, e.g. 350:10)
+  --target-mm D          a flat target D mm away fills the sector: judge bias and noise
+  --tolerance-mm T       |bias| limit (default 2 % of D, at least 20 mm)
+  --noise-mm N           std-dev limit (default 1 % of D, at least 10 mm)
+  --format FORMAT        text (default) or json (one object, schema below)
+  --distance-scale MM    mm per distance count, overriding the model's (see `decode --help`)
+
+limit options (defaults in brackets):
+  --scan-tolerance-pct P         scan rate within P % of the target [2]
+  --jitter-pct P                 lap-period jitter at most P % [2]
+  --sample-rate-tolerance-pct P  samples/s within P % of the ranging frequency [2]
+  --max-checksum-errors N        [0]    --max-resync-bytes N   [0]
+  --max-crc8-failures N          [0]    --max-queue-drops N    [0]
+  --max-lost-samples N           [0]
+  --min-valid-pct P              valid returns among all points [50]
+  --min-sector-valid-pct P       valid returns in the sector [95]
+
+On a terminal, progress is shown on stderr. Ctrl-C stops the lidar and prints the verdict on what
+was measured until then, marked as interrupted.
+
+json: {"type":"check","verdict":"pass"|"fail","failed":[ids],"interrupted":bool,"failure":null|
+  sentence,"seconds":S,"device":{as `info`},"criteria":[{"id","title","verdict","value","measured",
+  "limit"}],"timing":{"laps","normal_laps","interruptions","mean_hz","jitter_pct","sample_rate_hz",
+  "points","lost_samples"},"sector":null|{"name","points","valid","range_mm":{...},
+  "flat_distance_mm":{"count","mean","median","stddev","min","max"}}}
+  Criterion ids: identity, health, scan_rate, scan_jitter, sample_rate, link, valid_returns,
+  sector_valid, range_bias, range_noise.
+
+exit status: 0 every criterion passed; 3 at least one failed; 1 the device or the link failed (a
+sentence on stderr; when it failed mid-run the verdict on what was measured is still printed);
+2 usage error; 130 interrupted by Ctrl-C (the verdict printed covers only the time measured).
+
+examples:
+  ydscope-cli check --port /dev/ttyUSB0
+  ydscope-cli check --port /dev/ttyUSB0 --model G6 --seconds 30 --scan-hz 10 --ranging-khz 8
+  ydscope-cli check --port /dev/ttyUSB0 --sector 350:10 --target-mm 2000 --format json | jq .verdict
+)";
+
+constexpr int kExitNotWithinSpec = 3;
+constexpr int kExitInterrupted = 130;
+
+std::atomic<bool> interrupted{false};
+extern "C" void check_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
+
+struct LimitOption {
+  const char* name;
+  double AcceptanceLimits::*field;
+  double max;
+  double scale;  // option value -> limit (percent to share for the valid-return limits)
+};
+
+constexpr LimitOption kLimitOptions[] = {
+    {"scan-tolerance-pct", &AcceptanceLimits::scan_hz_tolerance_pct, 100, 1},
+    {"jitter-pct", &AcceptanceLimits::scan_jitter_max_pct, 100, 1},
+    {"sample-rate-tolerance-pct", &AcceptanceLimits::sample_rate_tolerance_pct, 100, 1},
+    {"max-checksum-errors", &AcceptanceLimits::max_checksum_errors, 1e12, 1},
+    {"max-resync-bytes", &AcceptanceLimits::max_resync_bytes, 1e12, 1},
+    {"max-crc8-failures", &AcceptanceLimits::max_crc8_failures, 1e12, 1},
+    {"max-queue-drops", &AcceptanceLimits::max_queue_drops, 1e12, 1},
+    {"max-lost-samples", &AcceptanceLimits::max_lost_samples, 1e12, 1},
+    {"min-valid-pct", &AcceptanceLimits::min_valid_share, 100, 0.01},
+    {"min-sector-valid-pct", &AcceptanceLimits::min_sector_valid_share, 100, 0.01},
+};
+
+CheckPlan plan_from(const Arguments& args) {
+  CheckPlan plan;
+  plan.session = session_config_from(args, /*scan=*/true);
+  plan.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
+  plan.seconds = args.number("seconds", 1, 3600).value_or(10);
+  plan.settle_seconds = args.number("settle-seconds", 0, 60).value_or(1);
+  plan.scan_hz = args.number("scan-hz", 0.1, 100);
+  if (const auto khz = args.integer("ranging-khz", 1, 100)) plan.ranging_khz = static_cast<std::uint16_t>(*khz);
+  if (const auto text = args.value("sector")) {
+    std::string error;
+    plan.sector = parse_sector(*text, error);
+    if (!plan.sector) throw UsageError("--sector: " + error);
+  }
+  plan.target_mm = args.number("target-mm", 1, 1e6);
+  plan.bias_tolerance_mm = args.number("tolerance-mm", 0, 1e6);
+  plan.noise_max_mm = args.number("noise-mm", 0, 1e6);
+  if (plan.target_mm && !plan.sector)
+    throw UsageError("--target-mm needs --sector A:B (the angles the target fills)");
+  if ((plan.bias_tolerance_mm || plan.noise_max_mm) && !plan.target_mm)
+    throw UsageError("--tolerance-mm and --noise-mm need --target-mm D (the target's distance)");
+  for (const LimitOption& option : kLimitOptions)
+    if (const auto value = args.number(option.name, 0, option.max))
+      plan.limit_overrides.emplace_back(option.field, *value * option.scale);
+  plan.progress = isatty(STDERR_FILENO) == 1;
+  return plan;
+}
+
+int run_check_command(std::span<const std::string> raw) {
+  std::set<std::string> options{"seconds", "settle-seconds", "scan-hz", "ranging-khz", "sector", "target-mm",
+                                "tolerance-mm", "noise-mm", "format", "distance-scale"};
+  for (const LimitOption& option : kLimitOptions) options.insert(option.name);
+  const Arguments args(raw, session_value_options(options), {});
+  const std::string format = args.value("format").value_or("text");
+  if (format != "text" && format != "json") throw UsageError("--format must be text or json, not '" + format + "'");
+  const CheckPlan plan = plan_from(args);
+
+  std::signal(SIGINT, check_on_signal);
+  std::signal(SIGTERM, check_on_signal);
+  const CheckRecord record = run_check(plan, interrupted);
+  if (format == "json") print_check_json(stdout, record);
+  else print_check_text(stdout, record);
+  std::fflush(stdout);
+  if (!record.failure.empty()) {
+    std::fprintf(stderr, "ydscope-cli check: %s\n", record.failure.c_str());
+    return kExitFailure;
+  }
+  if (record.interrupted) {
+    std::fprintf(stderr, "ydscope-cli check: interrupted after %.1f of %.1f s; the verdict covers only that\n",
+                 record.measured_seconds, plan.seconds);
+    return kExitInterrupted;
+  }
+  return all_passed(record.results) ? kExitOk : kExitNotWithinSpec;
+}
+
+const RegisterCliCommand registration{
+    {"check", "acceptance test of a lidar against its model's limits (PASS/FAIL per criterion)", kHelpText,
+     &run_check_command}};
+
+}  // namespace
+}  // namespace ydscope::cli

@@ -1,0 +1,178 @@
+// ydscope-cli check against the virtual lidar of each model: a healthy unit passes, and each fault
+// the virtual lidar can inject fails exactly the criterion it breaks, by name.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <string>
+#include <thread>
+#include <unistd.h>
+
+#include "cli_run_support.h"
+#include "session_test_support.h"
+
+namespace ydscope {
+namespace {
+
+using namespace test;
+
+// Short runs keep the suite quick; the settle time covers the restart after setting the rate.
+const std::string kQuick = " --seconds 2 --settle-seconds 0.3 --format json";
+
+// The ids in the JSON verdict's "failed" list, e.g. "link" or "health,link".
+std::string failed_ids(const std::string& json) {
+  const auto at = json.find("\"failed\":[");
+  if (at == std::string::npos) return "<no verdict>";
+  const auto begin = at + 10, end = json.find(']', begin);
+  std::string ids;
+  for (char c : json.substr(begin, end - begin))
+    if (c != '"') ids += c;
+  return ids;
+}
+
+CliRun check(SimOnPty& sim, const std::string& more = "") {
+  return run_cli("check --port " + sim.port() + kQuick + more, "2>/dev/null");
+}
+
+class CheckEveryModel : public ::testing::TestWithParam<Model> {};
+
+TEST_P(CheckEveryModel, AHealthyVirtualLidarPasses) {
+  SimOnPty sim(GetParam());
+  const CliRun run = check(sim);
+  EXPECT_EQ(run.status, 0) << run.out;
+  EXPECT_NE(run.out.find("\"verdict\":\"pass\""), std::string::npos) << run.out;
+  EXPECT_EQ(failed_ids(run.out), "") << run.out;
+  EXPECT_NE(run.out.find("\"model\":\"" + std::string(profile_for(GetParam()).name) + "\""), std::string::npos);
+  DeviceMode mode = DeviceMode::Scanning;
+  sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
+  EXPECT_EQ(mode, DeviceMode::Idle) << "check leaves the motor stopped";
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, CheckEveryModel,
+                         ::testing::Values(Model::G1, Model::G6, Model::TG15, Model::TG30, Model::TG50),
+                         [](const auto& model) { return std::string(profile_for(model.param).name); });
+
+struct FaultCase {
+  const char* name;
+  Model model;
+  std::function<void(FaultConfig&)> inject;
+  const char* fails;  // the one criterion id it must fail
+};
+
+class CheckFault : public ::testing::TestWithParam<FaultCase> {};
+
+TEST_P(CheckFault, FailsExactlyTheCriterionItBreaks) {
+  const FaultCase& c = GetParam();
+  SimOnPty sim(c.model, [&](SimServerOptions& o) { c.inject(o.device.faults); });
+  const CliRun run = check(sim);
+  EXPECT_EQ(run.status, 3) << run.out;
+  EXPECT_EQ(failed_ids(run.out), c.fails) << run.out;
+}
+
+const FaultCase kFaults[] = {
+    {"Corruption", Model::G6, [](FaultConfig& f) { f.corrupt_byte_rate = 0.0005; }, "link"},
+    {"LostPackets", Model::TG30, [](FaultConfig& f) { f.lost_packet_rate = 0.01; }, "link"},
+    {"LostPacketsG1", Model::G1, [](FaultConfig& f) { f.lost_packet_rate = 0.01; }, "link"},
+    {"HealthError", Model::G6, [](FaultConfig& f) { f.health_bits = 0x04; }, "health"},
+    {"HealthBitsG1", Model::G1, [](FaultConfig& f) { f.health_bits = 0x02; }, "health"},
+    {"Stall", Model::G6,
+     [](FaultConfig& f) {
+       f.stall_ms = 300;
+       f.stall_every_ms = 700;
+     },
+     "link"},
+    {"ScanRateOffItsSetValue", Model::G6, [](FaultConfig& f) { f.scan_hz_offset = 0.5; }, "scan_rate"},
+    {"ScanRateWandering", Model::TG15, [](FaultConfig& f) { f.scan_hz_wobble = 0.4; }, "scan_jitter"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Faults, CheckFault, ::testing::ValuesIn(kFaults),
+                         [](const auto& fault) { return std::string(fault.param.name); });
+
+TEST(CheckCli, TheTextVerdictNamesTheFailedCriterion) {
+  SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.faults.scan_hz_offset = -0.6; });
+  const CliRun run = run_cli("check --port " + sim.port() + " --seconds 2 --settle-seconds 0.3", "2>/dev/null");
+  EXPECT_EQ(run.status, 3) << run.out;
+  EXPECT_NE(run.out.find("FAIL  scan rate"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("PASS  sample rate"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("verdict: FAIL (1 of 7 criteria: scan_rate)"), std::string::npos) << run.out;
+}
+
+TEST(CheckCli, AForcedModelTheDeviceDisagreesWithFailsIdentity) {
+  SimOnPty sim(Model::TG50);
+  const CliRun run = check(sim, " --model TG30");
+  EXPECT_EQ(run.status, 3) << run.out;
+  EXPECT_EQ(failed_ids(run.out), "identity") << run.out;
+}
+
+TEST(CheckCli, AFlatTargetAtTheRightDistancePassesAndAtTheWrongOneFailsTheBias) {
+  // The room's bottom wall: 2400 mm, square to 270 degrees.
+  SimOnPty sim(Model::G6);
+  const CliRun right = check(sim, " --sector 260:280 --target-mm 2400");
+  EXPECT_EQ(right.status, 0) << right.out;
+  EXPECT_NE(right.out.find("\"id\":\"range_noise\""), std::string::npos);
+  const CliRun wrong = check(sim, " --sector 260:280 --target-mm 2300");
+  EXPECT_EQ(wrong.status, 3) << wrong.out;
+  EXPECT_EQ(failed_ids(wrong.out), "range_bias") << wrong.out;
+  const CliRun strict = check(sim, " --sector 260:280 --target-mm 2400 --noise-mm 2");
+  EXPECT_EQ(failed_ids(strict.out), "range_noise") << strict.out;
+}
+
+TEST(CheckCli, MistakesAreUsageErrorsWithOneSentence) {
+  SimOnPty sim(Model::G6);
+  const std::string port = " --port " + sim.port();
+  for (const std::string& args : {std::string("check"), "check" + port + " --target-mm 2000",
+                                  "check" + port + " --sector 10", "check" + port + " --format xml",
+                                  "check" + port + " --tolerance-mm 5", "check" + port + " --seconds 0",
+                                  "check" + port + " --scan-hz 20", "check" + port + " --ranging-khz 5"}) {
+    const CliRun run = run_cli(args);
+    EXPECT_EQ(run.status, 2) << args << "\n" << run.out;
+    EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << args << "\n" << run.out;
+  }
+}
+
+TEST(CheckCli, AMissingPortIsADeviceFailure) {
+  const CliRun run = run_cli("check --port /nonexistent/ttyUSB9 --seconds 1");
+  EXPECT_EQ(run.status, 1) << run.out;
+  EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << run.out;
+}
+
+TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
+  SimOnPty sim(Model::G6);
+  int out_pipe[2];
+  ASSERT_EQ(pipe(out_pipe), 0);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    dup2(out_pipe[1], STDOUT_FILENO);
+    close(out_pipe[0]);
+    const std::string port = sim.port();
+    execl(YDSCOPE_CLI_PATH, YDSCOPE_CLI_PATH, "check", "--port", port.c_str(), "--seconds", "60", "--settle-seconds",
+          "0.3", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(out_pipe[1]);
+  // Wait until the lidar has been scanning a while (the virtual lidar counts its laps' packets).
+  for (int i = 0; i < 200; ++i) {
+    std::uint64_t zero_packets = 0;
+    sim.server().with_device([&](VirtualLidar& d) { zero_packets = d.counters().zero_packets; });
+    if (zero_packets > 30) break;
+    std::this_thread::sleep_for(50ms);
+  }
+  kill(child, SIGINT);
+  std::string out;
+  char buffer[4096];
+  ssize_t n;
+  while ((n = read(out_pipe[0], buffer, sizeof buffer)) > 0) out.append(buffer, static_cast<std::size_t>(n));
+  close(out_pipe[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << out;
+  EXPECT_NE(out.find("(interrupted)"), std::string::npos) << out;
+  EXPECT_NE(out.find("PASS  scan rate"), std::string::npos) << out;
+  DeviceMode mode = DeviceMode::Scanning;
+  sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
+  EXPECT_EQ(mode, DeviceMode::Idle);
+}
+
+}  // namespace
+}  // namespace ydscope
