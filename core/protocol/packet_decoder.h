@@ -74,17 +74,10 @@ class PacketDecoder {
   // cut-off packet stays counted in pending_bytes.
   void finish(PacketSink& sink);
 
-  // On G1 the last byte of a junk run may be the LastCRC of a zero packet still to come: until
-  // that is decided it counts as pending, not as a resync byte, so counters read between two
-  // reads (the session publishes them after every read) never show a resync that is not one.
-  PacketCounters counters() const {
-    PacketCounters c = counters_;
-    if (last_crc_before_zero_ && junk_run_ > 0) {
-      --c.resync_bytes;
-      ++c.pending_bytes;
-    }
-    return c;
-  }
+  const PacketCounters& counters() const { return counters_; }
+  // G1: the last byte skipped may be the LastCRC of a zero packet still to come (counted as a
+  // resync byte until that packet makes it a LastCRC byte).
+  bool may_hold_last_crc() const { return last_crc_before_zero_ && junk_run_ > 0; }
   // The bytes held of a packet not complete yet (they start at its AA); empty at a boundary.
   std::span<const std::uint8_t> partial_packet() const { return {pending_.data(), pending_size_}; }
   // Forget buffered bytes and counters (e.g. after a reconnect).

@@ -49,6 +49,12 @@ DecoderCounters ScanDecoder::counters() const {
   c.checksum_errors = p.checksum_errors;
   c.resync_bytes = p.resync_bytes;
   c.pending_bytes = p.pending_bytes;
+  // Until the next packet says whether it was G1's LastCRC, that byte is pending, not a resync:
+  // the session publishes these counters after every read, and a read can end right after it.
+  if (packets_.may_hold_last_crc()) {
+    --c.resync_bytes;
+    ++c.pending_bytes;
+  }
   c.laps = l.laps;
   c.discarded_packets = l.discarded_packets;
   c.crc_ok = l.crc_ok;

@@ -183,36 +183,6 @@ TEST(PacketDecoder, G1LastCrcByteBeforeZeroPackets) {
   expect_accounting(decoder.counters());
 }
 
-TEST(PacketDecoder, G1LastCrcByteReadAloneIsPendingNotResync) {
-  // The session publishes counters after every read; a read can end right after LastCRC.
-  Bytes first;
-  append(first, packet(1, 0.0, 0.0, {4}));
-  append(first, packet(0, 10.0, 20.0, {4}));
-  first.push_back(0x5C);
-  Bytes second;
-  append(second, packet(1, 0.0, 0.0, {4}));
-  PacketDecoder decoder(true);
-  Collected sink;
-  decoder.feed(first, 0, sink);
-  EXPECT_EQ(decoder.counters().resync_bytes, 0u);
-  EXPECT_EQ(decoder.counters().pending_bytes, 1u);
-  expect_accounting(decoder.counters());
-  decoder.feed(second, 0, sink);
-  ASSERT_EQ(sink.packets.size(), 3u);
-  EXPECT_EQ(sink.packets[2].last_crc, 0x5C);
-  EXPECT_EQ(decoder.counters().resync_bytes, 0u);
-  EXPECT_EQ(decoder.counters().pending_bytes, 0u);
-  expect_accounting(decoder.counters());
-  // Had an ordinary packet followed, the byte was junk after all.
-  PacketDecoder junk(true);
-  junk.feed(first, 0, sink);
-  Bytes ordinary;
-  append(ordinary, packet(0, 30.0, 40.0, {4}));
-  junk.feed(ordinary, 0, sink);
-  EXPECT_EQ(junk.counters().resync_bytes, 1u);
-  expect_accounting(junk.counters());
-}
-
 TEST(PacketDecoder, RealX2PacketWithAa5bInsideAndUpperCtBits) {
   const Bytes bytes = test::read_hex_capture(test::capture("x2-packet.hex"));
   ASSERT_EQ(bytes.size(), 90u);

@@ -29,15 +29,15 @@ std::string failed_ids(const std::string& json) {
   return ids;
 }
 
-CliRun check(SimOnPty& sim, const std::string& more = "") {
-  return run_cli("check --port " + sim.port() + kQuick + more, "2>/dev/null");
+CliResult check(SimOnPty& sim, const std::string& more = "") {
+  return run_cli_apart("check --port " + sim.port() + kQuick + more);
 }
 
 class CheckEveryModel : public ::testing::TestWithParam<Model> {};
 
 TEST_P(CheckEveryModel, AHealthyVirtualLidarPasses) {
   SimOnPty sim(GetParam());
-  const CliRun run = check(sim);
+  const CliResult run = check(sim);
   EXPECT_EQ(run.status, 0) << run.out;
   EXPECT_NE(run.out.find("\"verdict\":\"pass\""), std::string::npos) << run.out;
   EXPECT_EQ(failed_ids(run.out), "") << run.out;
@@ -63,9 +63,9 @@ class CheckFault : public ::testing::TestWithParam<FaultCase> {};
 TEST_P(CheckFault, FailsExactlyTheCriterionItBreaks) {
   const FaultCase& c = GetParam();
   SimOnPty sim(c.model, [&](SimServerOptions& o) { c.inject(o.device.faults); });
-  const CliRun run = check(sim);
-  EXPECT_EQ(run.status, 3) << run.out;
-  EXPECT_EQ(failed_ids(run.out), c.fails) << run.out;
+  const CliResult run = check(sim);
+  EXPECT_EQ(run.status, 3) << run.out << run.err;
+  EXPECT_EQ(failed_ids(run.out), c.fails) << run.out << run.err;
 }
 
 const FaultCase kFaults[] = {
@@ -89,7 +89,7 @@ INSTANTIATE_TEST_SUITE_P(Faults, CheckFault, ::testing::ValuesIn(kFaults),
 
 TEST(CheckCli, TheTextVerdictNamesTheFailedCriterion) {
   SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.faults.scan_hz_offset = -0.6; });
-  const CliRun run = run_cli("check --port " + sim.port() + " --seconds 2 --settle-seconds 0.3", "2>/dev/null");
+  const CliResult run = run_cli_apart("check --port " + sim.port() + " --seconds 2 --settle-seconds 0.3");
   EXPECT_EQ(run.status, 3) << run.out;
   EXPECT_NE(run.out.find("FAIL  scan rate"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("PASS  sample rate"), std::string::npos) << run.out;
@@ -98,7 +98,7 @@ TEST(CheckCli, TheTextVerdictNamesTheFailedCriterion) {
 
 TEST(CheckCli, AForcedModelTheDeviceDisagreesWithFailsIdentity) {
   SimOnPty sim(Model::TG50);
-  const CliRun run = check(sim, " --model TG30");
+  const CliResult run = check(sim, " --model TG30");
   EXPECT_EQ(run.status, 3) << run.out;
   EXPECT_EQ(failed_ids(run.out), "identity") << run.out;
 }
@@ -106,13 +106,13 @@ TEST(CheckCli, AForcedModelTheDeviceDisagreesWithFailsIdentity) {
 TEST(CheckCli, AFlatTargetAtTheRightDistancePassesAndAtTheWrongOneFailsTheBias) {
   // The room's bottom wall: 2400 mm, square to 270 degrees.
   SimOnPty sim(Model::G6);
-  const CliRun right = check(sim, " --sector 260:280 --target-mm 2400");
+  const CliResult right = check(sim, " --sector 260:280 --target-mm 2400");
   EXPECT_EQ(right.status, 0) << right.out;
   EXPECT_NE(right.out.find("\"id\":\"range_noise\""), std::string::npos);
-  const CliRun wrong = check(sim, " --sector 260:280 --target-mm 2300");
+  const CliResult wrong = check(sim, " --sector 260:280 --target-mm 2300");
   EXPECT_EQ(wrong.status, 3) << wrong.out;
   EXPECT_EQ(failed_ids(wrong.out), "range_bias") << wrong.out;
-  const CliRun strict = check(sim, " --sector 260:280 --target-mm 2400 --noise-mm 2");
+  const CliResult strict = check(sim, " --sector 260:280 --target-mm 2400 --noise-mm 2");
   EXPECT_EQ(failed_ids(strict.out), "range_noise") << strict.out;
 }
 
@@ -123,14 +123,14 @@ TEST(CheckCli, MistakesAreUsageErrorsWithOneSentence) {
                                   "check" + port + " --sector 10", "check" + port + " --format xml",
                                   "check" + port + " --tolerance-mm 5", "check" + port + " --seconds 0",
                                   "check" + port + " --scan-hz 20", "check" + port + " --ranging-khz 5"}) {
-    const CliRun run = run_cli(args);
+    const CliResult run = run_cli(args);
     EXPECT_EQ(run.status, 2) << args << "\n" << run.out;
     EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << args << "\n" << run.out;
   }
 }
 
 TEST(CheckCli, AMissingPortIsADeviceFailure) {
-  const CliRun run = run_cli("check --port /nonexistent/ttyUSB9 --seconds 1");
+  const CliResult run = run_cli("check --port /nonexistent/ttyUSB9 --seconds 1");
   EXPECT_EQ(run.status, 1) << run.out;
   EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << run.out;
 }

@@ -18,10 +18,8 @@ struct CliResult {
   std::string err;
 };
 
-// `arguments` goes through the shell: quote paths with spaces.
-inline CliResult run_cli_apart(const std::string& arguments) {
-  const auto err_path = std::filesystem::temp_directory_path() / ("ydscope-cli-err-" + std::to_string(::getpid()));
-  const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' " + arguments + " 2>'" + err_path.string() + "'";
+// Runs a shell command line, keeping its stdout in `out` and its exit status.
+inline CliResult run_shell(const std::string& command) {
   CliResult result;
   std::FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -30,13 +28,23 @@ inline CliResult run_cli_apart(const std::string& arguments) {
   while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, got);
   const int status = ::pclose(pipe);
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+// `arguments` goes through the shell: quote paths with spaces.
+inline CliResult run_cli_apart(const std::string& arguments) {
+  const auto err_path = std::filesystem::temp_directory_path() / ("ydscope-cli-err-" + std::to_string(::getpid()));
+  CliResult result =
+      run_shell(std::string("'") + YDSCOPE_CLI_PATH + "' " + arguments + " 2>'" + err_path.string() + "'");
   std::ifstream err(err_path, std::ios::binary);
   result.err.assign(std::istreambuf_iterator<char>(err), {});
   std::filesystem::remove(err_path);
   return result;
 }
 
-// Both streams in `out`, in the order they were written.
-inline CliResult run_cli(const std::string& arguments) { return run_cli_apart(arguments + " 2>&1"); }
+// Both streams in `out`, in the order they were written (err stays empty).
+inline CliResult run_cli(const std::string& arguments) {
+  return run_shell(std::string("'") + YDSCOPE_CLI_PATH + "' " + arguments + " 2>&1");
+}
 
 }  // namespace ydscope::test
