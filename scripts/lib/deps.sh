@@ -1,8 +1,8 @@
 # Debian packages ydscope needs, installed only when missing. Sourced by scripts/test, scripts/run
 # and scripts/package.
-ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev)
-ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
-ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core)
+ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev zlib1g-dev libzstd-dev liblz4-dev)
+ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core nodejs npm)
+ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core zlib1g libzstd1 liblz4-1)
 ydscope_packages_package=(help2man dpkg-dev fakeroot file lintian appstream)
 # libFuzzer and the sanitizer runtimes come with Debian's clang (scripts/fuzz, scripts/test --fuzz).
 ydscope_packages_fuzz=(clang-14 libclang-rt-14-dev)
@@ -15,6 +15,8 @@ ydscope_install_deps() {  # ydscope_install_deps build test run ...
   done
   local p
   for p in "${wanted[@]}"; do
+    # Some machines carry a nodejs that bundles npm and conflicts with Debian's npm package.
+    [ "$p" = npm ] && command -v npm >/dev/null && continue
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
