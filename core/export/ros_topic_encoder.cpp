@@ -1,0 +1,214 @@
+#include "core/export/ros_topic_encoder.h"
+
+#include <charconv>
+#include <cstdio>
+#include <ctime>
+
+#include "core/export/ros_schemas.h"
+
+namespace ydscope {
+namespace {
+
+constexpr std::int64_t kDiagnosticsPeriodNs = 1'000'000'000;
+
+const RosTopicInfo kTopics[kRosTopicCount] = {
+    {RosTopic::Scan, "/scan", &laser_scan_schema()},
+    {RosTopic::Points, "/points", &point_cloud2_schema()},
+    {RosTopic::Diagnostics, "/diagnostics", &diagnostic_array_schema()},
+    {RosTopic::DeviceBytes, "/ydscope/device_bytes", &uint8_multi_array_schema()},
+    {RosTopic::HostBytes, "/ydscope/host_bytes", &uint8_multi_array_schema()},
+};
+
+std::string fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+std::optional<int> digits(std::string_view text, std::size_t at, std::size_t n) {
+  if (at + n > text.size()) return std::nullopt;
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data() + at, text.data() + at + n, value);
+  if (ec != std::errc() || end != text.data() + at + n) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::span<const RosTopicInfo> ros_topics() { return kTopics; }
+
+std::optional<std::uint64_t> parse_iso8601_utc_ns(std::string_view text) {
+  // YYYY-MM-DDTHH:MM:SS[.fff...]Z
+  const auto year = digits(text, 0, 4), month = digits(text, 5, 2), day = digits(text, 8, 2);
+  const auto hour = digits(text, 11, 2), minute = digits(text, 14, 2), second = digits(text, 17, 2);
+  if (!year || !month || !day || !hour || !minute || !second || text.size() < 20 || text[4] != '-' ||
+      text[7] != '-' || text[10] != 'T' || text[13] != ':' || text[16] != ':' || text.back() != 'Z')
+    return std::nullopt;
+  std::tm tm{};
+  tm.tm_year = *year - 1900;
+  tm.tm_mon = *month - 1;
+  tm.tm_mday = *day;
+  tm.tm_hour = *hour;
+  tm.tm_min = *minute;
+  tm.tm_sec = *second;
+  const std::time_t seconds = ::timegm(&tm);
+  if (seconds < 0) return std::nullopt;
+  std::uint64_t fraction_ns = 0;
+  std::size_t at = 19;
+  if (text[at] == '.') {
+    std::uint64_t scale = 100'000'000;
+    for (++at; at + 1 < text.size(); ++at) {
+      if (text[at] < '0' || text[at] > '9') return std::nullopt;
+      fraction_ns += static_cast<std::uint64_t>(text[at] - '0') * scale;
+      scale /= 10;
+    }
+  }
+  if (at != text.size() - 1) return std::nullopt;
+  return static_cast<std::uint64_t>(seconds) * 1'000'000'000u + fraction_ns;
+}
+
+RosTopicEncoder::RosTopicEncoder(RosExportOptions options) : options_(std::move(options)) {
+  if (options_.model) {
+    profile_ = &profile_for(*options_.model);
+    decoder_ = std::make_unique<ScanDecoder>(*profile_, options_.distance_scale);
+  }
+}
+
+void RosTopicEncoder::metadata(const RecordingMetadata& changes) {
+  metadata_.merge(changes);
+  if (changes.start_wall_time)
+    if (const auto ns = parse_iso8601_utc_ns(*changes.start_wall_time)) wall_start_ns_ = *ns;
+  if (profile_ || !metadata_.model) return;
+  profile_ = find_profile(*metadata_.model);
+  if (profile_)
+    decoder_ = std::make_unique<ScanDecoder>(*profile_, options_.distance_scale ? options_.distance_scale : metadata_.distance_scale);
+}
+
+std::uint64_t RosTopicEncoder::log_time(std::int64_t t_ns) const {
+  return wall_start_ns_ + static_cast<std::uint64_t>(t_ns < 0 ? 0 : t_ns);
+}
+
+void RosTopicEncoder::device_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit) {
+  last_t_ns_ = t_ns;
+  if (!seen_bytes_) {
+    seen_bytes_ = true;
+    next_diagnostics_ns_ = t_ns + kDiagnosticsPeriodNs;
+  }
+  if (options_.link_bytes) {
+    encode_link_bytes(bytes, message_);
+    emit(RosTopic::DeviceBytes, log_time(t_ns), message_);
+  }
+  if (decoder_) decoder_->feed(bytes, t_ns, [&](const Lap& lap) { on_lap(lap, emit); });
+  maybe_diagnostics(t_ns, emit);
+}
+
+void RosTopicEncoder::host_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit) {
+  last_t_ns_ = t_ns;
+  if (options_.link_bytes) {
+    encode_link_bytes(bytes, message_);
+    emit(RosTopic::HostBytes, log_time(t_ns), message_);
+  }
+  maybe_diagnostics(t_ns, emit);
+}
+
+void RosTopicEncoder::finish(MessageFn emit) {
+  if (decoder_) decoder_->finish([&](const Lap& lap) { on_lap(lap, emit); });
+  if (!seen_bytes_) return;
+  encode_diagnostics(diagnostics(), options_.frame.frame_id, log_time(last_t_ns_), message_);
+  emit(RosTopic::Diagnostics, log_time(last_t_ns_), message_);
+}
+
+void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
+  ++laps_;
+  if (decoded.scan_hz && decoded.ct_info_trusted()) reported_scan_hz_ = decoded.scan_hz;
+  if (!window_first_close_ns_) window_first_close_ns_ = decoded.last_rx_ns;
+  window_last_close_ns_ = decoded.last_rx_ns;
+  ++window_laps_;
+  const double scan_time_s =
+      previous_close_ns_ ? static_cast<double>(decoded.last_rx_ns - *previous_close_ns_) / 1e9 : 0.0;
+  previous_close_ns_ = decoded.last_rx_ns;
+
+  const Lap* lap = &decoded;
+  if (options_.filter.any()) {
+    filtered_.points = decoded.points;
+    filter_interference(filtered_, options_.filter);
+    lap = &filtered_;
+  }
+  const std::uint64_t stamp = log_time(decoded.last_rx_ns);
+  encode_laser_scan(*lap, options_.frame, range_limits(profile_->model), stamp, scan_time_s, scan_scratch_, message_);
+  emit(RosTopic::Scan, stamp, message_);
+  encode_point_cloud(*lap, options_.frame, stamp, message_);
+  emit(RosTopic::Points, stamp, message_);
+}
+
+void RosTopicEncoder::maybe_diagnostics(std::int64_t t_ns, MessageFn emit) {
+  if (t_ns < next_diagnostics_ns_) return;
+  next_diagnostics_ns_ = t_ns + kDiagnosticsPeriodNs;
+  // Laps closed in the window since the last report: (n - 1) intervals between n closes.
+  if (window_laps_ >= 2 && window_last_close_ns_ > *window_first_close_ns_)
+    measured_scan_hz_ = static_cast<double>(window_laps_ - 1) * 1e9 /
+                        static_cast<double>(window_last_close_ns_ - *window_first_close_ns_);
+  else if (window_laps_ == 0)
+    measured_scan_hz_.reset();
+  window_first_close_ns_.reset();
+  window_laps_ = 0;
+  encode_diagnostics(diagnostics(), options_.frame.frame_id, log_time(t_ns), message_);
+  emit(RosTopic::Diagnostics, log_time(t_ns), message_);
+}
+
+std::optional<DecoderCounters> RosTopicEncoder::counters() const {
+  if (!decoder_) return std::nullopt;
+  return decoder_->counters();
+}
+
+DiagnosticReport RosTopicEncoder::diagnostics() const {
+  DiagnosticReport report;
+  const auto extra = [this](const char* key) -> std::optional<std::string> {
+    const auto it = metadata_.extra.find(key);
+    if (it == metadata_.extra.end()) return std::nullopt;
+    return it->second;
+  };
+  const std::string model = profile_ ? std::string(profile_->name) : metadata_.model.value_or("unknown model");
+  report.name = "ydscope: " + model + " lidar";
+  report.hardware_id = metadata_.serial.value_or(metadata_.port.value_or(""));
+  const auto health = extra("health");
+  report.message = health ? "health: " + *health : "health not read";
+  const auto c = counters();
+  const bool health_ok = !health || *health == "ok";
+  if (!health_ok) report.level = 2;
+  else if (c && (c->checksum_errors || c->crc_mismatches)) report.level = 1;
+  if (!measured_scan_hz_ && seen_bytes_ && profile_) {
+    report.level = std::max<std::uint8_t>(report.level, 1);
+    report.message += "; no complete lap in the last second";
+  }
+  auto& v = report.values;
+  v.emplace_back("model", model);
+  if (metadata_.model_code) v.emplace_back("model_code", std::to_string(*metadata_.model_code));
+  if (metadata_.firmware) v.emplace_back("firmware", *metadata_.firmware);
+  if (metadata_.hardware) v.emplace_back("hardware", std::to_string(*metadata_.hardware));
+  if (metadata_.serial) v.emplace_back("serial", *metadata_.serial);
+  if (metadata_.port) v.emplace_back("port", *metadata_.port);
+  v.emplace_back("health", health.value_or("unknown"));
+  v.emplace_back("scan_hz_set", extra("scan_hz").value_or("unknown"));
+  v.emplace_back("scan_hz_measured", measured_scan_hz_ ? fixed(*measured_scan_hz_, 2) : "none");
+  if (reported_scan_hz_) v.emplace_back("scan_hz_reported", fixed(*reported_scan_hz_, 1));
+  v.emplace_back("ranging_khz", extra("ranging_khz").value_or("unknown"));
+  if (const auto pdp = extra("power_down_protection")) v.emplace_back("power_down_protection", *pdp);
+  if (decoder_) v.emplace_back("distance_scale_mm", fixed(decoder_->distance_scale(), 4));
+  v.emplace_back("laps", std::to_string(laps_));
+  if (c) {
+    v.emplace_back("packets", std::to_string(c->packets));
+    v.emplace_back("checksum_errors", std::to_string(c->checksum_errors));
+    if (profile_ && profile_->last_crc_before_zero) {
+      v.emplace_back("crc8_ok", std::to_string(c->crc_ok));
+      v.emplace_back("crc8_mismatches", std::to_string(c->crc_mismatches));
+    }
+    v.emplace_back("resync_bytes", std::to_string(c->resync_bytes));
+    v.emplace_back("discarded_packets", std::to_string(c->discarded_packets));
+    v.emplace_back("overflow_points", std::to_string(c->overflow_points));
+  }
+  for (const auto& kv : extra_) v.push_back(kv);
+  return report;
+}
+
+}  // namespace ydscope

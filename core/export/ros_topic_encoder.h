@@ -1,0 +1,106 @@
+#pragma once
+// RosTopicEncoder: the records of a recording (.ydrec on disk, or the live session's record tap)
+// in, ROS 2 messages out, for any sink (an MCAP file, the WebSocket bridge). It decodes the
+// device->host bytes itself with the same ScanDecoder that `ydscope-cli decode` uses, so /scan
+// and /points carry exactly what decode prints for the same bytes.
+//
+// Topics: /scan (sensor_msgs/msg/LaserScan), /points (sensor_msgs/msg/PointCloud2),
+// /diagnostics (diagnostic_msgs/msg/DiagnosticArray, once per second of recorded time), and the
+// link bytes with their times on /ydscope/device_bytes and /ydscope/host_bytes
+// (std_msgs/msg/UInt8MultiArray), so the file can be decoded again exactly like a .ydrec.
+//
+// Times: a record at t_ns (since the recording started) is logged at start_wall_time + t_ns,
+// in ns since the Unix epoch; a lap at the time of its closing byte. Not thread-safe.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/export/ros_encoding.h"
+#include "core/export/ros_schemas.h"
+#include "core/protocol/function_ref.h"
+#include "core/protocol/interference_filter.h"
+#include "core/protocol/scan_decoder.h"
+#include "core/record/recording_metadata.h"
+
+namespace ydscope {
+
+enum class RosTopic : std::uint8_t { Scan, Points, Diagnostics, DeviceBytes, HostBytes };
+inline constexpr std::size_t kRosTopicCount = 5;
+
+struct RosTopicInfo {
+  RosTopic topic;
+  std::string_view name;  // "/scan"
+  const RosSchema* schema;
+};
+std::span<const RosTopicInfo> ros_topics();
+
+struct RosExportOptions {
+  RosFrameOptions frame;
+  std::optional<Model> model;             // forced; otherwise the recording's model
+  std::optional<double> distance_scale;   // forced; otherwise the recording's, else the model's
+  InterferenceFilter filter;              // applied to /scan and /points only
+  bool link_bytes = true;                 // publish /ydscope/device_bytes and /ydscope/host_bytes
+};
+
+// ns since the Unix epoch of "2026-11-22T02:20:00.123Z" (fraction optional); empty if malformed.
+std::optional<std::uint64_t> parse_iso8601_utc_ns(std::string_view text);
+
+class RosTopicEncoder {
+ public:
+  // One encoded message; `cdr` is valid only during the call.
+  using MessageFn = FunctionRef<void(RosTopic topic, std::uint64_t log_time_ns, std::span<const std::uint8_t> cdr)>;
+
+  explicit RosTopicEncoder(RosExportOptions options);
+
+  // A metadata record: merged; sets the model (unless forced) and the time base.
+  void metadata(const RecordingMetadata& changes);
+  void device_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit);
+  void host_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit);
+  // End of the recording: laps still held back by the decoder, and a last /diagnostics.
+  void finish(MessageFn emit);
+
+  // Changes apply from the next lap (the bridge's filter parameters).
+  void set_filter(InterferenceFilter filter) { options_.filter = filter; }
+  const InterferenceFilter& filter() const { return options_.filter; }
+  // Extra diagnostic values (e.g. the live tap's dropped records); replaced on each call.
+  void set_extra_diagnostics(std::vector<std::pair<std::string, std::string>> values) { extra_ = std::move(values); }
+
+  const RecordingMetadata& recording_metadata() const { return metadata_; }
+  // Empty before the model is known.
+  std::optional<DecoderCounters> counters() const;
+  std::uint64_t laps() const { return laps_; }
+  // The report /diagnostics would carry now.
+  DiagnosticReport diagnostics() const;
+
+ private:
+  void on_lap(const Lap& lap, MessageFn emit);
+  void maybe_diagnostics(std::int64_t t_ns, MessageFn emit);
+  std::uint64_t log_time(std::int64_t t_ns) const;
+
+  RosExportOptions options_;
+  RecordingMetadata metadata_;
+  std::uint64_t wall_start_ns_ = 0;
+  const ModelProfile* profile_ = nullptr;
+  std::unique_ptr<ScanDecoder> decoder_;
+  std::int64_t last_t_ns_ = 0;
+  std::int64_t next_diagnostics_ns_ = 0;
+  bool seen_bytes_ = false;
+  std::uint64_t laps_ = 0;
+  std::optional<std::int64_t> previous_close_ns_;
+  // Lap closes of the current diagnostics window, for the measured scan rate.
+  std::optional<std::int64_t> window_first_close_ns_;
+  std::int64_t window_last_close_ns_ = 0;
+  std::uint64_t window_laps_ = 0;
+  std::optional<double> measured_scan_hz_;
+  std::optional<double> reported_scan_hz_;  // G1 CT
+  std::vector<std::pair<std::string, std::string>> extra_;
+  Lap filtered_;
+  std::vector<float> scan_scratch_;
+  std::vector<std::uint8_t> message_;
+};
+
+}  // namespace ydscope

@@ -1,0 +1,222 @@
+// The ROS 2 messages: CDR layout, /scan binned as the official driver bins, /points exact, and
+// the record stream -> topics path giving exactly the laps ScanDecoder gives.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/export/cdr_writer.h"
+#include "core/export/mcap_recording_export.h"
+#include "core/export/ros_encoding.h"
+#include "core/export/ros_topic_encoder.h"
+#include "core/protocol/scan_decoder.h"
+#include "core/protocol/scan_packet.h"
+#include "export/cdr_test_reader.h"
+#include "export/mcap_test_reader.h"
+
+namespace ydscope {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(CdrWriter, AlignsFromTheEndOfTheEncapsulationHeader) {
+  std::vector<std::uint8_t> out;
+  CdrWriter cdr(out);
+  cdr.u8(7);
+  cdr.u32(0x01020304);
+  cdr.string("ab");
+  cdr.f64(1.0);
+  const std::vector<std::uint8_t> expected = {0, 1, 0, 0,  7, 0, 0, 0,  4, 3, 2, 1,  3, 0, 0, 0, 'a', 'b', 0,
+                                              0,  // to 8-byte alignment: offset 16 after the header
+                                              0, 0, 0, 0, 0, 0, 0xF0, 0x3F};
+  EXPECT_EQ(out, expected);
+}
+
+TEST(RosAngle, FollowsTheDriversReversionAndInversion) {
+  RosFrameOptions frame;  // reversion and inverted, as the official parameter files
+  EXPECT_NEAR(ros_angle_rad(0.0f, frame), kPi, 1e-12);        // device 0 deg -> behind
+  EXPECT_NEAR(ros_angle_rad(90.0f, frame), kPi / 2, 1e-12);   // clockwise 90 -> counter-clockwise +90
+  EXPECT_NEAR(ros_angle_rad(180.0f, frame), 0.0, 1e-12);
+  EXPECT_NEAR(ros_angle_rad(270.0f, frame), -kPi / 2, 1e-12);
+  frame.reversion = frame.inverted = false;
+  EXPECT_NEAR(ros_angle_rad(270.0f, frame), -kPi / 2, 1e-12);
+  EXPECT_NEAR(ros_angle_rad(90.0f, frame), kPi / 2, 1e-12);
+}
+
+Lap four_point_lap() {
+  Lap lap;
+  lap.points = {{10.0f, 1000.0f, PointFlag::None},
+                {100.0f, 30000.0f, PointFlag::None},  // beyond G6's 25 m: /scan zeroes it
+                {190.0f, 2500.5f, PointFlag::Specular},
+                {280.0f, 0.0f, PointFlag::None}};
+  return lap;
+}
+
+TEST(LaserScan, BinsLikeTheOfficialDriver) {
+  RosFrameOptions frame;
+  frame.frame_id = "lidar_0";
+  std::vector<float> scratch;
+  std::vector<std::uint8_t> out;
+  encode_laser_scan(four_point_lap(), frame, range_limits(Model::G6), 12'000'000'123ull, 0.1, scratch, out);
+  test::CdrReader r(out);
+  EXPECT_EQ(r.i32(), 12);
+  EXPECT_EQ(r.u32(), 123u);
+  EXPECT_EQ(r.str(), "lidar_0");
+  EXPECT_FLOAT_EQ(r.f32(), static_cast<float>(-kPi));
+  EXPECT_FLOAT_EQ(r.f32(), static_cast<float>(kPi));
+  const float increment = r.f32();
+  EXPECT_FLOAT_EQ(increment, static_cast<float>(2 * kPi / 3));  // 4 points: 3 intervals
+  EXPECT_FLOAT_EQ(r.f32(), 0.1f / 4);
+  EXPECT_FLOAT_EQ(r.f32(), 0.1f);
+  EXPECT_FLOAT_EQ(r.f32(), 0.1f);
+  EXPECT_FLOAT_EQ(r.f32(), 25.0f);
+  const auto ranges = r.f32s();
+  const auto intensities = r.f32s();
+  EXPECT_TRUE(r.at_end());
+  ASSERT_EQ(ranges.size(), 4u);
+  // ROS angle = 180 - device angle; bin = ceil((angle + 180) / 120 deg): 10 deg -> 170 -> bin 3,
+  // 100 -> 80 -> bin 3 (overwrites, with its range zeroed), 190 -> -10 -> bin 2, 280 -> -100 -> bin 1.
+  EXPECT_EQ(ranges[0], 0.0f);
+  EXPECT_EQ(ranges[1], 0.0f);                              // no return
+  EXPECT_FLOAT_EQ(ranges[2], 2.5005f);
+  EXPECT_EQ(intensities[2], 2.0f);                         // the G1 flag
+  EXPECT_EQ(ranges[3], 0.0f);                              // 30 m is out of range
+}
+
+TEST(PointCloud2, KeepsEveryPointExactly) {
+  const Lap lap = four_point_lap();
+  std::vector<std::uint8_t> out;
+  encode_point_cloud(lap, RosFrameOptions{}, 5, out);
+  test::CdrReader r(out);
+  r.i32();
+  r.u32();
+  EXPECT_EQ(r.str(), "laser");
+  EXPECT_EQ(r.u32(), 1u);
+  EXPECT_EQ(r.u32(), 4u);
+  const std::uint32_t fields = r.u32();
+  ASSERT_EQ(fields, 6u);
+  std::vector<std::string> names;
+  for (std::uint32_t i = 0; i < fields; ++i) {
+    names.push_back(r.str());
+    r.u32();
+    r.u8();
+    EXPECT_EQ(r.u32(), 1u);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"x", "y", "z", "range", "angle", "flag"}));
+  EXPECT_EQ(r.u8(), 0);  // is_bigendian
+  EXPECT_EQ(r.u32(), kPointStep);
+  EXPECT_EQ(r.u32(), 4 * kPointStep);
+  ASSERT_EQ(r.u32(), 4 * kPointStep);
+  const std::uint8_t* data = r.take(4 * kPointStep);
+  EXPECT_EQ(r.u8(), 1);  // is_dense
+  EXPECT_TRUE(r.at_end());
+  for (std::size_t i = 0; i < 4; ++i) {
+    float v[5];
+    std::memcpy(v, data + i * kPointStep, sizeof v);
+    EXPECT_FLOAT_EQ(v[3], lap.points[i].range_mm / 1000.0f);
+    EXPECT_EQ(v[4], lap.points[i].angle_deg);
+    EXPECT_EQ(data[i * kPointStep + 20], static_cast<std::uint8_t>(lap.points[i].flag));
+    const double a = ros_angle_rad(lap.points[i].angle_deg, RosFrameOptions{});
+    EXPECT_NEAR(v[0], v[3] * std::cos(a), 1e-5);
+    EXPECT_NEAR(v[1], v[3] * std::sin(a), 1e-5);
+  }
+}
+
+// A G6 stream of `laps` laps, split into records of 100 bytes that are 1 ms apart.
+std::vector<std::uint8_t> g6_stream(int laps) {
+  std::vector<std::uint8_t> out;
+  std::uint16_t value = 4000;
+  for (int lap = 0; lap <= laps; ++lap) {
+    append_scan_packet({kCtLapStart, encode_raw_angle(0), encode_raw_angle(0), std::vector<std::uint16_t>{0}}, out);
+    if (lap == laps) break;
+    for (int i = 0; i < 12; ++i) {
+      std::vector<std::uint16_t> samples(30);
+      for (auto& s : samples) s = value = static_cast<std::uint16_t>(value * 31 + 7);
+      append_scan_packet({0, encode_raw_angle(i * 30.0 + 0.2), encode_raw_angle(i * 30.0 + 29.8), samples}, out);
+    }
+  }
+  return out;
+}
+
+TEST(McapRecordingExport, CarriesExactlyTheLapsTheDecoderGives) {
+  const auto stream = g6_stream(30);
+  std::vector<Lap> expected;
+  ScanDecoder decoder(profile_for(Model::G6));
+  decoder.feed(stream, 0, [&](const Lap& lap) { expected.push_back(lap); });
+  decoder.finish([&](const Lap& lap) { expected.push_back(lap); });
+  ASSERT_GE(expected.size(), 29u);
+
+  McapMemorySink sink;
+  McapRecordingExport exporter(sink, {});
+  RecordingMetadata metadata;
+  metadata.model = "G6";
+  metadata.start_wall_time = "2026-12-01T20:00:00.5Z";
+  exporter.metadata(metadata, 0);
+  std::int64_t t = 0;
+  for (std::size_t at = 0; at < stream.size(); at += 100, t += 1'000'000)
+    exporter.record(RecordType::DeviceToHost, std::span(stream).subspan(at, std::min<std::size_t>(100, stream.size() - at)), t);
+  exporter.record(RecordType::HostToDevice, std::vector<std::uint8_t>{0xA5, 0x65}, t);
+  ASSERT_TRUE(exporter.finish()) << exporter.error();
+
+  const auto contents = test::read_mcap(sink.bytes());
+  ASSERT_TRUE(contents.complete);
+  std::map<std::string, std::uint16_t> ids;
+  for (const auto& [id, channel] : contents.channels) {
+    ids[channel.topic] = id;
+    EXPECT_EQ(channel.encoding, "cdr");
+    EXPECT_TRUE(channel.metadata.count("offered_qos_profiles"));
+    EXPECT_EQ(contents.schemas.at(channel.schema_id).encoding, "ros2msg");
+  }
+  std::size_t scans = 0, clouds = 0, diagnostics = 0, link_bytes = 0;
+  std::vector<std::uint8_t> device_bytes;
+  for (const auto& m : contents.messages) {
+    EXPECT_GE(m.log_time, 1'796'155'200'500'000'000ull);  // 2026-12-01T20:00:00.5Z
+    if (m.channel_id == ids["/points"]) {
+      const Lap& lap = expected.at(clouds++);
+      test::CdrReader r(m.data);
+      r.i32();
+      r.u32();
+      r.str();
+      r.u32();
+      ASSERT_EQ(r.u32(), lap.points.size());
+      for (int i = 0; i < 6; ++i) r.str(), r.u32(), r.u8(), r.u32();
+      r.u8(), r.u32(), r.u32(), r.u32();
+      const std::uint8_t* data = r.take(lap.points.size() * kPointStep);
+      for (std::size_t i = 0; i < lap.points.size(); ++i) {
+        float range_m, angle;
+        std::memcpy(&range_m, data + i * kPointStep + 12, 4);
+        std::memcpy(&angle, data + i * kPointStep + 16, 4);
+        EXPECT_EQ(angle, lap.points[i].angle_deg);
+        EXPECT_FLOAT_EQ(range_m, lap.points[i].range_mm / 1000.0f);
+      }
+    } else if (m.channel_id == ids["/scan"]) {
+      ++scans;
+    } else if (m.channel_id == ids["/diagnostics"]) {
+      ++diagnostics;
+    } else if (m.channel_id == ids["/ydscope/device_bytes"]) {
+      test::CdrReader r(m.data);
+      EXPECT_EQ(r.u32(), 0u);
+      EXPECT_EQ(r.u32(), 0u);
+      const std::uint32_t n = r.u32();
+      const std::uint8_t* p = r.take(n);
+      device_bytes.insert(device_bytes.end(), p, p + n);
+      ++link_bytes;
+    }
+  }
+  EXPECT_EQ(clouds, expected.size());
+  EXPECT_EQ(scans, expected.size());
+  EXPECT_EQ(device_bytes, stream);  // the raw channel gives the bytes back exactly
+  EXPECT_GE(diagnostics, 1u);
+  EXPECT_EQ(contents.metadata.back().at("model"), "G6");
+}
+
+TEST(Iso8601, ParsesTheRecordingsStartTime) {
+  EXPECT_EQ(parse_iso8601_utc_ns("1970-01-01T00:00:01.25Z"), 1'250'000'000ull);
+  EXPECT_EQ(parse_iso8601_utc_ns("2026-12-01T20:00:00Z"), 1'796'155'200'000'000'000ull);
+  EXPECT_FALSE(parse_iso8601_utc_ns("2026-12-01 20:00:00"));
+  EXPECT_FALSE(parse_iso8601_utc_ns("yesterday"));
+}
+
+}  // namespace
+}  // namespace ydscope
