@@ -14,17 +14,19 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
+#include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "core/protocol/function_ref.h"
 #include "core/protocol/interference_filter.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/scan_decoder.h"
+#include "core/record/recording_reader.h"
 
 namespace ydscope::cli {
 namespace {
 
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli decode --model MODEL [--format jsonl|summary] [--filter LIST]
-                          [--distance-scale X] FILE|-
+                          [--distance-scale X] [--mcap OUT.mcap [MCAP options]] FILE|-
 
 Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete laps.
 
@@ -46,6 +48,12 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
                        model's value (G1 1, G6 0.25, TG 0.5). Some vendor-SDK firmware uses other
                        scales (G6 0.5; TG firmware above 1.2 uses 1). From 0.000001 to 1000000;
                        a recording's scale outside that range is ignored with a warning.
+  --mcap OUT.mcap      also write the laps as an MCAP file (the topics of `ydscope-cli export
+                       --help`; --filter does not apply to it). Raw bytes carry no times: each
+                       byte is timed as if it arrived at the model's baud rate from t=0 (Unix
+                       epoch). With --mcap, --format defaults to summary. An existing OUT.mcap is
+                       refused unless --force is given.
+)" YDSCOPE_MCAP_OPTIONS_HELP R"(  --force              overwrite OUT.mcap
 
 A lap runs from a zero packet (CT bit 0 set), inclusive, to the next one, exclusive. Bytes before
 the first zero packet and a cut-off packet at the end are not part of any lap.
@@ -130,8 +138,41 @@ InterferenceFilter parse_filter(const std::string& list) {
   return filter;
 }
 
+// --mcap: the same input as an MCAP file. A recording's records go in with their times; raw
+// bytes in small pieces timed at the line rate, so laps get distinct, plausible stamps.
+void write_mcap(const Arguments& args, const std::string& path, bool recording, const ModelProfile& profile,
+                std::optional<double> scale) {
+  const std::string out = *args.value("mcap");
+  McapExportOptions options = mcap_options_from(args);
+  options.ros.model = profile.model;
+  options.ros.distance_scale = scale;
+  std::string error;
+  auto exporter = McapRecordingExport::create(out, options, error);
+  if (!exporter) throw std::runtime_error(error);
+  if (recording) {
+    auto reader = RecordingReader::open(path, error);
+    if (!reader) throw std::runtime_error(error);
+    RecordView record;
+    while (reader->next(record) && !exporter->failed()) exporter->record(record.type, record.payload, record.t_ns);
+  } else {
+    constexpr std::size_t kPiece = 512;
+    const double ns_per_byte = 10e9 / profile.default_baud;  // 8N1: ten bits a byte
+    std::uint64_t bytes = 0;
+    const InputFile again = open_input(path);  // the first pass read it to the end
+    read_input(again.get(), path, [&](std::span<const std::uint8_t> chunk) {
+      for (std::size_t at = 0; at < chunk.size(); at += kPiece) {
+        const auto piece = chunk.subspan(at, std::min(kPiece, chunk.size() - at));
+        bytes += piece.size();
+        exporter->record(RecordType::DeviceToHost, piece, static_cast<std::int64_t>(static_cast<double>(bytes) * ns_per_byte));
+      }
+    });
+  }
+  if (!exporter->finish()) throw std::runtime_error("writing " + out + " failed: " + exporter->error());
+}
+
 int run_decode(std::span<const std::string> raw) {
-  const Arguments args(raw, {"model", "format", "filter", "distance-scale"}, {}, /*max_positionals=*/1);
+  const Arguments args(raw, with_mcap_value_options({"model", "format", "filter", "distance-scale", "mcap"}),
+                       with_mcap_flags({"force"}), /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (or - for standard input)");
   const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
@@ -140,7 +181,12 @@ int run_decode(std::span<const std::string> raw) {
   const ModelProfile* profile = recording ? &recording_profile(args.value("model"), *recording, path) : find_profile(model);
   if (!profile)
     throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
-  const std::string format = args.value("format").value_or("jsonl");
+  const auto mcap = args.value("mcap");
+  if (mcap) refuse_to_overwrite(*mcap, args, "--mcap");
+  if (!mcap && (args.value("compression") || args.value("frame-id") || args.has("no-link-bytes") || args.has("force")))
+    throw UsageError("--compression, --frame-id, --no-link-bytes and --force go with --mcap OUT.mcap");
+  if (mcap && path == "-") throw UsageError("--mcap needs a FILE, not standard input");
+  const std::string format = args.value("format").value_or(mcap ? "summary" : "jsonl");
   if (format != "jsonl" && format != "summary")
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
@@ -165,6 +211,7 @@ int run_decode(std::span<const std::string> raw) {
   decoder.finish(on_lap);
   write_summary(out, decoder.counters());
   out.flush();
+  if (mcap) write_mcap(args, path, recording.has_value(), *profile, scale);
   if (std::fflush(stdout) != 0) throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
   return kExitOk;
 }

@@ -1,0 +1,113 @@
+// ydscope-cli export: a recording (.ydrec) -> an MCAP file that Foxglove and ROS 2 tools open.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "app/common/arguments.h"
+#include "app/cli/cli_command.h"
+#include "app/cli/mcap_output.h"
+#include "app/cli/recording_input.h"
+#include "core/export/mcap_recording_export.h"
+#include "core/record/recording_reader.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli export REC.ydrec --mcap OUT.mcap [--model MODEL] [--distance-scale X]
+                          [--compression zstd|lz4|none] [--frame-id ID] [--no-link-bytes] [--force]
+
+Converts a recording (from `ydscope-cli record` or the app) into an MCAP file (profile ros2, every
+channel CDR with a ros2msg schema) that Foxglove, `ros2 bag play` and the MCAP tools open:
+
+  /scan                   sensor_msgs/msg/LaserScan, one per lap, binned like the official ROS 2
+                          driver (angle_min -pi, angle_max pi, one bin per point, ROS angles
+                          counter-clockwise with the driver's 180-degree turn); stamp = receive
+                          time of the lap's closing byte
+  /points                 sensor_msgs/msg/PointCloud2, every point of the lap: x y z (m), range (m),
+                          angle (the corrected device angle in degrees) and the G1 flag
+  /diagnostics            diagnostic_msgs/msg/DiagnosticArray once per recorded second: device,
+                          health, set and measured scan rate, ranging frequency, error counters
+  /ydscope/device_bytes   std_msgs/msg/UInt8MultiArray, the bytes exactly as recorded, both ways,
+  /ydscope/host_bytes     so the MCAP can be decoded again like the recording
+
+The laps are the ones `ydscope-cli decode REC.ydrec` prints. Times are the recording's start
+wall-clock time plus each record's time.
+
+options:
+  --mcap OUT.mcap    the file to write; an existing file is refused unless --force is given
+  --model MODEL      decode as this model instead of the recording's
+  --distance-scale X mm per raw distance unit, instead of the recording's
+)" YDSCOPE_MCAP_OPTIONS_HELP R"(  --force            overwrite OUT.mcap
+
+On a terminal, progress is shown on stderr. Output: one line on stdout,
+  exported REC.ydrec -> OUT.mcap: L laps, M messages in C chunks, B bytes
+
+exit status: 0 exported (a recording cut off at its end is exported up to the cut, with a warning);
+1 reading or writing failed; 2 usage error.
+
+examples:
+  ydscope-cli export bench.ydrec --mcap bench.mcap
+  ydscope-cli export g6.ydrec --mcap g6.mcap --compression lz4 --frame-id base_laser
+)";
+
+using Clock = std::chrono::steady_clock;
+
+int run_export(std::span<const std::string> raw) {
+  const Arguments args(raw, with_mcap_value_options({"mcap", "model", "distance-scale"}), with_mcap_flags({"force"}),
+                       /*max_positionals=*/1);
+  const std::string path = args.single_positional("REC.ydrec");
+  const std::string out = args.required("mcap");
+  if (!std::filesystem::exists(path)) throw UsageError("recording '" + path + "' was not found");
+  if (!is_recording_file(path))
+    throw UsageError(path + " is not a ydscope recording (.ydrec); for raw lidar bytes use `ydscope-cli decode --model MODEL --mcap " + out + " " + path + "`");
+  refuse_to_overwrite(out, args, "--mcap");
+  McapExportOptions options = mcap_options_from(args);
+  // One pass for the merged metadata: the model may be named only after the recording started.
+  const auto metadata = recording_metadata_of(path);
+  options.ros.model = recording_profile(args.value("model"), *metadata, path).model;
+  options.ros.distance_scale = args.number("distance-scale", 1e-6, 1e6);
+
+  std::string error;
+  auto reader = RecordingReader::open(path, error);
+  if (!reader) throw std::runtime_error(error);
+  auto exporter = McapRecordingExport::create(out, options, error);
+  if (!exporter) throw std::runtime_error(error);
+
+  const bool tty = ::isatty(STDERR_FILENO) == 1;
+  const double total = static_cast<double>(std::filesystem::file_size(path));
+  auto last_progress = Clock::now();
+  RecordView record;
+  while (reader->next(record)) {
+    exporter->record(record.type, record.payload, record.t_ns);
+    if (exporter->failed()) break;
+    if (tty && Clock::now() - last_progress > std::chrono::milliseconds(200)) {
+      last_progress = Clock::now();
+      std::fprintf(stderr, "\r\033[Kexporting %s: %.0f%% (%.0f s of recording, %llu laps)", path.c_str(),
+                   100.0 * static_cast<double>(record.file_offset) / total, static_cast<double>(record.t_ns) / 1e9,
+                   static_cast<unsigned long long>(exporter->encoder().laps()));
+      std::fflush(stderr);
+    }
+  }
+  if (tty) std::fputs("\r\033[K", stderr);
+  const bool ok = exporter->finish();
+  if (!ok) throw std::runtime_error("writing " + out + " failed: " + exporter->error());
+  const auto& stats = exporter->statistics();
+  std::printf("exported %s -> %s: %llu laps, %llu messages in %u chunks, %llu bytes\n", path.c_str(), out.c_str(),
+              static_cast<unsigned long long>(exporter->encoder().laps()),
+              static_cast<unsigned long long>(stats.message_count), stats.chunk_count,
+              static_cast<unsigned long long>(exporter->bytes_written()));
+  std::fflush(stdout);
+  if (reader->corrupt() || reader->truncated())
+    std::fprintf(stderr, "ydscope-cli export: warning: %s\n", (reader->corrupt() ? reader->error() : reader->warning()).c_str());
+  return kExitOk;
+}
+
+const RegisterCliCommand registration{
+    {"export", "convert a recording to MCAP for Foxglove and ROS 2 (/scan, /points, ...)", kHelpText, &run_export}};
+
+}  // namespace
+}  // namespace ydscope::cli
