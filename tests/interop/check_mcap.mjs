@@ -1,0 +1,186 @@
+// Independent check of an MCAP file written by ydscope, with readers nobody here wrote: the
+// official @mcap/core readers (indexed and streaming, CRCs validated) and Foxglove's ROS 2
+// deserialiser. Usage:
+//   node check_mcap.mjs --cli YDSCOPE_CLI --mcap FILE --source REC.ydrec|RAW [--model MODEL]
+// It checks that every message decodes, that the summary agrees with the messages, that /points
+// equals what `ydscope-cli decode SOURCE` prints, that /scan is /points binned as the official
+// ROS 2 driver bins, and that the raw channel decodes again to the same laps.
+// Prints one line per check; exits 1 on the first failure with what differed.
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, openSync, readFileSync, readSync, fstatSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { McapIndexedReader, McapStreamReader } from "@mcap/core";
+import { loadDecompressHandlers } from "@mcap/support";
+import { parse as parseMessageDefinition } from "@foxglove/rosmsg";
+import { MessageReader } from "@foxglove/rosmsg2-serialization";
+
+const args = Object.fromEntries(
+  process.argv.slice(2).reduce((pairs, arg, i, all) => (arg.startsWith("--") ? [...pairs, [arg.slice(2), all[i + 1]]] : pairs), []),
+);
+for (const required of ["cli", "mcap", "source"]) {
+  if (!args[required]) {
+    console.error(`check_mcap: missing --${required}`);
+    process.exit(2);
+  }
+}
+
+function fail(what) {
+  console.error(`FAIL: ${what}`);
+  process.exit(1);
+}
+function ok(what) {
+  console.log(`ok: ${what}`);
+}
+
+process.on("uncaughtException", (error) => fail(error?.message ?? String(error)));
+const decompressHandlers = await loadDecompressHandlers();
+const fd = openSync(args.mcap, "r");
+const readable = {
+  size: async () => BigInt(fstatSync(fd).size),
+  read: async (offset, size) => {
+    const buffer = new Uint8Array(Number(size));
+    readSync(fd, buffer, 0, Number(size), Number(offset));
+    return buffer;
+  },
+};
+
+// 1. Indexed reader: the summary, the chunk indexes, every message through the index.
+const indexed = await McapIndexedReader.Initialize({ readable, decompressHandlers });
+if (indexed.header.profile !== "ros2") fail(`profile is '${indexed.header.profile}', not ros2`);
+const readers = new Map();
+for (const [id, channel] of indexed.channelsById) {
+  const schema = indexed.schemasById.get(channel.schemaId);
+  if (channel.messageEncoding !== "cdr") fail(`${channel.topic} is ${channel.messageEncoding}, not cdr`);
+  if (!schema || schema.encoding !== "ros2msg") fail(`${channel.topic} has no ros2msg schema`);
+  if (!channel.metadata.get("offered_qos_profiles")) fail(`${channel.topic} lacks offered_qos_profiles (ros2 profile)`);
+  const text = new TextDecoder().decode(schema.data);
+  readers.set(id, { topic: channel.topic, type: schema.name, reader: new MessageReader(parseMessageDefinition(text, { ros2: true })) });
+}
+const stats = indexed.statistics;
+if (!stats) fail("no Statistics record in the summary");
+const byTopic = new Map();
+const counts = new Map();
+let first = undefined, last = undefined, total = 0n;
+for await (const message of indexed.readMessages()) {
+  const channel = readers.get(message.channelId);
+  let decoded;
+  try {
+    decoded = channel.reader.readMessage(message.data);
+  } catch (error) {
+    fail(`message ${message.sequence} on ${channel.topic} does not decode as ${channel.type}: ${error}`);
+  }
+  if (!byTopic.has(channel.topic)) byTopic.set(channel.topic, []);
+  byTopic.get(channel.topic).push({ logTime: message.logTime, decoded });
+  counts.set(message.channelId, (counts.get(message.channelId) ?? 0n) + 1n);
+  first = first === undefined || message.logTime < first ? message.logTime : first;
+  last = last === undefined || message.logTime > last ? message.logTime : last;
+  total += 1n;
+}
+if (stats.messageCount !== total) fail(`statistics say ${stats.messageCount} messages, the index gives ${total}`);
+if (stats.chunkCount !== indexed.chunkIndexes.length) fail(`statistics say ${stats.chunkCount} chunks, ${indexed.chunkIndexes.length} chunk indexes`);
+if (stats.channelCount !== indexed.channelsById.size) fail("statistics channel count disagrees");
+if (total > 0n && (stats.messageStartTime !== first || stats.messageEndTime !== last)) fail("statistics start/end times disagree with the messages");
+for (const [id, n] of counts) if (stats.channelMessageCounts.get(id) !== n) fail(`channel ${id}: statistics ${stats.channelMessageCounts.get(id)} vs ${n} messages`);
+ok(`indexed reader: ${total} messages on ${readers.size} channels in ${indexed.chunkIndexes.length} chunks, every one decodes; statistics agree`);
+
+// 2. Streaming reader over the whole file, CRCs validated: the same messages.
+const stream = new McapStreamReader({ decompressHandlers, validateCrcs: true });
+stream.append(readFileSync(args.mcap));
+let streamed = 0n, footer = false;
+for (let record; (record = stream.nextRecord()); ) {
+  if (record.type === "Message") streamed += 1n;
+  if (record.type === "Footer") footer = true;
+}
+if (!stream.done() || !footer) fail("streaming reader did not reach the footer");
+if (streamed !== total) fail(`streaming reader found ${streamed} messages, the index ${total}`);
+ok(`streaming reader: ${streamed} messages, data/chunk/summary CRCs valid`);
+
+// 3. /points equals `ydscope-cli decode SOURCE`.
+const decodeArgs = (source) => ["decode", ...(args.model ? ["--model", args.model] : []), source];
+const laps = (jsonl) => jsonl.split("\n").filter((l) => l.startsWith('{"type":"lap"')).map((l) => JSON.parse(l));
+const decodedText = execFileSync(args.cli, decodeArgs(args.source), { maxBuffer: 1 << 30 }).toString();
+const expected = laps(decodedText);
+const clouds = byTopic.get("/points") ?? [];
+const scans = byTopic.get("/scan") ?? [];
+if (clouds.length !== expected.length) fail(`/points has ${clouds.length} messages, decode printed ${expected.length} laps`);
+if (scans.length !== expected.length) fail(`/scan has ${scans.length} messages, decode printed ${expected.length} laps`);
+const cloudPoints = (cloud) => {
+  const view = new DataView(cloud.data.buffer, cloud.data.byteOffset, cloud.data.byteLength);
+  const field = Object.fromEntries(cloud.fields.map((f) => [f.name, f.offset]));
+  const points = [];
+  for (let i = 0; i < cloud.width; i++) {
+    const at = i * cloud.point_step;
+    points.push({
+      x: view.getFloat32(at + field.x, true), y: view.getFloat32(at + field.y, true),
+      range: view.getFloat32(at + field.range, true), angle: view.getFloat32(at + field.angle, true),
+      flag: view.getUint8(at + field.flag),
+    });
+  }
+  return points;
+};
+let pointCount = 0;
+for (let i = 0; i < expected.length; i++) {
+  const points = cloudPoints(clouds[i].decoded);
+  const want = expected[i].points;
+  if (points.length !== want.length) fail(`lap ${i}: /points has ${points.length} points, decode ${want.length}`);
+  for (let j = 0; j < want.length; j++) {
+    const [angle, rangeMm, flag] = want[j];
+    const p = points[j];
+    // decode prints angles with 4 decimals and ranges (mm) with 2: equal within that rounding.
+    if (Math.abs(p.angle - angle) > 0.00005 + 1e-6 * Math.abs(angle)) fail(`lap ${i} point ${j}: angle ${p.angle} vs decode ${angle}`);
+    if (Math.abs(p.range * 1000 - rangeMm) > 0.005 + 1e-6 * rangeMm) fail(`lap ${i} point ${j}: range ${p.range} m vs decode ${rangeMm} mm`);
+    if (p.flag !== flag) fail(`lap ${i} point ${j}: flag ${p.flag} vs decode ${flag}`);
+  }
+  pointCount += want.length;
+}
+ok(`/points: ${expected.length} laps, ${pointCount} points equal to ydscope-cli decode`);
+
+// 4. /scan is /points binned as the official driver bins (YDLidar-SDK + ydlidar_ros2_driver):
+// ROS angle = normalize(2pi - (deg + pi)), increment 2pi/(n-1), bin ceil((angle + pi)/increment),
+// later points overwrite, ranges outside [range_min, range_max] are 0.
+const rosAngle = (deg) => {
+  let a = (deg * Math.PI) / 180 + Math.PI;
+  a = 2 * Math.PI - a;
+  a = ((a % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
+  return a > Math.PI ? a - 2 * Math.PI : a;
+};
+for (let i = 0; i < expected.length; i++) {
+  const scan = scans[i].decoded;
+  const points = cloudPoints(clouds[i].decoded);
+  const bins = Math.max(points.length, 2);
+  const increment = (2 * Math.PI) / (bins - 1);
+  const ranges = new Array(bins).fill(0);
+  for (const p of points) {
+    const index = Math.ceil((rosAngle(p.angle) + Math.PI) / increment);
+    if (index >= 0 && index < bins) ranges[index] = p.range >= scan.range_min && p.range <= scan.range_max ? p.range : 0;
+  }
+  if (Math.abs(scan.angle_min + Math.PI) > 1e-6 || Math.abs(scan.angle_max - Math.PI) > 1e-6) fail(`lap ${i}: /scan angle range is not -pi..pi`);
+  if (Math.fround(increment) !== scan.angle_increment) fail(`lap ${i}: angle_increment ${scan.angle_increment}, expected ${increment}`);
+  if (scan.ranges.length !== bins) fail(`lap ${i}: ${scan.ranges.length} bins, expected ${bins}`);
+  for (let b = 0; b < bins; b++) if (scan.ranges[b] !== ranges[b]) fail(`lap ${i} bin ${b}: /scan ${scan.ranges[b]}, binned /points ${ranges[b]}`);
+  if (scans[i].decoded.header.stamp.sec !== clouds[i].decoded.header.stamp.sec || scans[i].logTime !== clouds[i].logTime) fail(`lap ${i}: /scan and /points stamps differ`);
+}
+ok(`/scan: ${scans.length} scans binned exactly as the official driver would`);
+
+// 5. /diagnostics: decodes, names the device and its counters.
+const diagnostics = byTopic.get("/diagnostics") ?? [];
+if (diagnostics.length === 0) fail("no /diagnostics messages");
+const values = Object.fromEntries(diagnostics.at(-1).decoded.status[0].values.map((kv) => [kv.key, kv.value]));
+for (const key of ["model", "health", "scan_hz_set", "scan_hz_measured", "ranging_khz", "checksum_errors", "laps"])
+  if (!(key in values)) fail(`/diagnostics lacks ${key}`);
+if (Number(values.laps) !== expected.length) fail(`/diagnostics says ${values.laps} laps, decode ${expected.length}`);
+ok(`/diagnostics: ${diagnostics.length} messages, last says model ${values.model}, ${values.laps} laps, measured ${values.scan_hz_measured} Hz`);
+
+// 6. The raw channel decodes again exactly like the source.
+const raw = byTopic.get("/ydscope/device_bytes");
+if (raw) {
+  const bytes = Buffer.concat(raw.map((m) => Buffer.from(m.decoded.data)));
+  const dir = mkdtempSync(join(tmpdir(), "ydscope-mcap-"));
+  writeFileSync(join(dir, "device.bin"), bytes);
+  const model = args.model ?? values.model;
+  const again = execFileSync(args.cli, ["decode", "--model", model, join(dir, "device.bin")], { maxBuffer: 1 << 30 }).toString();
+  const lapsOnly = (text) => text.split("\n").filter((l) => l.startsWith('{"type":"lap"')).join("\n");
+  if (lapsOnly(again) !== lapsOnly(decodedText)) fail("the bytes of /ydscope/device_bytes decode to other laps than the source");
+  ok(`/ydscope/device_bytes: ${bytes.length} bytes decode again to the same ${expected.length} laps`);
+}
