@@ -1,4 +1,5 @@
-// ydscope-cli record: every byte between a live lidar and us, both directions, into a .ydrec file.
+// ydscope-cli record: every byte between a live lidar and us, both directions, into a .ydrec file,
+// an MCAP file, or both.
 #include <unistd.h>
 
 #include <atomic>
@@ -6,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <stdexcept>
 #include <string>
@@ -13,8 +15,10 @@
 
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
+#include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/session_cli.h"
+#include "core/link/record_tap.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
@@ -22,8 +26,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli record --port PATH --out FILE [--model auto|MODEL] [--baud B|auto]
-                          [--seconds S] [--force]
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli record --port PATH (--out FILE | --mcap OUT.mcap | both) [--model auto|MODEL]
+                          [--baud B|auto] [--seconds S] [--force] [MCAP options]
 
 Connects to the lidar, starts it scanning and records every byte in both directions (the start-up
 commands and replies, then the scan stream) with its time, and the device's details, into FILE
@@ -31,21 +35,29 @@ commands and replies, then the scan stream) with its time, and the device's deta
 with `ydscope-cli decode FILE`). The file is written as it grows: if the program is killed, the
 file is still readable up to the last ~100 ms.
 
+With --mcap, the same session goes live into an MCAP file as well (or instead): /scan, /points,
+/diagnostics and the link bytes, as `ydscope-cli export --help` describes. Its chunks are closed
+and flushed at least once a second, so a killed recorder leaves an MCAP whose flushed chunks a
+streaming reader recovers (it lacks the summary; `ydscope-cli export` of the .ydrec makes a full one).
+
 options:
   --port PATH      serial port (see `ydscope-cli ports`) or tcp://host:port
   --out FILE       the recording to write (.ydrec by convention): a regular file in a folder
                    that exists (not a device such as /dev/null: a recording is read back); an
                    existing file is refused unless --force is given
+  --mcap OUT.mcap  the MCAP file to write live; an existing file is refused unless --force
   --model MODEL    auto (default: detect from the device info), G1, G6, TG15, TG30, TG50
   --baud B         line rate, or auto to probe (default: the model's, 230400 when auto)
   --seconds S      stop after S seconds of scanning (default: until Ctrl-C)
-  --force          overwrite FILE
-
+  --force          overwrite FILE and OUT.mcap
+)" YDSCOPE_MCAP_OPTIONS_HELP R"(
 On a terminal, progress (time, bytes, laps) is shown on stderr and updated in place. Ctrl-C ends
 the recording cleanly: the file is closed, the lidar stopped and the summary printed.
 
-output: one summary line on stdout, read back from the finished file (L: laps decoded from it):
+output: one summary line on stdout per file, read back from the finished .ydrec (L: laps decoded
+from it) and counted while writing the MCAP:
   recorded FILE: S s, B bytes from the device, H bytes to it, L laps
+  wrote OUT.mcap: L laps, M messages in C chunks, B bytes
 
 exit status: 0 recorded; 1 the device or the file failed (one sentence on stderr; what was
 recorded until then stays in FILE); 2 usage error.
@@ -53,6 +65,8 @@ recorded until then stays in FILE); 2 usage error.
 examples:
   ydscope-cli record --port /dev/ttyUSB0 --out bench.ydrec --seconds 10
   ydscope-cli record --port tcp://192.168.1.20:2000 --model G6 --out g6.ydrec
+  ydscope-cli record --port /dev/ttyUSB0 --mcap bench.mcap --seconds 60
+  ydscope-cli record --port /dev/ttyUSB0 --out bench.ydrec --mcap bench.mcap
 )";
 
 std::atomic<bool> interrupted{false};
@@ -72,6 +86,56 @@ CommandResult await(std::future<CommandResult>& result) {
 }
 
 // rate: bytes per second since scanning started (the session's own rate updates once a second).
+// The live MCAP side of a recording: the session's records from its tap, into the export, on
+// this (the CLI's) thread; chunks flushed at least once a second.
+class LiveMcap {
+ public:
+  LiveMcap(const std::string& path, McapExportOptions options)
+      : path_(path), tap_(std::make_shared<RecordTap>()) {
+    std::string error;
+    exporter_ = McapRecordingExport::create(path, std::move(options), error);
+    if (!exporter_) throw std::runtime_error(error);
+  }
+  std::shared_ptr<RecordTap> tap() const { return tap_; }
+  const std::string& path() const { return path_; }
+
+  // Takes what the tap holds (waiting up to `wait`) and writes it. False when the tap is closed and empty.
+  bool pump(std::chrono::milliseconds wait) {
+    const bool open = tap_->wait_and_take(records_, wait);
+    for (const TapRecord& r : records_) exporter_->record(r.type, r.payload, r.t_ns);
+    tap_->recycle(records_);
+    if (const auto dropped = tap_->dropped())
+      exporter_->encoder().set_extra_diagnostics({{"tap_dropped_records", std::to_string(dropped)}});
+    if (Clock::now() - last_flush_ >= std::chrono::milliseconds(900)) {
+      exporter_->flush();
+      last_flush_ = Clock::now();
+    }
+    if (exporter_->failed()) throw std::runtime_error("writing " + path_ + " failed: " + exporter_->error());
+    return open;
+  }
+  // After the session closed the tap: the rest of its records, then the summary.
+  void finish() {
+    while (pump(std::chrono::milliseconds(200))) {
+    }
+    if (!exporter_->finish()) throw std::runtime_error("writing " + path_ + " failed: " + exporter_->error());
+  }
+  std::string summary() const {
+    const auto& stats = exporter_->statistics();
+    return "wrote " + path_ + ": " + std::to_string(exporter_->encoder().laps()) + " laps, " +
+           std::to_string(stats.message_count) + " messages in " + std::to_string(stats.chunk_count) + " chunks, " +
+           std::to_string(exporter_->bytes_written()) + " bytes";
+  }
+  std::uint64_t laps() const { return exporter_->encoder().laps(); }
+  std::uint64_t dropped() const { return tap_->dropped(); }
+
+ private:
+  std::string path_;
+  std::shared_ptr<RecordTap> tap_;
+  std::unique_ptr<McapRecordingExport> exporter_;
+  std::vector<TapRecord> records_;
+  Clock::time_point last_flush_ = Clock::now();
+};
+
 void show_progress(const std::string& out, double seconds, const CounterSnapshot& c, double rate) {
   std::fprintf(stderr, "\r\033[Krecording %s: %.1f s, %llu bytes from the device (%.1f kB/s), %llu laps", out.c_str(),
                seconds, static_cast<unsigned long long>(c.bytes_received), rate / 1000.0,
@@ -90,15 +154,31 @@ std::string laps_in(const std::string& path, const RecordingMetadata& metadata) 
   return ", " + std::to_string(decoder.counters().laps) + " laps";
 }
 
+// Waits for a posted command's result.
+CommandResult run_and_wait(const std::function<void(CommandCallback)>& post) {
+  std::promise<CommandResult> promise;
+  auto result = promise.get_future();
+  post([&promise](const CommandResult& r) { promise.set_value(r); });
+  return await(result);
+}
+
 int run_record(std::span<const std::string> raw) {
-  const Arguments args(raw, session_value_options({"out", "seconds"}), {"force"});
-  const std::string out = args.required("out");
+  const Arguments args(raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap"})),
+                       with_mcap_flags({"force"}));
+  const auto out_option = args.value("out");
+  const auto mcap_option = args.value("mcap");
+  if (!out_option && !mcap_option) throw UsageError("say where to record: --out FILE.ydrec, --mcap FILE.mcap, or both");
+  if (out_option && mcap_option && *out_option == *mcap_option) throw UsageError("--out and --mcap must be different files");
+  const std::string out = out_option.value_or("");
   const auto seconds = args.number("seconds", 0.001, 1e7);
   // Before connecting: /dev/null once recorded for a second and then failed as "not a recording".
-  if (const std::string problem = recording_output_problem(out); !problem.empty()) throw UsageError(problem);
-  if (!args.has("force") && std::filesystem::exists(out))
-    throw UsageError(out + " already exists; choose another --out or add --force to overwrite it");
+  if (out_option)
+    if (const std::string problem = recording_output_problem(out); !problem.empty()) throw UsageError(problem);
+  if (out_option) refuse_to_overwrite(out, args, "--out");
+  if (mcap_option) refuse_to_overwrite(*mcap_option, args, "--mcap");
+  McapExportOptions mcap_options = mcap_options_from(args);
   const SessionConfig config = session_config_from(args, /*scan=*/true);
+  mcap_options.ros.model = config.model;
   const bool tty = ::isatty(STDERR_FILENO) == 1;
 
   Session session(4);
@@ -106,25 +186,34 @@ int run_record(std::span<const std::string> raw) {
   std::signal(SIGTERM, record_on_signal);
   // Recording starts right after the connect intent, so the start-up exchange is in the file too.
   session.connect(config);
-  std::promise<CommandResult> started_promise;
-  auto started = started_promise.get_future();
-  session.start_recording(out, [&started_promise](const CommandResult& r) { started_promise.set_value(r); });
-  const CommandResult start = await(started);
-  if (!start.ok) throw std::runtime_error(start.message);
+  std::unique_ptr<LiveMcap> live;
+  if (mcap_option) {
+    live = std::make_unique<LiveMcap>(*mcap_option, mcap_options);
+    run_and_wait([&](CommandCallback done) { session.start_tap(live->tap(), std::move(done)); });
+  }
+  if (out_option) {
+    const CommandResult start = run_and_wait([&](CommandCallback done) { session.start_recording(out, std::move(done)); });
+    if (!start.ok) throw std::runtime_error(start.message);
+  }
+  const std::string shown = out_option ? out : *mcap_option;
+  // Between session checks: write what the tap holds, or just sleep.
+  const auto idle = [&](std::chrono::milliseconds wait) {
+    if (live) live->pump(wait);
+    else std::this_thread::sleep_for(wait);
+  };
 
   std::string failure;
   const auto connect_start = Clock::now();
   Lap lap;
   SessionSnapshot s = session.snapshot();
   while (!interrupted.load()) {  // until scanning (or failed)
-    s = session.wait_until(
-        [](const SessionSnapshot& x) { return x.state == LinkState::Scanning || x.state == LinkState::Failed; },
-        std::chrono::milliseconds(200));
+    s = session.snapshot();
     if (s.state == LinkState::Scanning || s.state == LinkState::Failed) break;
     if (seconds_since(connect_start) > 60) {
       failure = "gave up after 60 s waiting for " + config.address + " (" + describe_snapshot(s) + ")";
       break;
     }
+    idle(std::chrono::milliseconds(50));
   }
   if (s.state == LinkState::Failed) failure = s.message;
 
@@ -134,7 +223,7 @@ int run_record(std::span<const std::string> raw) {
   while (failure.empty() && !interrupted.load() && (!seconds || seconds_since(scan_start) < *seconds)) {
     session.laps().drain_newest(lap);  // nobody looks at laps here; keep the queue from filling
     s = session.snapshot();
-    if (!s.recording) {
+    if (out_option && !s.recording) {
       failure = s.message.empty() ? "recording stopped" : s.message;
       break;
     }
@@ -145,36 +234,49 @@ int run_record(std::span<const std::string> raw) {
     if (tty && Clock::now() - last_progress >= std::chrono::milliseconds(250)) {
       const double elapsed = seconds_since(scan_start);
       const double rate = elapsed > 0.2 ? static_cast<double>(s.counters.bytes_received - bytes_at_scan_start) / elapsed : 0.0;
-      show_progress(out, elapsed, s.counters, rate);
+      show_progress(shown, elapsed, s.counters, rate);
       last_progress = Clock::now();
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    idle(std::chrono::milliseconds(50));
   }
   if (tty) std::fputs("\r\033[K", stderr);
 
-  // Close the file first (flushed and complete), then stop the lidar.
-  std::promise<CommandResult> stopped_promise;
-  auto stopped = stopped_promise.get_future();
-  session.stop_recording([&stopped_promise](const CommandResult& r) { stopped_promise.set_value(r); });
-  await(stopped);
+  // Close the files first (flushed and complete), then stop the lidar.
+  if (out_option) run_and_wait([&](CommandCallback done) { session.stop_recording(std::move(done)); });
+  if (live) {
+    run_and_wait([&](CommandCallback done) { session.stop_tap(std::move(done)); });
+    live->finish();
+  }
   session.disconnect();
   session.wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
                      std::chrono::seconds(3));
 
-  std::string error;
-  const auto summary = summarize_recording(out, error);
-  if (!summary) throw std::runtime_error(error);
-  if (!failure.empty() && summary->device_bytes == 0 && summary->host_bytes == 0) {
-    std::filesystem::remove(out);  // the port never opened: an empty recording helps nobody
+  if (out_option) {
+    std::string error;
+    const auto summary = summarize_recording(out, error);
+    if (!summary) throw std::runtime_error(error);
+    if (!failure.empty() && summary->device_bytes == 0 && summary->host_bytes == 0) {
+      std::filesystem::remove(out);  // the port never opened: an empty recording helps nobody
+      if (live) std::filesystem::remove(live->path());
+      throw std::runtime_error(failure);
+    }
+    std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s\n", out.c_str(),
+                static_cast<double>(summary->duration_ns) / 1e9, static_cast<unsigned long long>(summary->device_bytes),
+                static_cast<unsigned long long>(summary->host_bytes), laps_in(out, summary->metadata).c_str());
+    if (!summary->warning.empty() || !summary->error.empty())
+      std::fprintf(stderr, "ydscope-cli record: warning: %s\n", (summary->error.empty() ? summary->warning : summary->error).c_str());
+  } else if (!failure.empty() && s.counters.bytes_received == 0 && s.counters.bytes_sent == 0) {
+    std::filesystem::remove(live->path());
     throw std::runtime_error(failure);
   }
-  std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s\n", out.c_str(),
-              static_cast<double>(summary->duration_ns) / 1e9, static_cast<unsigned long long>(summary->device_bytes),
-              static_cast<unsigned long long>(summary->host_bytes), laps_in(out, summary->metadata).c_str());
+  if (live) {
+    std::printf("%s\n", live->summary().c_str());
+    if (live->dropped())
+      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidar\n",
+                   live->path().c_str(), static_cast<unsigned long long>(live->dropped()));
+  }
   std::fflush(stdout);
-  if (!summary->warning.empty() || !summary->error.empty())
-    std::fprintf(stderr, "ydscope-cli record: warning: %s\n", (summary->error.empty() ? summary->warning : summary->error).c_str());
-  if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + out);
+  if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + shown);
   return kExitOk;
 }
 

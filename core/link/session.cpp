@@ -51,6 +51,10 @@ void Session::start_recording(std::string path, CommandCallback done) {
   impl_->post_start_recording(std::move(path), std::move(done));
 }
 void Session::stop_recording(CommandCallback done) { impl_->post_stop_recording(std::move(done)); }
+void Session::start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
+  impl_->post_start_tap(std::move(tap), std::move(done));
+}
+void Session::stop_tap(CommandCallback done) { impl_->post_stop_tap(std::move(done)); }
 void Session::set_distance_scale(std::optional<double> mm_per_count) { impl_->post_distance_scale(mm_per_count); }
 SessionSnapshot Session::snapshot() const { return impl_->snapshot(); }
 SessionSnapshot Session::wait_until(const std::function<bool(const SessionSnapshot&)>& done,
@@ -154,24 +158,34 @@ void Session::Impl::post_intent(Intent intent) {
   });
 }
 
+RecordingMetadata Session::Impl::capture_start_metadata() const {
+  RecordingMetadata metadata;
+  metadata.start_wall_time = iso8601_utc_now();
+  metadata.software = std::string("ydscope ") + kVersion;
+  if (config_) metadata.port = config_->address;
+  return metadata;
+}
+
+void Session::Impl::update_wire_hook() {
+  if (!recorder_.capturing()) return link_.on_wire({});
+  link_.on_wire([this](bool outgoing, std::span<const std::uint8_t> bytes, std::int64_t ns) {
+    recorder_.bytes(outgoing, bytes, ns);
+  });
+}
+
 void Session::Impl::post_start_recording(std::string path, CommandCallback done) {
   asio::post(io_, [this, path = std::move(path), done = std::move(done)] {
     CommandResult result;
     result.what = "record to " + path;
-    RecordingMetadata metadata;
-    metadata.start_wall_time = iso8601_utc_now();
-    metadata.software = std::string("ydscope ") + kVersion;
-    if (config_) metadata.port = config_->address;
     recorder_.stop();
     std::string error;
-    if (recorder_.start(path, metadata, error)) {
-      link_.on_wire([this](bool outgoing, std::span<const std::uint8_t> bytes, std::int64_t ns) {
-        recorder_.bytes(outgoing, bytes, ns);
-      });
+    if (recorder_.start(path, capture_start_metadata(), error)) {
+      update_wire_hook();
       record_metadata();
       result.ok = true;
       result.message = "recording every byte to " + path;
     } else {
+      update_wire_hook();
       result.message = error;
     }
     publish([&](SessionSnapshot& s) {
@@ -188,12 +202,37 @@ void Session::Impl::post_stop_recording(CommandCallback done) {
     result.what = "stop recording";
     result.ok = true;
     result.message = recorder_.active() ? "recording saved to " + recorder_.path() : "was not recording";
-    link_.on_wire({});
     recorder_.stop();
+    update_wire_hook();
     publish([](SessionSnapshot& s) {
       s.recording = false;
       s.recording_path.clear();
     });
+    finish(result, done);
+  });
+}
+
+void Session::Impl::post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
+  asio::post(io_, [this, tap = std::move(tap), done = std::move(done)]() mutable {
+    CommandResult result;
+    result.what = "tap the session's records";
+    recorder_.start_tap(std::move(tap), capture_start_metadata());
+    update_wire_hook();
+    record_metadata();
+    result.ok = true;
+    result.message = "every record goes to the tap";
+    finish(result, done);
+  });
+}
+
+void Session::Impl::post_stop_tap(CommandCallback done) {
+  asio::post(io_, [this, done = std::move(done)] {
+    CommandResult result;
+    result.what = "stop the record tap";
+    result.ok = true;
+    result.message = recorder_.tapping() ? "tap closed" : "no tap was open";
+    recorder_.stop_tap();
+    update_wire_hook();
     finish(result, done);
   });
 }

@@ -29,6 +29,8 @@
 
 namespace ydscope {
 
+class RecordTap;
+
 // Opens the byte link for one attempt at `baud`; null plus one sentence in `error` on failure.
 using LinkOpener = std::function<std::unique_ptr<ByteLink>(boost::asio::io_context& io, std::uint32_t baud,
                                                            std::string& error)>;
@@ -124,6 +126,10 @@ class Session {
   void refresh_health(CommandCallback done = {});
   void start_recording(std::string path, CommandCallback done = {});
   void stop_recording(CommandCallback done = {});
+  // Every record a recording would hold, live, into `tap` (for MCAP and the WebSocket bridge),
+  // beside or without a file recording. stop_tap() closes the tap.
+  void start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done = {});
+  void stop_tap(CommandCallback done = {});
   // Empty: back to the model profile's scale. Applies from the next decoded byte.
   void set_distance_scale(std::optional<double> mm_per_count);
 

@@ -42,6 +42,8 @@ class Session::Impl {
   void post_intent(Intent intent);
   void post_start_recording(std::string path, CommandCallback done);
   void post_stop_recording(CommandCallback done);
+  void post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
+  void post_stop_tap(CommandCallback done);
   void post_distance_scale(std::optional<double> scale);
   SessionSnapshot snapshot() const;
   SessionSnapshot wait_until(const std::function<bool(const SessionSnapshot&)>& done,
@@ -69,6 +71,9 @@ class Session::Impl {
   boost::asio::awaitable<void> run_intent(Intent intent);
   boost::asio::awaitable<void> backoff(std::chrono::milliseconds duration);
   void record_metadata();
+  // Points the link's wire hook at the recorder while anything captures, else clears it.
+  void update_wire_hook();
+  RecordingMetadata capture_start_metadata() const;
 
   LapQueue& queue_;
   WakeFn wake_;

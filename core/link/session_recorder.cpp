@@ -1,12 +1,33 @@
 #include "core/link/session_recorder.h"
 
+#include <algorithm>
+
+#include "core/link/record_tap.h"
 #include "core/link/session_io.h"
 #include "core/record/recording_writer.h"
 
 namespace ydscope {
 
 SessionRecorder::SessionRecorder() = default;
-SessionRecorder::~SessionRecorder() { stop(); }
+SessionRecorder::~SessionRecorder() {
+  stop();
+  stop_tap();
+}
+
+void SessionRecorder::start_tap(std::shared_ptr<RecordTap> tap, RecordingMetadata metadata) {
+  stop_tap();
+  tap_ = std::move(tap);
+  tap_start_ns_ = link_clock_ns();
+  if (!metadata.start_wall_time) metadata.start_wall_time = iso8601_utc_now();
+  const std::string text = metadata.encode();
+  tap_->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}, 0);
+}
+
+void SessionRecorder::stop_tap() {
+  if (!tap_) return;
+  tap_->close();
+  tap_.reset();
+}
 
 bool SessionRecorder::start(const std::string& path, const RecordingMetadata& metadata, std::string& error) {
   stop();
@@ -25,6 +46,8 @@ void SessionRecorder::stop() {
 }
 
 void SessionRecorder::bytes(bool outgoing, std::span<const std::uint8_t> data, std::int64_t now_ns) {
+  if (tap_ && !data.empty())
+    tap_->push(outgoing ? RecordType::HostToDevice : RecordType::DeviceToHost, data, std::max<std::int64_t>(0, now_ns - tap_start_ns_));
   if (!writer_) return;
   if (!writer_->append(outgoing ? Direction::HostToDevice : Direction::DeviceToHost, data, now_ns)) {
     error_ = writer_->error();
@@ -33,6 +56,11 @@ void SessionRecorder::bytes(bool outgoing, std::span<const std::uint8_t> data, s
 }
 
 void SessionRecorder::metadata(const RecordingMetadata& metadata) {
+  if (tap_) {
+    const std::string text = metadata.encode();
+    tap_->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()},
+               std::max<std::int64_t>(0, link_clock_ns() - tap_start_ns_));
+  }
   if (!writer_) return;
   if (!writer_->update_metadata(metadata, link_clock_ns())) {
     error_ = writer_->error();

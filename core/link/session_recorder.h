@@ -1,6 +1,7 @@
 #pragma once
-// SessionRecorder: the session's use of the recording writer. It lives on the I/O thread, so every
-// byte read or written is recorded as it crosses the link and nothing can be lost to the UI.
+// SessionRecorder: the session's use of the recording writer, and of a live RecordTap. It lives
+// on the I/O thread, so every byte read or written is recorded as it crosses the link and nothing
+// can be lost to the UI. The file and the tap are independent: either, both or neither.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -11,6 +12,7 @@
 namespace ydscope {
 
 class RecordingWriter;
+class RecordTap;
 
 class SessionRecorder {
  public:
@@ -21,6 +23,12 @@ class SessionRecorder {
   bool start(const std::string& path, const RecordingMetadata& metadata, std::string& error);
   void stop();
   bool active() const { return writer_ != nullptr; }
+  // The tap gets a metadata record (`metadata` plus its start time) and then every record.
+  void start_tap(std::shared_ptr<RecordTap> tap, RecordingMetadata metadata);
+  void stop_tap();  // closes the tap
+  bool tapping() const { return tap_ != nullptr; }
+  // Anything wants the link's bytes.
+  bool capturing() const { return writer_ || tap_; }
   const std::string& path() const { return path_; }
 
   void bytes(bool outgoing, std::span<const std::uint8_t> data, std::int64_t now_ns);
@@ -33,6 +41,8 @@ class SessionRecorder {
 
  private:
   std::unique_ptr<RecordingWriter> writer_;
+  std::shared_ptr<RecordTap> tap_;
+  std::int64_t tap_start_ns_ = 0;
   std::string path_;
   std::string error_;
 };

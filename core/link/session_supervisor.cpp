@@ -348,6 +348,7 @@ asio::awaitable<void> Session::Impl::run_intent(Intent intent) {
     }
   }
   if (scanning) set_state(LinkState::Scanning, "");
+  if (result.ok) record_metadata();
   finish(result, intent.done);
 }
 
@@ -363,7 +364,7 @@ void Session::Impl::fail_pending_intents(const std::string& why) {
 }
 
 void Session::Impl::record_metadata() {
-  if (!recorder_.active()) return;
+  if (!recorder_.capturing()) return;
   RecordingMetadata metadata;
   if (config_) metadata.port = config_->address;
   const SessionSnapshot s = snapshot();
@@ -378,6 +379,15 @@ void Session::Impl::record_metadata() {
       metadata.serial = s.device->serial;
     }
   }
+  // The device's settings as last read back, so a recording (and its MCAP) can say them.
+  if (s.scan_hz) {
+    char hz[32];
+    std::snprintf(hz, sizeof hz, "%.2f", *s.scan_hz);
+    metadata.extra["scan_hz"] = hz;
+  }
+  if (s.ranging_khz) metadata.extra["ranging_khz"] = std::to_string(*s.ranging_khz);
+  if (s.health) metadata.extra["health"] = s.health->summary;
+  if (s.power_down_protection) metadata.extra["power_down_protection"] = *s.power_down_protection ? "on" : "off";
   recorder_.metadata(metadata);
 }
 

@@ -1,9 +1,9 @@
 #!/bin/sh
 # The MCAP files ydscope writes, each checked by check_mcap.mjs: export of the demo recording with
-# every compression, decode --mcap of a recording and of raw bytes.
-# usage: mcap_exports.sh YDSCOPE_CLI SOURCE_DIR CACHE_DIR CAPTURES_DIR
+# every compression, and decode --mcap of a recording.
+# usage: mcap_exports.sh YDSCOPE_CLI SOURCE_DIR CACHE_DIR
 set -eu
-cli=$1; src=$2; cache=$3; captures=$4
+cli=$1; src=$2; cache=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 check() { "$src/tests/interop/run_node_check.sh" "$cache" check_mcap.mjs --cli "$cli" "$@"; }
@@ -14,6 +14,3 @@ for compression in zstd lz4 none; do
 done
 "$cli" decode --mcap "$work/decoded.mcap" "$demo"
 check --mcap "$work/decoded.mcap" --source "$demo"
-# Raw bytes without times: a real X4 capture (same packet family as G1).
-"$cli" decode --model G1 --mcap "$work/raw.mcap" "$captures/x4-scan1.bin"
-check --mcap "$work/raw.mcap" --source "$captures/x4-scan1.bin" --model G1

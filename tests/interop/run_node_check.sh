@@ -11,12 +11,12 @@ if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
 fi
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$cache"
-if ! cmp -s "$here/package-lock.json" "$cache/package-lock.json" || [ ! -d "$cache/node_modules" ]; then
-  cp "$here/package.json" "$here/package-lock.json" "$cache/"
+if ! cmp -s "$here/package-lock.json" "$cache/.installed-lock.json" 2>/dev/null; then
   # Two checks may start at once: one installs, the other waits for it.
   (
     flock 9
     if ! cmp -s "$here/package-lock.json" "$cache/.installed-lock.json" 2>/dev/null; then
+      cp "$here/package.json" "$here/package-lock.json" "$cache/"
       (cd "$cache" && npm ci --no-audit --no-fund --loglevel=error) || {
         echo "npm ci failed in $cache: is the npm registry reachable? (the checks need @mcap/core and friends)" >&2
         exit 1
@@ -25,6 +25,9 @@ if ! cmp -s "$here/package-lock.json" "$cache/package-lock.json" || [ ! -d "$cac
     fi
   ) 9>"$cache/.lock"
 fi
-# ES modules resolve packages next to the script, so the scripts run from the cache.
-cp "$here"/*.mjs "$cache/"
-exec node "$cache/$(basename "$script")" "$@"
+# ES modules resolve packages next to the script, so the scripts run from the cache (a copy per
+# run, so parallel checks never read a half-copied script).
+run=$(mktemp "$cache/run-XXXXXX.mjs")
+trap 'rm -f "$run"' EXIT
+cp "$here/$(basename "$script")" "$run"
+node "$run" "$@"
