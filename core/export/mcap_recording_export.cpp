@@ -57,19 +57,16 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, McapExportOptions optio
 
 void McapRecordingExport::emit(RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
   const auto i = static_cast<std::size_t>(topic);
+  if (observer_) observer_(topic, log_time, cdr);
   writer_.write_message(channel_[i], sequence_[i]++, log_time, log_time, cdr);
 }
 
 void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns) {
-  const auto emit_fn = [this](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+  if (type == RecordType::Metadata)
+    return metadata(RecordingMetadata::parse({reinterpret_cast<const char*>(payload.data()), payload.size()}), t_ns);
+  encoder_.record(type, payload, t_ns, [this](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
     emit(topic, log_time, cdr);
-  };
-  switch (type) {
-    case RecordType::DeviceToHost: return encoder_.device_bytes(payload, t_ns, emit_fn);
-    case RecordType::HostToDevice: return encoder_.host_bytes(payload, t_ns, emit_fn);
-    case RecordType::Metadata:
-      return metadata(RecordingMetadata::parse({reinterpret_cast<const char*>(payload.data()), payload.size()}), t_ns);
-  }
+  });
 }
 
 void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_t) {

@@ -6,6 +6,7 @@
 // with every key merged so far (the last one is complete), so the link-byte channels decode
 // again exactly like a .ydrec. Not thread-safe.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -47,6 +48,9 @@ class McapRecordingExport {
   const McapStatistics& statistics() const { return writer_.statistics(); }
   std::uint64_t bytes_written() const { return writer_.bytes_written(); }
   RosTopicEncoder& encoder() { return encoder_; }
+  // Also sees every message written (the bridge serves them while they are recorded).
+  using Observer = std::function<void(RosTopic, std::uint64_t log_time, std::span<const std::uint8_t> cdr)>;
+  void set_observer(Observer observer) { observer_ = std::move(observer); }
 
  private:
   McapRecordingExport(std::unique_ptr<McapFileSink> file, McapExportOptions options);
@@ -58,6 +62,7 @@ class McapRecordingExport {
   std::uint16_t channel_[kRosTopicCount] = {};
   std::uint32_t sequence_[kRosTopicCount] = {};
   bool finished_ = false;
+  Observer observer_;
 };
 
 // The channel metadata the ros2 profile requires: offered_qos_profiles as rosbag2 writes it

@@ -74,6 +74,15 @@ RosTopicEncoder::RosTopicEncoder(RosExportOptions options) : options_(std::move(
   }
 }
 
+void RosTopicEncoder::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns, MessageFn emit) {
+  switch (type) {
+    case RecordType::DeviceToHost: return device_bytes(payload, t_ns, emit);
+    case RecordType::HostToDevice: return host_bytes(payload, t_ns, emit);
+    case RecordType::Metadata:
+      return metadata(RecordingMetadata::parse({reinterpret_cast<const char*>(payload.data()), payload.size()}));
+  }
+}
+
 void RosTopicEncoder::metadata(const RecordingMetadata& changes) {
   metadata_.merge(changes);
   if (changes.start_wall_time)

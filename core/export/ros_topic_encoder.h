@@ -24,6 +24,7 @@
 #include "core/protocol/function_ref.h"
 #include "core/protocol/interference_filter.h"
 #include "core/protocol/scan_decoder.h"
+#include "core/record/recording_format.h"
 #include "core/record/recording_metadata.h"
 
 namespace ydscope {
@@ -56,6 +57,8 @@ class RosTopicEncoder {
 
   explicit RosTopicEncoder(RosExportOptions options);
 
+  // One record as a .ydrec holds it (metadata payloads are key=value text); unknown types ignored.
+  void record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns, MessageFn emit);
   // A metadata record: merged; sets the model (unless forced) and the time base.
   void metadata(const RecordingMetadata& changes);
   void device_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit);

@@ -1,0 +1,198 @@
+// ydscope-cli serve: the headless robot-side server. Scans a lidar (reconnecting by itself),
+// serves it live over the Foxglove WebSocket protocol and optionally records it to MCAP.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "app/common/arguments.h"
+#include "app/cli/cli_command.h"
+#include "app/cli/mcap_output.h"
+#include "app/cli/session_cli.h"
+#include "app/cli/session_parameters.h"
+#include "core/bridge/foxglove_server.h"
+#include "core/export/mcap_recording_export.h"
+#include "core/link/record_tap.h"
+
+namespace ydscope::cli {
+namespace {
+
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli serve --port PATH|tcp://HOST:PORT [--listen HOST:PORT] [--mcap FILE]
+                         [--model auto|MODEL] [--baud B|auto] [--queue N] [--seconds S]
+                         [--force] [MCAP options]
+
+Connects to the lidar and keeps it scanning (reconnecting after faults, like the app), and serves
+it live to Foxglove over the Foxglove WebSocket protocol (subprotocol foxglove.websocket.v1):
+/scan, /points, /diagnostics, /ydscope/device_bytes and /ydscope/host_bytes, the same topics and
+ROS 2 schemas as `ydscope-cli export --help` describes. Several clients may connect at once; each
+has its own send queue, and a slow client loses its oldest messages (counted, and told by a
+status message), never slowing the lidar or the other clients.
+
+Parameters (Foxglove's Parameters panel, or any client's setParameters):
+  scan_hz                float, set through the session's command sequencing; the value the
+                         clients see is what the device reads back
+  ranging_khz            float, G6/TG: cycled until the device reads it back
+  power_down_protection  bool
+  filter_specular        bool, drop G1 points flagged as specular reflection (flag 2)
+  filter_ambient         bool, drop G1 points flagged as ambient light (flag 3)
+
+options:
+  --port PATH        serial port (see `ydscope-cli ports`) or tcp://host:port
+  --listen HOST:PORT where to accept WebSocket clients (default 127.0.0.1:8765, this machine
+                     only). Any other address serves the lidar to the network, without any
+                     authentication: a warning says so. Port 0 picks a free port.
+  --mcap FILE        also record everything to this MCAP file (chunks flushed every second)
+  --model MODEL      auto (default: detect from the device info), G1, G6, TG15, TG30, TG50
+  --baud B           line rate, or auto to probe (default: the model's, 230400 when auto)
+  --queue N          messages queued per client before its oldest are dropped (default 64)
+  --seconds S        stop after S seconds (default: until Ctrl-C or SIGTERM)
+)" YDSCOPE_MCAP_OPTIONS_HELP R"(  --force            overwrite FILE
+
+On start, one line on stdout says where it serves:  serving ws://HOST:PORT for PORT
+Open it in Foxglove: "Open connection" -> "Foxglove WebSocket" -> ws://HOST:PORT.
+Ctrl-C or SIGTERM stops cleanly (the MCAP gets its summary); per-client counters go to stderr.
+
+exit status: 0 stopped by a signal or --seconds; 1 the listen address or the MCAP file failed;
+2 usage error. A lidar that is unplugged or silent is not an exit: the server keeps retrying
+and tells its clients with a status message.
+
+examples:
+  ydscope-cli serve --port /dev/ttyUSB0
+  ydscope-cli serve --port /dev/ttyUSB0 --listen 0.0.0.0:8765 --mcap /var/lib/ydscope/run.mcap
+)";
+
+std::atomic<bool> stop_requested{false};
+extern "C" void serve_on_signal(int) { stop_requested.store(true); }
+
+using Clock = std::chrono::steady_clock;
+
+foxglove::ServerOptions listen_options(const Arguments& args) {
+  foxglove::ServerOptions options;
+  if (const auto listen = args.value("listen")) {
+    const std::size_t colon = listen->rfind(':');
+    if (colon == std::string::npos || colon == 0)
+      throw UsageError("--listen takes HOST:PORT, e.g. 127.0.0.1:8765 or 0.0.0.0:8765, not '" + *listen + "'");
+    options.host = listen->substr(0, colon);
+    if (options.host.size() > 2 && options.host.front() == '[' && options.host.back() == ']')
+      options.host = options.host.substr(1, options.host.size() - 2);
+    const std::string port = listen->substr(colon + 1);
+    char* end = nullptr;
+    const long value = std::strtol(port.c_str(), &end, 10);
+    if (port.empty() || *end || value < 0 || value > 65535)
+      throw UsageError("--listen port must be 0..65535, not '" + port + "'");
+    options.port = static_cast<std::uint16_t>(value);
+  }
+  if (const auto queue = args.integer("queue", 1, 100000)) options.client_queue = static_cast<std::size_t>(*queue);
+  return options;
+}
+
+bool is_loopback(const std::string& host) { return host.rfind("127.", 0) == 0 || host == "::1" || host == "localhost"; }
+
+std::vector<foxglove::ServerChannel> channels() {
+  std::vector<foxglove::ServerChannel> out;
+  for (const RosTopicInfo& t : ros_topics())
+    out.push_back({static_cast<std::uint32_t>(t.topic) + 1, std::string(t.name), std::string(t.schema->name), std::string(t.schema->text)});
+  return out;
+}
+
+int run_serve(std::span<const std::string> raw) {
+  const Arguments args(raw, with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds"})),
+                       with_mcap_flags({"force"}));
+  SessionConfig config = session_config_from(args, /*scan=*/true);
+  config.reconnect = true;
+  foxglove::ServerOptions server_options = listen_options(args);
+  const auto seconds = args.number("seconds", 0.001, 1e9);
+  const auto mcap_path = args.value("mcap");
+  if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
+  McapExportOptions export_options = mcap_options_from(args);
+  export_options.ros.model = config.model;
+  server_options.name = "ydscope on " + config.address;
+
+  Session session(4);
+  SessionParameters parameters(session);
+  foxglove::FoxgloveServer server(server_options, channels(), &parameters);
+  std::string error;
+  if (!server.start(error)) throw std::runtime_error(error);
+  if (!is_loopback(server_options.host))
+    std::fprintf(stderr, "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
+                         "lidar and change its settings (there is no authentication)\n", server_options.host.c_str());
+
+  // Topics go to the clients, and to the MCAP file when asked, from this thread.
+  std::unique_ptr<McapRecordingExport> mcap;
+  std::unique_ptr<RosTopicEncoder> encoder;
+  const auto publish = [&server](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+    server.publish(static_cast<std::uint32_t>(topic) + 1, log_time, std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
+  };
+  if (mcap_path) {
+    mcap = McapRecordingExport::create(*mcap_path, export_options, error);
+    if (!mcap) throw std::runtime_error(error);
+    mcap->set_observer(publish);
+  } else {
+    encoder = std::make_unique<RosTopicEncoder>(export_options.ros);
+  }
+  RosTopicEncoder& topics = mcap ? mcap->encoder() : *encoder;
+
+  std::signal(SIGINT, serve_on_signal);
+  std::signal(SIGTERM, serve_on_signal);
+  auto tap = std::make_shared<RecordTap>();
+  session.connect(config);
+  session.start_tap(tap);
+  std::printf("serving ws://%s:%u for %s\n", server_options.host.c_str(), static_cast<unsigned>(server.port()), config.address.c_str());
+  std::fflush(stdout);
+
+  const auto start = Clock::now();
+  auto last_flush = Clock::now();
+  LinkState last_state = LinkState::Idle;
+  std::vector<TapRecord> records;
+  Lap lap;
+  while (!stop_requested.load() && (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
+    tap->wait_and_take(records, std::chrono::milliseconds(20));
+    topics.set_filter(parameters.filter());
+    for (const TapRecord& r : records) {
+      if (mcap) mcap->record(r.type, r.payload, r.t_ns);
+      else topics.record(r.type, r.payload, r.t_ns, publish);
+    }
+    tap->recycle(records);
+    session.laps().drain_newest(lap);  // the served laps come from the tap; keep the queue empty
+    if (mcap && Clock::now() - last_flush >= std::chrono::milliseconds(900)) {
+      if (!mcap->flush()) throw std::runtime_error("writing " + *mcap_path + " failed: " + mcap->error());
+      last_flush = Clock::now();
+    }
+    const SessionSnapshot s = session.snapshot();
+    if (s.state != last_state) {
+      last_state = s.state;
+      const bool bad = s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled;
+      server.broadcast_status(bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
+                              std::string("lidar ") + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message));
+      if (bad) std::fprintf(stderr, "ydscope-cli serve: %s\n", describe_snapshot(s).c_str());
+    }
+    if (const auto dropped = tap->dropped()) topics.set_extra_diagnostics({{"tap_dropped_records", std::to_string(dropped)}});
+  }
+
+  session.stop_tap();
+  for (const auto& c : server.clients())
+    std::fprintf(stderr, "ydscope-cli serve: client %s: %llu messages sent, %llu dropped\n", c.peer.c_str(),
+                 static_cast<unsigned long long>(c.sent), static_cast<unsigned long long>(c.dropped));
+  server.stop();
+  session.disconnect();
+  if (mcap) {
+    while (tap->wait_and_take(records, std::chrono::milliseconds(200))) {
+      for (const TapRecord& r : records) mcap->record(r.type, r.payload, r.t_ns);
+      tap->recycle(records);
+    }
+    if (!mcap->finish()) throw std::runtime_error("writing " + *mcap_path + " failed: " + mcap->error());
+    std::fprintf(stderr, "ydscope-cli serve: wrote %s: %llu laps, %llu messages\n", mcap_path->c_str(),
+                 static_cast<unsigned long long>(topics.laps()), static_cast<unsigned long long>(mcap->statistics().message_count));
+  }
+  return kExitOk;
+}
+
+const RegisterCliCommand registration{
+    {"serve", "serve a lidar live to Foxglove over WebSocket (and record MCAP)", kHelpText, &run_serve}};
+
+}  // namespace
+}  // namespace ydscope::cli

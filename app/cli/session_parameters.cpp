@@ -1,0 +1,78 @@
+#include "app/cli/session_parameters.h"
+
+#include <cmath>
+
+namespace ydscope::cli {
+namespace {
+
+using foxglove::Parameter;
+
+std::optional<double> number_of(const Parameter& p) {
+  if (const double* d = std::get_if<double>(&p.value)) return *d;
+  return std::nullopt;
+}
+
+std::optional<bool> boolean_of(const Parameter& p) {
+  if (const bool* b = std::get_if<bool>(&p.value)) return *b;
+  if (const double* d = std::get_if<double>(&p.value)) return *d != 0;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<Parameter> SessionParameters::current() {
+  const SessionSnapshot s = session_.snapshot();
+  std::vector<Parameter> out;
+  if (s.scan_hz) out.push_back({"scan_hz", *s.scan_hz});
+  if (s.ranging_khz) out.push_back({"ranging_khz", static_cast<double>(*s.ranging_khz)});
+  if (s.power_down_protection) out.push_back({"power_down_protection", *s.power_down_protection});
+  out.push_back({"filter_specular", specular_.load()});
+  out.push_back({"filter_ambient", ambient_.load()});
+  return out;
+}
+
+void SessionParameters::set(const Parameter& parameter, SetDone done) {
+  const auto fail = [&](const std::string& why) {
+    // The unchanged value is the read-back, so the client's view snaps back.
+    std::vector<Parameter> now;
+    for (auto& p : current())
+      if (p.name == parameter.name) now.push_back(std::move(p));
+    done(std::move(now), why);
+  };
+  if (parameter.name == "filter_specular" || parameter.name == "filter_ambient") {
+    const auto on = boolean_of(parameter);
+    if (!on) return fail("it takes true or false");
+    (parameter.name == "filter_specular" ? specular_ : ambient_).store(*on);
+    return done({{parameter.name, *on}}, "");
+  }
+  if (parameter.name == "scan_hz" || parameter.name == "ranging_khz") {
+    const auto value = number_of(parameter);
+    if (!value || !std::isfinite(*value)) return fail("it takes a number");
+    const std::string name = parameter.name;
+    auto on_result = [this, name, done](const CommandResult& r) {
+      std::vector<Parameter> read_back;
+      if (r.scan_hz) read_back.push_back({"scan_hz", *r.scan_hz});
+      if (r.ranging_khz) read_back.push_back({"ranging_khz", static_cast<double>(*r.ranging_khz)});
+      if (read_back.empty())
+        for (auto& p : current())
+          if (p.name == name) read_back.push_back(std::move(p));
+      done(std::move(read_back), r.ok ? "" : r.message);
+    };
+    if (name == "scan_hz") return session_.set_scan_hz(*value, on_result);
+    if (*value < 0 || *value > 65535) return fail("it takes a frequency in kHz, e.g. 18");
+    return session_.set_ranging_khz(static_cast<std::uint16_t>(std::lround(*value)), on_result);
+  }
+  if (parameter.name == "power_down_protection") {
+    const auto on = boolean_of(parameter);
+    if (!on) return fail("it takes true or false");
+    return session_.set_power_down_protection(*on, [done](const CommandResult& r) {
+      std::vector<Parameter> read_back;
+      if (r.power_down_protection) read_back.push_back({"power_down_protection", *r.power_down_protection});
+      done(std::move(read_back), r.ok ? "" : r.message);
+    });
+  }
+  done({}, "there is no parameter '" + parameter.name +
+               "'; this server has scan_hz, ranging_khz, power_down_protection, filter_specular and filter_ambient");
+}
+
+}  // namespace ydscope::cli

@@ -1,0 +1,227 @@
+#include "core/bridge/foxglove_protocol.h"
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+
+namespace ydscope::foxglove {
+namespace {
+
+namespace pt = boost::property_tree;
+
+void append_number(std::string& out, double value) {
+  char text[32];
+  const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+  out.append(text, ec == std::errc() ? end : text);
+}
+
+void append_value(std::string& out, const std::variant<double, bool, std::string>& value) {
+  if (const double* d = std::get_if<double>(&value)) append_number(out, *d);
+  else if (const bool* b = std::get_if<bool>(&value)) out += *b ? "true" : "false";
+  else append_json_string(out, std::get<std::string>(value));
+}
+
+// property_tree keeps every JSON scalar as text: numbers, booleans and strings look alike, so a
+// value is read back as the most specific thing it spells.
+std::variant<double, bool, std::string> scalar(const std::string& text) {
+  if (text == "true") return true;
+  if (text == "false") return false;
+  double number = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (ec == std::errc() && end == text.data() + text.size() && !text.empty()) return number;
+  return text;
+}
+
+std::optional<std::uint32_t> u32(const std::string& text) {
+  std::uint32_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+  return value;
+}
+
+// The children of an array field (empty keys), or empty with an error when it is not one.
+const pt::ptree* array_field(const pt::ptree& tree, const char* name, std::string& error) {
+  const auto child = tree.get_child_optional(name);
+  if (!child) {
+    error = std::string("\"") + name + "\" is missing";
+    return nullptr;
+  }
+  for (const auto& [key, _] : *child)
+    if (!key.empty()) {
+      error = std::string("\"") + name + "\" must be an array";
+      return nullptr;
+    }
+  return &*child;
+}
+
+std::vector<std::string> string_list(const pt::ptree* list) {
+  std::vector<std::string> out;
+  if (list)
+    for (const auto& [_, item] : *list) out.push_back(item.data());
+  return out;
+}
+
+}  // namespace
+
+void append_json_string(std::string& out, std::string_view text) {
+  out.push_back('"');
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out.push_back('\\');
+      out.push_back(c);
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      out += escaped;
+    } else {
+      out.push_back(c);
+    }
+  }
+  out.push_back('"');
+}
+
+std::string server_info_json(std::string_view name, std::string_view session_id) {
+  std::string out = R"({"op":"serverInfo","name":)";
+  append_json_string(out, name);
+  out += R"(,"capabilities":["parameters","parametersSubscribe"],"supportedEncodings":[],"metadata":{},"sessionId":)";
+  append_json_string(out, session_id);
+  out += "}";
+  return out;
+}
+
+std::string advertise_json(const std::vector<ChannelAd>& channels) {
+  std::string out = R"({"op":"advertise","channels":[)";
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const ChannelAd& c = channels[i];
+    if (i) out += ",";
+    out += R"({"id":)" + std::to_string(c.id) + R"(,"topic":)";
+    append_json_string(out, c.topic);
+    out += R"(,"encoding":"cdr","schemaName":)";
+    append_json_string(out, c.schema_name);
+    out += R"(,"schemaEncoding":"ros2msg","schema":)";
+    append_json_string(out, c.schema);
+    out += "}";
+  }
+  out += "]}";
+  return out;
+}
+
+std::string status_json(StatusLevel level, std::string_view message, std::string_view id) {
+  std::string out = R"({"op":"status","level":)" + std::to_string(static_cast<int>(level)) + R"(,"message":)";
+  append_json_string(out, message);
+  if (!id.empty()) {
+    out += R"(,"id":)";
+    append_json_string(out, id);
+  }
+  out += "}";
+  return out;
+}
+
+std::string parameter_values_json(const std::vector<Parameter>& parameters, const std::optional<std::string>& request_id) {
+  std::string out = R"({"op":"parameterValues","parameters":[)";
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (i) out += ",";
+    out += R"({"name":)";
+    append_json_string(out, parameters[i].name);
+    out += R"(,"value":)";
+    append_value(out, parameters[i].value);
+    if (std::holds_alternative<double>(parameters[i].value)) out += R"(,"type":"float64")";
+    out += "}";
+  }
+  out += "]";
+  if (request_id) {
+    out += R"(,"id":)";
+    append_json_string(out, *request_id);
+  }
+  out += "}";
+  return out;
+}
+
+std::array<std::uint8_t, 13> message_data_header(std::uint32_t subscription_id, std::uint64_t log_time_ns) {
+  std::array<std::uint8_t, 13> header{};
+  header[0] = 0x01;
+  for (int i = 0; i < 4; ++i) header[1 + i] = static_cast<std::uint8_t>(subscription_id >> (8 * i));
+  for (int i = 0; i < 8; ++i) header[5 + i] = static_cast<std::uint8_t>(log_time_ns >> (8 * i));
+  return header;
+}
+
+std::optional<ClientRequest> parse_client_message(std::string_view text, std::string& error) {
+  pt::ptree tree;
+  try {
+    std::istringstream in{std::string(text)};
+    pt::read_json(in, tree);
+  } catch (const pt::json_parser_error& e) {
+    error = "not JSON (" + e.message() + " at line " + std::to_string(e.line()) + ")";
+    return std::nullopt;
+  }
+  const auto op = tree.get_optional<std::string>("op");
+  if (!op) {
+    error = "no \"op\" field";
+    return std::nullopt;
+  }
+  std::optional<std::string> id;
+  if (const auto given = tree.get_optional<std::string>("id")) id = *given;
+  if (*op == "subscribe") {
+    const pt::ptree* list = array_field(tree, "subscriptions", error);
+    if (!list) return std::nullopt;
+    Subscribe request;
+    for (const auto& [_, item] : *list) {
+      const auto sub = u32(item.get<std::string>("id", ""));
+      const auto channel = u32(item.get<std::string>("channelId", ""));
+      if (!sub || !channel) {
+        error = "each subscription needs a numeric \"id\" and \"channelId\"";
+        return std::nullopt;
+      }
+      request.subscriptions.emplace_back(*sub, *channel);
+    }
+    return request;
+  }
+  if (*op == "unsubscribe") {
+    const pt::ptree* list = array_field(tree, "subscriptionIds", error);
+    if (!list) return std::nullopt;
+    Unsubscribe request;
+    for (const auto& [_, item] : *list) {
+      const auto sub = u32(item.data());
+      if (!sub) {
+        error = "\"subscriptionIds\" must hold numbers";
+        return std::nullopt;
+      }
+      request.subscription_ids.push_back(*sub);
+    }
+    return request;
+  }
+  if (*op == "getParameters") {
+    std::string ignored;
+    return GetParameters{string_list(array_field(tree, "parameterNames", ignored)), id};
+  }
+  if (*op == "setParameters") {
+    const pt::ptree* list = array_field(tree, "parameters", error);
+    if (!list) return std::nullopt;
+    SetParameters request;
+    request.id = id;
+    for (const auto& [_, item] : *list) {
+      const auto name = item.get_optional<std::string>("name");
+      const auto value = item.get_optional<std::string>("value");
+      if (!name || !value) {
+        error = "each parameter needs a \"name\" and a \"value\"";
+        return std::nullopt;
+      }
+      request.parameters.push_back({*name, scalar(*value)});
+    }
+    return request;
+  }
+  if (*op == "subscribeParameterUpdates" || *op == "unsubscribeParameterUpdates") {
+    std::string ignored;
+    auto names = string_list(array_field(tree, "parameterNames", ignored));
+    if (*op == "subscribeParameterUpdates") return SubscribeParameterUpdates{std::move(names)};
+    return UnsubscribeParameterUpdates{std::move(names)};
+  }
+  error = "op \"" + *op + "\" is not supported by this server";
+  return std::nullopt;
+}
+
+}  // namespace ydscope::foxglove
