@@ -12,7 +12,11 @@ _ydscope_cli
 
 COMP_WORDS=("$cli" "decode" "--fo"); COMP_CWORD=2
 _ydscope_cli
-[ "${COMPREPLY[*]}" = "--format" ] || fail "'decode --fo' completed to '${COMPREPLY[*]}', not '--format'"
+[ "${COMPREPLY[*]}" = "--force --format" ] || fail "'decode --fo' completed to '${COMPREPLY[*]}', not '--force --format'"
+
+COMP_WORDS=("$cli" "decode" "--form"); COMP_CWORD=2
+_ydscope_cli
+[ "${COMPREPLY[*]}" = "--format" ] || fail "'decode --form' completed to '${COMPREPLY[*]}', not '--format'"
 
 COMP_WORDS=("$cli" "scan" "--model" "T"); COMP_CWORD=3
 _ydscope_cli
