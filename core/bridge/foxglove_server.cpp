@@ -205,9 +205,9 @@ asio::awaitable<void> FoxgloveServer::Impl::Client::run() {
   buffer.clear();
   std::size_t message_size = 0;
   while (open_) {
-    co_await ws_.async_read_some(buffer, 4096, token);
+    const std::size_t got = co_await ws_.async_read_some(buffer, 4096, token);
     if (ec) break;
-    message_size += buffer.size();
+    message_size += got;
     if (message_size > kMaxClientMessage) buffer.clear();  // keep reading it, but not keeping it
     if (!ws_.is_message_done()) continue;
     if (message_size > kMaxClientMessage) {
