@@ -64,9 +64,13 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   EXPECT_LT(dead.points, before.points / 10) << "the old scan stays bright after the lidar died";
   EXPECT_GT(dead.overlay_words, 1500) << "no large overlay words over the view";
 
-  // The same port comes back (the sim replaces the dangling link): the app reconnects by itself.
+  // The same port comes back and the app reconnects by itself. The killed sim left its link; it
+  // may point at a pty number another program now holds, which the new sim would refuse to replace.
+  std::filesystem::remove(link);
   sim = spawn_in(dir, sim_argv);
-  const Reading after = screenshot_until(app, dir, seen, live, std::chrono::seconds(40));
+  const bool back = wait_for_path(link, std::chrono::seconds(15));
+  EXPECT_TRUE(back) << "the virtual lidar did not come back at " << link;
+  const Reading after = back ? screenshot_until(app, dir, seen, live, std::chrono::seconds(40)) : Reading{};
   EXPECT_GT(after.points, 300) << "the scan did not come back after the lidar returned";
   EXPECT_LT(after.overlay_words, 400) << "the overlay stayed after the lidar returned";
 
