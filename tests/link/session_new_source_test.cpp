@@ -8,6 +8,7 @@
 #include "core/link/replay_link.h"
 #include "core/link/session.h"
 #include "core/sim/sim_server.h"
+#include "test_data.h"
 
 namespace ydscope {
 namespace {
@@ -34,7 +35,7 @@ TEST(SessionNewSource, ReplayAfterALiveG1ShowsNoneOfTheG1sAnswers) {
   ASSERT_TRUE(g1.scan_hz);
   ASSERT_GT(g1.counters.bytes_received, 0u);
 
-  const std::string file = std::string(YDSCOPE_SOURCE_DIR) + "/assets/demo-g6.ydrec";
+  const std::string file = (test::assets_dir() / "demo-g6.ydrec").string();
   SessionConfig replay;
   replay.address = file;
   replay.model = Model::G6;
