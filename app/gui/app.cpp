@@ -12,6 +12,7 @@
 #include "ui/panels/panels.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
+#include "core/protocol/commands.h"
 #include "ui/view/health_names.h"
 
 namespace ydscope::gui {
@@ -68,6 +69,8 @@ App::~App() {
 
 std::string App::start_source() {
   ui::ConnectRequest request;
+  start_clean();
+  has_source_ = true;
   switch (options_.source) {
     case SourceKind::Auto:
       model_.banner = source_.start_auto();
@@ -80,6 +83,8 @@ std::string App::start_source() {
       request.address = options_.port;
       if (options_.model && *options_.model != "auto") request.model = options_.model;
       if (options_.baud) request.baud = *options_.baud;
+      // The Port tab shows what runs, so Connect there reconnects to it.
+      std::snprintf(model_.port_text, sizeof model_.port_text, "%s", options_.port.c_str());
       break;
     case SourceKind::Sim: {
       request.kind = ui::ConnectRequest::Kind::Sim;
@@ -97,6 +102,7 @@ std::string App::start_source() {
       request.kind = ui::ConnectRequest::Kind::Replay;
       request.address = options_.replay_file;
       settings_.last_replay_file = options_.replay_file;
+      std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", options_.replay_file.c_str());
       break;
   }
   const std::string error = source_.start(request);
@@ -104,7 +110,10 @@ std::string App::start_source() {
   model_.sim_active = source_.sim_active();
   model_.replay.available = source_.replay_active();
   model_.status_message = error;
-  if (!error.empty()) model_.banner = error;
+  if (!error.empty()) {
+    model_.banner = error;
+    has_source_ = false;
+  }
   model_.show_source_tab = static_cast<int>(request.kind);
   return error;
 }
@@ -112,6 +121,7 @@ std::string App::start_source() {
 void App::drain_laps() {
   const std::size_t drained = session_.laps().drain_newest(lap_);
   model_.laps_skipped = session_.laps().skipped();
+  if (drained > 0) last_lap_at_ = std::chrono::steady_clock::now();
   if (drained == 0 || model_.paused_view) return;
   history_.push(lap_);
   view_->invalidate();
@@ -138,6 +148,7 @@ void App::update_model() {
       source_.auto_probe_done();
       model_.banner.clear();
     } else if (model_.now_s > kAutoProbeSeconds) {
+      start_clean();
       model_.banner = source_.fall_back_to_sim();
       model_.source_text = source_.description();
       model_.snap = session_.snapshot();
@@ -162,6 +173,62 @@ void App::update_model() {
     }
     model_.timeline.observe(source, value, model_.now_s, text);
   }
+  update_view_state();
+}
+
+void App::update_view_state() {
+  const SessionSnapshot& s = model_.snap;
+  ui::ViewStateInput in;
+  in.state = s.state;
+  in.link_message = s.message;
+  in.address = model_.source_text;
+  in.has_source = has_source_;
+  in.replay = model_.replay.available;
+  in.replay_paused = model_.replay.available && model_.replay.paused;
+  if (last_lap_at_) in.seconds_since_lap = std::chrono::duration<double>(std::chrono::steady_clock::now() - *last_lap_at_).count();
+  model_.view_state = ui::describe_view_state(in);
+
+  ui::HealthAlertInput health;
+  health.model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
+  if (s.health) {
+    health.answer_status = s.health->status;
+    health.answer_error_code = s.health->error_code;
+    health.answer_is_bits = s.health->command == Command::HealthStatusBits;
+  }
+  health.ct_bits = model_.ct_health;
+  health.ct_trusted = model_.ct_health_trusted;
+  health.crc8_failures = s.counters.crc8_failures;
+  model_.alerts = ui::health_alerts(health);
+}
+
+void App::start_clean() {
+  ui::UiModel& m = model_;
+  m.snap = {};
+  m.scan_rate.reset();
+  m.frame_ms = {};
+  m.latency_ms = {};
+  m.laps_shown = 0;
+  m.laps_skipped = 0;
+  m.points_in_lap = 0;
+  m.cloud = {};
+  m.points_drawn_total = 0;
+  m.ct_health.reset();
+  m.ct_health_trusted = true;
+  m.crc_mismatch_laps = 0;
+  m.timeline.clear();
+  m.replay = {};
+  m.paused_view = false;
+  m.feedback->clear();
+  if (m.distance_scale_override) {
+    m.distance_scale_override = false;
+    session_.set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
+  }
+  last_set_scan_hz_.reset();
+  last_lap_at_.reset();
+  pending_latency_rx_ns_ = 0;
+  history_.clear();
+  lap_ = {};
+  view_->invalidate();
 }
 
 void App::handle_keys() {
@@ -230,6 +297,7 @@ void App::frame() {
   glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
   glClear(GL_COLOR_BUFFER_BIT);
   view_->draw(history_, settings_, fb_scale, fb_h);
+  ui::draw_view_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
   ImGui::Render();
   glViewport(0, 0, fb_w, fb_h);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -270,6 +338,8 @@ void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
   if (m.disconnect_request) {
     m.disconnect_request = false;
     source_.stop();
+    start_clean();
+    has_source_ = false;
     m.source_text.clear();
     m.banner.clear();
   }
@@ -277,13 +347,13 @@ void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
     const ui::ConnectRequest request = *m.connect_request;
     m.connect_request.reset();
     if (request.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = request.address;
+    source_.stop();
+    start_clean();
     const std::string error = source_.start(request);
+    has_source_ = error.empty();
     m.status_message = error;
     m.source_text = source_.description();
     m.banner.clear();
-    m.scan_rate.reset();
-    history_.clear();
-    view_->invalidate();
     m.replay.available = source_.replay_active();
   }
   if (m.replay.available) {

@@ -39,6 +39,8 @@ class App {
   // The current lap, for the CSV export.
   const Lap& current_lap() const { return lap_; }
   bool quit_requested() const { return quit_; }
+  // Saves a timestamped PNG after the next frame, as the S key does (SIGUSR1 asks for it).
+  void request_screenshot() { model_.screenshot_request = true; }
 
  private:
   void drain_laps();
@@ -46,6 +48,9 @@ class App {
   void handle_keys();
   void carry_out_requests(int framebuffer_width, int framebuffer_height);
   void toggle_fullscreen();
+  // A new source or a Disconnect: everything measured from the old one goes.
+  void start_clean();
+  void update_view_state();
 
   GLFWwindow* window_;
   AppOptions options_;
@@ -63,6 +68,8 @@ class App {
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
   std::optional<double> last_set_scan_hz_;
+  std::optional<std::chrono::steady_clock::time_point> last_lap_at_;  // newest lap of this source
+  bool has_source_ = false;
   bool quit_ = false;
   bool fullscreen_ = false;
   int windowed_[4] = {100, 100, 1280, 800};

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdint>
 #include <csignal>
+#include <signal.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,6 +28,9 @@ namespace {
 // Ctrl-C or a service manager's SIGTERM ends the loop normally, so settings are saved.
 volatile std::sig_atomic_t g_stop_requested = 0;
 void on_stop_signal(int) { g_stop_requested = 1; }
+// SIGUSR1 saves a screenshot like the S key: for a kiosk's remote check, and for the UI tests.
+volatile std::sig_atomic_t g_screenshot_requested = 0;
+void on_screenshot_signal(int) { g_screenshot_requested = 1; }
 
 void on_glfw_error(int code, const char* description) {
   // Without a window manager (Xvfb) GLFW cannot iconify a full-screen window on focus loss; harmless.
@@ -99,11 +103,21 @@ int run(const ydscope::gui::AppOptions& options) {
       int frames = 0;
       std::signal(SIGINT, on_stop_signal);
       std::signal(SIGTERM, on_stop_signal);
+      std::signal(SIGUSR1, on_screenshot_signal);
+      // A launcher may have blocked it until the handler is in place (the UI tests do).
+      sigset_t usr1;
+      sigemptyset(&usr1);
+      sigaddset(&usr1, SIGUSR1);
+      sigprocmask(SIG_UNBLOCK, &usr1, nullptr);
       while (exit_code == 0 && !glfwWindowShouldClose(window) && !app->quit_requested() && !g_stop_requested) {
         // Wait for input or the session's wake-up; the timeout keeps the statistics ticking.
         // Laps wake the loop through glfwPostEmptyEvent; with nothing arriving a slow tick keeps the
         // statistics and link state current at almost no cost.
         glfwWaitEventsTimeout(screenshot_mode ? 0.02 : (app->streaming() ? 0.25 : 1.0));
+        if (g_screenshot_requested) {
+          g_screenshot_requested = 0;
+          app->request_screenshot();
+        }
         app->frame();
         ++frames;
         if (screenshot_mode) {

@@ -2,14 +2,11 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <vector>
 
 #include <stb_image_write.h>
-#include <unistd.h>
 
 #include "ui/render/gl.h"
 
@@ -46,19 +43,6 @@ std::string export_lap_csv(const std::string& path, const Lap& lap) {
   }
   if (!out) return "writing " + path + " failed: " + std::strerror(errno) + ".";
   return {};
-}
-
-std::string timestamped_name(const char* extension) {
-  char stamp[32];
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  std::string name = std::string("ydscope-") + stamp + "." + extension;
-  if (access(".", W_OK) != 0) {
-    if (const char* home = std::getenv("HOME")) name = std::string(home) + "/" + name;
-  }
-  return name;
 }
 
 }  // namespace ydscope::gui

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/protocol/lap.h"
+#include "ui/view/file_names.h"
 
 namespace ydscope::gui {
 
@@ -13,7 +14,7 @@ std::string save_framebuffer_png(const std::string& path, int width, int height)
 // One line per point: angle_deg,range_mm,flag. Empty string on success, otherwise a sentence.
 std::string export_lap_csv(const std::string& path, const Lap& lap);
 
-// "ydscope-20261122-021500.png" in the current directory (or $HOME when it is not writable).
-std::string timestamped_name(const char* extension);
+// Saved files get ui::timestamped_name (ui/view/file_names.h).
+using ui::timestamped_name;
 
 }  // namespace ydscope::gui

@@ -22,6 +22,19 @@ void SessionCounters::close_decoder_epoch() {
   current_ = {};
 }
 
+void SessionCounters::reset() {
+  for (auto* counter : {&bytes_received_, &reads_, &bytes_sent_, &drained_bytes_, &reconnects_, &refused_commands_, &queue_drops_,
+                        &packets_, &zero_packets_, &laps_, &checksum_errors_, &resync_bytes_, &crc8_failures_}) {
+    counter->store(0, std::memory_order_relaxed);
+  }
+  last_byte_ns_.store(0, std::memory_order_relaxed);
+  for (auto* rate : {&bytes_per_s_, &packets_per_s_, &laps_per_s_}) rate->store(0, std::memory_order_relaxed);
+  base_ = {};
+  current_ = {};
+  last_tick_ns_ = 0;
+  tick_bytes_ = tick_packets_ = tick_laps_ = 0;
+}
+
 void SessionCounters::tick(std::int64_t now_ns) {
   const std::uint64_t bytes = bytes_received_.load(std::memory_order_relaxed);
   const std::uint64_t packets = packets_.load(std::memory_order_relaxed);

@@ -48,6 +48,8 @@ class SessionCounters {
   void set_decoder_totals(const DecoderTotals& totals);
   // Folds the current link's decoder totals into the base before a new decoder starts at zero.
   void close_decoder_epoch();
+  // A new connection: its counts start at zero (a reconnect within one connection keeps them).
+  void reset();
   // Once a second: recompute the rates from the totals.
   void tick(std::int64_t now_ns);
 

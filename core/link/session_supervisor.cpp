@@ -83,6 +83,21 @@ void Session::Impl::spawn_supervisor() {
   config_ = config;
   supervisor_running_ = true;
   disconnect_requested_ = false;
+  // What the snapshot says about a device belongs to the connection that learned it: a replay
+  // after a G1 session must not show the G1's health answer or set rate.
+  counters_.reset();
+  publish([](SessionSnapshot& s) {
+    const SessionSnapshot fresh;
+    s.link = fresh.link;
+    s.baud = fresh.baud;
+    s.device = fresh.device;
+    s.health = fresh.health;
+    s.scan_hz = fresh.scan_hz;
+    s.ranging_khz = fresh.ranging_khz;
+    s.power_down_protection = fresh.power_down_protection;
+    s.distance_scale = fresh.distance_scale;
+    s.last_result = fresh.last_result;
+  });
   asio::co_spawn(io_, supervise(std::move(config)), [this](std::exception_ptr error) {
     supervisor_running_ = false;
     link_.detach();

@@ -1,42 +1,19 @@
 // The real app under the display CTest provides (scripts/test wraps ctest in xvfb-run): render
 // frames with laps arriving, write a screenshot, exit 0; the PNG must show points and panels.
 #include <gtest/gtest.h>
-#include <stb_image.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
-#include <memory>
 #include <string>
 
+#include "app_test_support.h"
 #include "test_data.h"
 
 namespace {
 
+using namespace ydscope::test;
+
 #ifdef YDSCOPE_APP_PATH
-
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::unique_ptr<unsigned char, void (*)(void*)> pixels{nullptr, stbi_image_free};
-  const unsigned char* at(int x, int y) const { return pixels.get() + (static_cast<std::size_t>(y) * width + x) * 3; }
-};
-
-Image load_png(const std::string& path) {
-  Image image;
-  int channels = 0;
-  image.pixels.reset(stbi_load(path.c_str(), &image.width, &image.height, &channels, 3));
-  return image;
-}
-
-// A saturated, bright pixel: a scan point (the grid and panels are greys and dim blues).
-bool is_point_pixel(const unsigned char* p) {
-  const int hi = std::max({p[0], p[1], p[2]});
-  const int lo = std::min({p[0], p[1], p[2]});
-  return hi > 140 && hi - lo > 70;
-}
-
-bool is_text_pixel(const unsigned char* p) { return p[0] > 150 && p[1] > 150 && p[2] > 150; }
 
 int run_app(const std::string& arguments) {
   const std::filesystem::path home = std::filesystem::path(testing::TempDir()) / "ydscope-ui-home";
@@ -58,20 +35,9 @@ void expect_scan_and_panels(const std::string& png) {
   EXPECT_GT(text, 500) << "no panel text in the left third";
   // Points: bright coloured pixels in the view, within the rings around its centre.
   const int view_left = image.width * 35 / 100;
-  const int cx = (view_left + image.width) / 2;
-  const int cy = image.height / 2;
-  const int radius = std::min(image.width - view_left, image.height) / 2;
-  int points = 0;
-  int far_background = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = view_left; x < image.width; ++x) {
-      const int dx = x - cx;
-      const int dy = y - cy;
-      if (dx * dx + dy * dy <= radius * radius) points += is_point_pixel(image.at(x, y));
-      const unsigned char* p = image.at(x, y);
-      far_background += (p[0] < 40 && p[1] < 40 && p[2] < 50);
-    }
-  }
+  const int points = points_in_rings(image, view_left);
+  const int far_background = count_pixels(image, {view_left, 0, image.width, image.height},
+                                          [](const unsigned char* p) { return p[0] < 40 && p[1] < 40 && p[2] < 50; });
   EXPECT_GT(points, 300) << "no lidar points drawn inside the rings";
   EXPECT_GT(far_background, (image.width - view_left) * image.height / 3) << "the view is not the dark background";
 }

@@ -7,6 +7,7 @@
 
 #include "core/protocol/model_profile.h"
 #include "ui/panels/panels.h"
+#include "ui/view/file_names.h"
 
 namespace ydscope::ui {
 namespace {
@@ -135,17 +136,27 @@ void record_section(UiModel& m, const SessionSnapshot& s, Session& session) {
     ImGui::SameLine();
     ImGui::Text("%.1f s, %.2f MB", m.now_s - m.record_started_s, ec ? 0.0 : static_cast<double>(bytes) / 1e6);
     wrapped_text(s.recording_path.c_str());
-    if (ImGui::Button("Stop recording")) session.stop_recording();
+    if (ImGui::Button("Stop recording")) session.stop_recording(track_command(m, CommandControl::Recording));
+    command_feedback_line(m, CommandControl::Recording);
   } else {
-    if (m.record_text[0] == '\0') std::snprintf(m.record_text, sizeof m.record_text, "ydscope-recording.ydrec");
-    ImGui::InputText("file", m.record_text, sizeof m.record_text);
+    // Empty means a new timestamped name at each start, so no recording overwrites another.
+    ImGui::InputTextWithHint("file", "ydscope-<date>-<time>.ydrec", m.record_text, sizeof m.record_text);
     const bool connected = link_state_connected(s.state);
     if (!connected) ImGui::BeginDisabled();
     if (ImGui::Button("Start recording")) {
-      session.start_recording(m.record_text);
+      const std::string path = m.record_text[0] ? std::string(m.record_text) : timestamped_name("ydrec");
+      std::error_code ec;
+      if (std::filesystem::exists(path, ec)) {
+        const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
+        m.feedback->finished(CommandControl::Recording, ticket, false,
+                             path + " already exists; choose another name, or clear the field for a timestamped one.");
+      } else {
+        session.start_recording(path, track_command(m, CommandControl::Recording));
+      }
       m.record_started_s = m.now_s;
     }
     if (!connected) ImGui::EndDisabled();
+    command_feedback_line(m, CommandControl::Recording);
     help_marker("Every byte in both directions, with timestamps, written by the I/O thread; replay it from the Replay tab.");
   }
 }

@@ -10,21 +10,28 @@
 namespace ydscope::ui {
 namespace {
 
-void busy_and_result(const SessionSnapshot& s, double now_s) {
-  if (s.busy) {
-    static const char* const kSpin[] = {"|", "/", "-", "\\"};
-    ImGui::TextColored({0.4f, 0.7f, 1.0f, 1.0f}, "%s %s...", kSpin[static_cast<int>(now_s * 8.0) % 4],
-                       s.busy_what.empty() ? "working" : s.busy_what.c_str());
-  } else if (s.last_result) {
-    const CommandResult& r = *s.last_result;
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(r.ok ? ImVec4{0.35f, 0.9f, 0.55f, 1.0f} : ImVec4{1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", r.what.c_str(),
-                       r.message.c_str());
-    ImGui::PopTextWrapPos();
-  }
+}  // namespace
+
+CommandCallback track_command(UiModel& m, CommandControl control) {
+  const std::uint64_t ticket = m.feedback->issued(control);
+  return [feedback = m.feedback, control, ticket](const CommandResult& r) {
+    feedback->finished(control, ticket, r.ok, r.what + ": " + r.message);
+  };
 }
 
-}  // namespace
+void command_feedback_line(UiModel& m, CommandControl control) {
+  const auto shown = m.feedback->shown(control, m.now_s);
+  if (!shown) return;
+  if (shown->pending) {
+    static const char* const kSpin[] = {"|", "/", "-", "\\"};
+    ImGui::TextColored({0.4f, 0.7f, 1.0f, 1.0f}, "%s %s...", kSpin[static_cast<int>(m.now_s * 8.0) % 4],
+                       m.snap.busy_what.empty() ? "working" : m.snap.busy_what.c_str());
+    return;
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, shown->ok ? ImVec4{0.35f, 0.9f, 0.55f, 1.0f} : ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
+  wrapped_text(shown->text.c_str());
+  ImGui::PopStyleColor();
+}
 
 void draw_frequency_panels(UiModel& m, Session& session) {
   const SessionSnapshot& s = m.snap;
@@ -58,7 +65,7 @@ void draw_frequency_panels(UiModel& m, Session& session) {
         double target = std::round((base + step) * 10.0) / 10.0;
         if (profile) target = std::clamp(target, profile->min_scan_hz, profile->max_scan_hz);
         m.scan_target_hz = static_cast<float>(target);
-        session.set_scan_hz(target);
+        session.set_scan_hz(target, track_command(m, CommandControl::ScanFrequency));
       }
       ImGui::SameLine();
     }
@@ -66,8 +73,9 @@ void draw_frequency_panels(UiModel& m, Session& session) {
     ImGui::SetNextItemWidth(110.0f);
     ImGui::InputFloat("Hz##target", &m.scan_target_hz, 0.0f, 0.0f, "%.1f");
     ImGui::SameLine();
-    if (ImGui::Button("Set target")) session.set_scan_hz(static_cast<double>(m.scan_target_hz));
+    if (ImGui::Button("Set target")) session.set_scan_hz(static_cast<double>(m.scan_target_hz), track_command(m, CommandControl::ScanFrequency));
     if (!can_command) ImGui::EndDisabled();
+    command_feedback_line(m, CommandControl::ScanFrequency);
     if (profile) ImGui::TextDisabled("%s allows %.0f to %.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
   }
 
@@ -79,16 +87,16 @@ void draw_frequency_panels(UiModel& m, Session& session) {
       for (const std::uint16_t khz : profile->ranging_khz) {
         char label[24];
         std::snprintf(label, sizeof label, "%u kHz", static_cast<unsigned>(khz));
-        if (ImGui::RadioButton(label, s.ranging_khz && *s.ranging_khz == khz)) session.set_ranging_khz(khz);
+        if (ImGui::RadioButton(label, s.ranging_khz && *s.ranging_khz == khz)) session.set_ranging_khz(khz, track_command(m, CommandControl::RangingFrequency));
         ImGui::SameLine();
       }
       ImGui::NewLine();
       if (!can_command) ImGui::EndDisabled();
+      command_feedback_line(m, CommandControl::RangingFrequency);
     } else if (profile) {
       ImGui::TextDisabled("%s reports its ranging frequency but cannot change it.", std::string(profile->name).c_str());
     }
   }
-  busy_and_result(s, m.now_s);
 }
 
 void draw_view_panel(UiModel& m, ViewSettings& v) {

@@ -135,8 +135,9 @@ void draw_health_panel(UiModel& m, Session& session) {
   if (s.health && !s.health->summary.empty()) ImGui::TextDisabled("device says: %s", s.health->summary.c_str());
   const bool can_ask = link_state_connected(s.state) && !s.busy && !m.replay.available;
   if (!can_ask) ImGui::BeginDisabled();
-  if (ImGui::Button("Ask health now")) session.refresh_health();
+  if (ImGui::Button("Ask health now")) session.refresh_health(track_command(m, CommandControl::Health));
   if (!can_ask) ImGui::EndDisabled();
+  command_feedback_line(m, CommandControl::Health);
 
   if (ImGui::TreeNode("timeline", "timeline (%d changes)", static_cast<int>(m.timeline.events().size()))) {
     if (ImGui::BeginChild("timeline", {0.0f, 120.0f}, true)) {

@@ -20,8 +20,10 @@ void draw_stats_panel(const UiModel& model);
 // use the rest of the window.
 float draw_sidebar(UiModel& model, ViewSettings& settings, Session& session);
 
-// Status line over the polar view: link state, model, measured rate, banner.
+// Status line over the polar view: model, state, measured rate, health alert, badges, banner.
 void draw_view_header(const UiModel& model, float view_left, float view_width);
+// When model.view_state says the picture is not live: dim the view and say why in large type.
+void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 
 // Small helpers shared by the panels.
 void help_marker(const char* text);
@@ -30,5 +32,9 @@ void wrapped_text(const char* text);
 // A dim title over a thin rule (ImGui 1.86 has no SeparatorText).
 void section(const char* title);
 void link_state_text(LinkState state, const char* message);
+// A session callback that files the command's outcome under `control`, and the line beside that
+// control which shows it (a spinner while it runs, then the outcome for a few seconds).
+CommandCallback track_command(UiModel& model, CommandControl control);
+void command_feedback_line(UiModel& model, CommandControl control);
 
 }  // namespace ydscope::ui

@@ -1,4 +1,4 @@
-// Statistics, the sidebar that holds every panel, and the status header over the polar view.
+// Statistics, and the sidebar that holds every panel.
 #include <cstdio>
 #include <cstring>
 
@@ -7,10 +7,6 @@
 #include "ui/panels/panels.h"
 
 namespace ydscope::ui {
-namespace {
-
-}  // namespace
-
 void draw_stats_panel(const UiModel& m) {
   if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const CounterSnapshot& c = m.snap.counters;
@@ -67,41 +63,6 @@ float draw_sidebar(UiModel& m, ViewSettings& v, Session& session) {
   width = ImGui::GetWindowWidth();
   ImGui::End();
   return width;
-}
-
-void draw_view_header(const UiModel& m, float view_left, float view_width) {
-  // Along the bottom of the view, clear of the spoke labels at the edges: state line on the left,
-  // the banner (why this source) centred above it.
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float pad = 72.0f;  // above the spoke labels that sit in the bottom corners
-  const float line = ImGui::GetTextLineHeightWithSpacing();
-  const float bottom = ImGui::GetMainViewport()->WorkSize.y;
-  const SessionSnapshot& s = m.snap;
-  char text[256];
-  const char* model = s.device && s.device->profile ? s.device->profile->name.data() : "";
-  const auto measured = m.scan_rate.hz();
-  int n = std::snprintf(text, sizeof text, "%s%s%s", model, *model ? "  \xE2\x80\xA2  " : "",
-                        std::string(link_state_name(s.state)).c_str());
-  if (measured && n > 0 && s.state == LinkState::Scanning) std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured, m.points_in_lap);
-  const ImU32 state_colour = s.state == LinkState::Scanning ? IM_COL32(110, 230, 150, 255)
-                             : (s.state == LinkState::Failed ? IM_COL32(255, 110, 100, 255) : IM_COL32(255, 200, 90, 255));
-  float y = bottom - pad;
-  draw->AddText({view_left + 16.0f, y}, state_colour, text);
-  if (s.state != LinkState::Scanning && !s.message.empty()) {
-    y -= line;
-    draw->AddText({view_left + 16.0f, y}, IM_COL32(255, 200, 120, 255), s.message.c_str());
-  }
-  if (m.paused_view) {
-    y -= line;
-    draw->AddText({view_left + 16.0f, y}, IM_COL32(255, 255, 255, 220), "frozen (P to resume)");
-  }
-  if (!m.banner.empty()) {
-    const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str());
-    const float x = view_left + (view_width - size.x) * 0.5f;
-    const float by = 44.0f;
-    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, 215), 8.0f);
-    draw->AddText({x, by}, IM_COL32(210, 230, 255, 255), m.banner.c_str());
-  }
 }
 
 }  // namespace ydscope::ui

@@ -4,16 +4,20 @@
 // starting the virtual lidar, saving files), or call the session's intents directly (frequency,
 // health, recording), whose outcome comes back in the snapshot.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/link/session.h"
 #include "core/sim/faults.h"
+#include "ui/view/command_feedback.h"
+#include "ui/view/health_alerts.h"
 #include "ui/view/health_timeline.h"
 #include "ui/view/point_cloud.h"
 #include "ui/view/rate_meters.h"
 #include "ui/view/settings.h"
+#include "ui/view/view_state.h"
 
 namespace ydscope::ui {
 
@@ -64,6 +68,11 @@ struct UiModel {
   CounterRate bytes_rate, packets_rate, laps_rate;
   ReplayControl replay;
   bool paused_view = false;               // the view holds the current laps
+  ViewState view_state;                   // live, or dimmed with the reason in words
+  std::vector<HealthAlert> alerts;        // worst first, for the status line and the badge
+  // Outcomes of device commands for the panel beside the control that issued them. Shared with
+  // the session's completion callbacks, which run on the I/O thread.
+  std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();
   // Opens the Connection tab of the current source once: 0 port, 1 virtual, 2 replay; -1 none.
   int show_source_tab = -1;
 

@@ -20,7 +20,11 @@ const char* find_font() {
   return nullptr;
 }
 
+ImFont* g_display_font = nullptr;
+
 }  // namespace
+
+ImFont* display_font() { return g_display_font; }
 
 Fonts apply_theme(float scale) {
   ImGuiIO& io = ImGui::GetIO();
@@ -28,10 +32,15 @@ Fonts apply_theme(float scale) {
   ImFontConfig config;
   config.OversampleH = 2;
   config.OversampleV = 2;
-  // Latin-1 covers the degree sign; the em dash and arrows come from the general punctuation block.
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2013, 0x2022, 0x2190, 0x2193, 0};
+  // Latin-1 covers the degree sign; dashes, bullet, ellipsis and arrows come from the punctuation
+  // and arrow blocks.
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2013, 0x2026, 0x2190, 0x2193, 0};
   if (const char* path = find_font()) {
     fonts.system_font = io.Fonts->AddFontFromFileTTF(path, 16.0f * scale, &config, ranges) != nullptr;
+    ImFontConfig large;
+    large.OversampleH = 1;  // big glyphs need no sub-pixel oversampling; keeps the atlas small
+    large.OversampleV = 1;
+    g_display_font = io.Fonts->AddFontFromFileTTF(path, kDisplayFontPx * scale, &large, ranges);
   }
   if (!fonts.system_font) {
     ImFontConfig fallback;

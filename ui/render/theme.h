@@ -1,11 +1,18 @@
 #pragma once
 // The app's look: a dark, low-contrast frame around a bright scan, and fonts large enough to read
 // across a booth. Fonts come from the system (DejaVu or Noto) with ImGui's own as the fallback.
+struct ImFont;
+
 namespace ydscope::ui {
 
 struct Fonts {
   bool system_font = false;  // false: ImGui's built-in font, scaled
 };
+
+// Glyphs rasterised large (kDisplayFontPx x scale) for the overlay and the booth view, drawn at any
+// smaller size without blur. Null before apply_theme; then ImGui's default font serves.
+ImFont* display_font();
+inline constexpr float kDisplayFontPx = 64.0f;
 
 // Call once after ImGui::CreateContext and before the first frame. `scale` for HiDPI.
 Fonts apply_theme(float scale);

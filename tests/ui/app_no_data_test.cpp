@@ -1,0 +1,86 @@
+// A bad day under Xvfb: the app shows a virtual lidar that runs in another process; when that
+// process is killed the picture must dim and say so in large words, and when the lidar comes back
+// on the same port the live picture must return by itself.
+#include <gtest/gtest.h>
+
+#include "app_test_support.h"
+
+namespace ydscope::test {
+namespace {
+
+#ifdef YDSCOPE_APP_PATH
+
+// The view is right of the panels (~430 px of 1280); the overlay box sits at its centre.
+constexpr int kViewLeft = 448;
+
+struct Reading {
+  int points = 0;          // saturated scan-point pixels inside the rings
+  int overlay_words = 0;   // near-white pixels in the band where the overlay writes
+};
+
+Reading read(const Image& image) {
+  Reading r;
+  r.points = points_in_rings(image, kViewLeft);
+  const int cx = (kViewLeft + image.width) / 2;
+  const int cy = image.height / 2;
+  r.overlay_words = count_pixels(image, {cx - 320, cy - 90, cx + 320, cy + 90}, is_white_pixel);
+  return r;
+}
+
+// Takes screenshots until `good` holds for one (or the deadline passes); returns the last reading.
+template <class Good>
+Reading screenshot_until(pid_t app, const std::filesystem::path& dir, std::set<std::string>& seen, Good good,
+                         std::chrono::seconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  Reading last;
+  while (std::chrono::steady_clock::now() < deadline) {
+    const Image image = screenshot_of(app, dir, seen);
+    if (!image) continue;
+    last = read(image);
+    if (good(last)) return last;
+  }
+  return last;
+}
+
+TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::filesystem::path dir = fresh_temp_dir("ydscope-bad-day");
+  const std::string link = (dir / "lidar").string();
+  const std::vector<std::string> sim_argv{YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty", link};
+  pid_t sim = spawn_in(dir, sim_argv);
+  ASSERT_TRUE(wait_for_path(link, std::chrono::seconds(15))) << "the virtual lidar did not make " << link;
+  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--port", link, "--model", "G6"});
+  std::set<std::string> seen;
+
+  const auto live = [](const Reading& r) { return r.points > 300 && r.overlay_words < 400; };
+  const Reading before = screenshot_until(app, dir, seen, live, std::chrono::seconds(30));
+  EXPECT_GT(before.points, 300) << "the live scan never showed";
+  EXPECT_LT(before.overlay_words, 400) << "a live view must carry no overlay";
+
+  // A crash, not a clean exit: the pseudo-terminal's other end vanishes mid-stream.
+  stop_process(sim, SIGKILL);
+  const auto dimmed = [&](const Reading& r) { return r.points < before.points / 10 && r.overlay_words > 1500; };
+  const Reading dead = screenshot_until(app, dir, seen, dimmed, std::chrono::seconds(20));
+  EXPECT_LT(dead.points, before.points / 10) << "the old scan stays bright after the lidar died";
+  EXPECT_GT(dead.overlay_words, 1500) << "no large overlay words over the view";
+
+  // The same port comes back and the app reconnects by itself. The killed sim left its link; it
+  // may point at a pty number another program now holds, which the new sim would refuse to replace.
+  std::filesystem::remove(link);
+  sim = spawn_in(dir, sim_argv);
+  const bool back = wait_for_path(link, std::chrono::seconds(15));
+  EXPECT_TRUE(back) << "the virtual lidar did not come back at " << link;
+  const Reading after = back ? screenshot_until(app, dir, seen, live, std::chrono::seconds(40)) : Reading{};
+  EXPECT_GT(after.points, 300) << "the scan did not come back after the lidar returned";
+  EXPECT_LT(after.overlay_words, 400) << "the overlay stayed after the lidar returned";
+
+  EXPECT_EQ(stop_process(app, SIGTERM), 0);
+  stop_process(sim, SIGTERM);
+  // Kept when something failed (or when asked), to look at.
+  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
+}
+
+#endif
+
+}  // namespace
+}  // namespace ydscope::test

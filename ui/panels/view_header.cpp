@@ -1,0 +1,135 @@
+// What is written over the polar view: the status line and its badges (state, health, REC), the
+// banner, and when no laps arrive the dimmed cloud with a large overlay saying why.
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+#include "ui/render/theme.h"
+
+namespace ydscope::ui {
+namespace {
+
+ImU32 severity_colour(Severity s) {
+  switch (s) {
+    case Severity::Ok: return IM_COL32(110, 230, 150, 255);
+    case Severity::Info: return IM_COL32(130, 185, 255, 255);
+    case Severity::Warning: return IM_COL32(255, 200, 90, 255);
+    case Severity::Error: return IM_COL32(255, 105, 95, 255);
+  }
+  return IM_COL32(255, 255, 255, 255);
+}
+
+ImFont* big_font() { return display_font() ? display_font() : ImGui::GetFont(); }
+
+// A rounded pill with text; returns its width so badges can be laid out right to left.
+float badge(ImDrawList* draw, ImVec2 top_right, const char* text, ImU32 fill, ImU32 ink) {
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  const float pad_x = ImGui::GetFontSize() * 0.6f;
+  const float pad_y = ImGui::GetFontSize() * 0.25f;
+  const ImVec2 lo{top_right.x - size.x - 2.0f * pad_x, top_right.y};
+  const ImVec2 hi{top_right.x, top_right.y + size.y + 2.0f * pad_y};
+  draw->AddRectFilled(lo, hi, fill, size.y);
+  draw->AddText({lo.x + pad_x, lo.y + pad_y}, ink, text);
+  return hi.x - lo.x;
+}
+
+}  // namespace
+
+void draw_view_header(const UiModel& m, float view_left, float view_width) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float pad = 72.0f;  // above the spoke labels that sit in the bottom corners
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float bottom = ImGui::GetMainViewport()->WorkSize.y;
+  const float wrap = std::max(view_width - 32.0f, 100.0f);
+  const SessionSnapshot& s = m.snap;
+  const ViewState& v = m.view_state;
+
+  // Status line: model, state in words, measured rate; its colour is the worse of link and health.
+  Severity line_severity = v.severity;
+  if (!m.alerts.empty()) line_severity = worst(line_severity, m.alerts.front().severity);
+  char text[256];
+  const char* model = s.device && s.device->profile ? s.device->profile->name.data() : "";
+  const auto measured = m.scan_rate.hz();
+  int n = std::snprintf(text, sizeof text, "%s%s%s", model, *model ? "  \xE2\x80\xA2  " : "", v.status.c_str());
+  if (measured && n > 0 && v.live) {
+    std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured,
+                  m.points_in_lap);
+  }
+  // Lines stack upwards from the status line; each wraps inside the view.
+  float y = bottom - pad;
+  const auto add_line = [&](const std::string& t, ImU32 colour, bool above) {
+    const ImVec2 size = ImGui::CalcTextSize(t.c_str(), nullptr, false, wrap);
+    if (above) y -= size.y + (line - ImGui::GetTextLineHeight());
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {view_left + 16.0f, y}, colour, t.c_str(), nullptr, wrap);
+  };
+  add_line(text, severity_colour(line_severity), false);
+  if (!m.alerts.empty()) {
+    std::string alert = m.alerts.front().text;
+    if (m.alerts.size() > 1) alert += "  (+" + std::to_string(m.alerts.size() - 1) + " more in Health)";
+    add_line(alert, severity_colour(m.alerts.front().severity), true);
+  }
+  if (!v.live && !v.dim && !s.message.empty()) add_line(s.message, IM_COL32(255, 200, 120, 255), true);
+  if (m.paused_view) add_line("frozen (P to resume)", IM_COL32(255, 255, 255, 220), true);
+
+  // Badges in the top-right corner of the view, right to left: REC, then health.
+  float right = view_left + view_width - 16.0f;
+  const float top = 14.0f;
+  if (s.recording) {
+    char rec[48];
+    std::snprintf(rec, sizeof rec, "\xE2\x80\xA2 REC  %.0f s", std::max(0.0, m.now_s - m.record_started_s));
+    right -= badge(draw, {right, top}, rec, IM_COL32(200, 30, 40, 235), IM_COL32(255, 255, 255, 255)) + 10.0f;
+  }
+  if (!m.alerts.empty()) {
+    const bool error = m.alerts.front().severity == Severity::Error;
+    badge(draw, {right, top}, error ? "HEALTH ERROR" : "HEALTH WARNING", error ? IM_COL32(190, 40, 35, 235) : IM_COL32(215, 150, 20, 235),
+          error ? IM_COL32(255, 255, 255, 255) : IM_COL32(20, 15, 5, 255));
+  }
+
+  if (!m.banner.empty()) {
+    const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str(), nullptr, false, wrap - 28.0f);
+    const float x = view_left + std::max(16.0f, (view_width - size.x) * 0.5f);
+    const float by = 44.0f + (s.recording || !m.alerts.empty() ? line : 0.0f);
+    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, 215), 8.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x, by}, IM_COL32(210, 230, 255, 255), m.banner.c_str(), nullptr,
+                  wrap - 28.0f);
+  }
+}
+
+void draw_view_overlay(const UiModel& m, float view_left, float view_width, float view_height) {
+  const ViewState& v = m.view_state;
+  if (!v.dim) return;
+  // Under the panels, over the cloud: the old picture stays visible but plainly not live.
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const ImVec2 lo{view_left, 0.0f};
+  const ImVec2 hi{view_left + view_width, view_height};
+  draw->AddRectFilled(lo, hi, IM_COL32(9, 11, 15, 205));
+
+  ImFont* font = big_font();
+  const float headline_px = std::clamp(view_height * 0.075f, 30.0f, 96.0f);
+  const float body_px = std::clamp(headline_px * 0.38f, ImGui::GetFontSize(), 40.0f);
+  const float wrap = view_width * 0.8f;
+  const ImVec2 head = font->CalcTextSizeA(headline_px, FLT_MAX, 0.0f, v.headline.c_str());
+  const ImVec2 sub = font->CalcTextSizeA(body_px, FLT_MAX, wrap, v.subtitle.c_str());
+  const float detail_px = body_px * 0.8f;
+  const ImVec2 det = v.detail.empty() ? ImVec2{0.0f, 0.0f} : font->CalcTextSizeA(detail_px, FLT_MAX, wrap, v.detail.c_str());
+  const float gap = body_px * 0.5f;
+  const float box_w = std::max({head.x, sub.x, det.x}) + 2.0f * body_px;
+  const float box_h = head.y + gap + sub.y + (v.detail.empty() ? 0.0f : gap + det.y) + 1.6f * body_px;
+  const float cx = view_left + view_width * 0.5f;
+  const float top = view_height * 0.5f - box_h * 0.5f;
+  draw->AddRectFilled({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(20, 24, 32, 235), body_px * 0.6f);
+  draw->AddRect({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(90, 100, 120, 255), body_px * 0.6f, 0, 2.0f);
+  float y = top + 0.8f * body_px;
+  // White and light grey only: the words must read on any screen, and must not look like scan points.
+  draw->AddText(font, headline_px, {cx - head.x * 0.5f, y}, IM_COL32(245, 245, 250, 255), v.headline.c_str());
+  y += head.y + gap;
+  draw->AddText(font, body_px, {cx - sub.x * 0.5f, y}, IM_COL32(215, 220, 230, 255), v.subtitle.c_str(), nullptr, wrap);
+  y += sub.y + gap;
+  if (!v.detail.empty()) draw->AddText(font, detail_px, {cx - det.x * 0.5f, y}, IM_COL32(160, 168, 182, 255), v.detail.c_str(), nullptr, wrap);
+}
+
+}  // namespace ydscope::ui
