@@ -76,7 +76,9 @@ int run_replay(std::span<const std::string> raw) {
   JsonOut out(stdout);
   const bool jsonl = format == "jsonl";
   const auto on_lap = [&](const Lap& lap) {
-    if (jsonl) write_lap(out, lap, profile.ct_carries_info);
+    if (!jsonl) return;
+    write_lap(out, lap, profile.ct_carries_info);
+    out.flush();  // a program reading the pipe gets each lap as it is played
   };
 
   boost::asio::signal_set signals(io, SIGINT, SIGTERM);
@@ -89,7 +91,6 @@ int run_replay(std::span<const std::string> raw) {
       if (n > 0) {
         const auto now = std::chrono::steady_clock::now().time_since_epoch();
         decoder.feed({buffer.data(), n}, std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), on_lap);
-        out.flush();  // laps appear as they are played, not when the buffer fills
       }
       if (ec) {
         signals.cancel();

@@ -66,7 +66,10 @@ int run_scan(std::span<const std::string> raw) {
   std::string failure;
   while (printed < *laps_wanted && !interrupted.load()) {
     if (session.laps().try_pop(lap)) {
-      if (jsonl) write_lap(out, lap, g1_info);
+      if (jsonl) {
+        write_lap(out, lap, g1_info);
+        out.flush();  // a program reading the pipe gets each lap as it arrives
+      }
       ++printed;
       continue;
     }

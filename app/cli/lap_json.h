@@ -34,7 +34,8 @@ class JsonOut {
     if (value) fixed(*value, decimals);
     else raw("null");
   }
-  // A JSON string literal with quotes and escapes.
+  // A JSON string literal with quotes and escapes. Bytes that are not UTF-8 (a device's serial,
+  // a sysfs name) become U+FFFD, so the output is always valid JSON text.
   void string(std::string_view text);
   void maybe_flush() {
     if (text_.size() >= kFlushAt) flush();

@@ -32,6 +32,9 @@ std::string serial_open_error(const std::string& path, int errno_value) {
     case ENOTTY:
     case EINVAL:
       return head + "not a serial port; give a tty device such as /dev/ttyUSB0 or tcp://host:port";
+    case EISDIR:
+      return head + "it is a folder, not a serial port; give a device such as /dev/ttyUSB0 "
+                    "('ydscope-cli ports' lists them)";
     case EIO:
       return head + "input/output error; the device may have been unplugged, plug it in again";
     default:

@@ -188,6 +188,18 @@ TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
   EXPECT_EQ(run_cli("ports --format xml").second, 2);
 }
 
+TEST_F(FakeSystem, CliJsonIsValidUtf8WhateverTheDeviceSays) {
+  node("ttyUSB0");
+  // A cheap bridge's manufacturer string: Latin-1 bytes, a cut-off UTF-8 sequence, a control byte.
+  const fs::path bridge = usb_device("1-2", "1a86", "7523", "Caf\xe9 \xc3", "ok \xc3\xa9\x01", "\xff" "1");
+  class_tty("ttyUSB0", bridge / "1-2:1.0" / "ttyUSB0", "ch341");
+  const auto [json, status] = run_cli("ports --format json --dev-root " + dev().string() + " --sys-root " + sys().string());
+  EXPECT_EQ(status, 0);
+  EXPECT_NE(json.find(R"("manufacturer":"Caf\ufffd \ufffd")"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"product\":\"ok \xc3\xa9\\u0001\""), std::string::npos) << json;  // valid UTF-8 kept
+  EXPECT_NE(json.find(R"("serial":"\ufffd1")"), std::string::npos) << json;
+}
+
 TEST(LidarBridges, KnownChips) {
   EXPECT_TRUE(is_known_lidar_bridge(0x10c4, 0xea60));
   EXPECT_TRUE(is_known_lidar_bridge(0x1a86, 0x7523));

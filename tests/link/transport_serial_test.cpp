@@ -227,6 +227,10 @@ TEST(SerialLink, RegularFileIsNotASerialPort) {
 
 TEST(SerialLink, OpenErrorSentencesSayWhatToDo) {
   EXPECT_NE(serial_open_error("/dev/ttyUSB0", EACCES).find("dialout"), std::string::npos);
+  EXPECT_NE(serial_open_error("/dev/ttyUSB0", EACCES).find("/usr/lib/udev/rules.d/70-ydlidar.rules"), std::string::npos);
+  EXPECT_EQ(serial_open_error("/tmp", EISDIR),
+            "cannot open /tmp: it is a folder, not a serial port; give a device such as /dev/ttyUSB0 "
+            "('ydscope-cli ports' lists them)");
   EXPECT_NE(serial_open_error("/dev/ttyUSB0", EBUSY).find("busy"), std::string::npos);
   EXPECT_EQ(serial_open_error("/dev/ttyUSB0", EACCES).rfind("cannot open /dev/ttyUSB0: permission denied", 0), 0u);
 }
