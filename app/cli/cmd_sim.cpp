@@ -10,6 +10,8 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "core/protocol/model_profile.h"
+#include "core/sim/delivery.h"
+#include "core/sim/host_compat.h"
 #include "core/sim/scene.h"
 #include "core/sim/sim_server.h"
 
@@ -17,7 +19,8 @@ namespace ydscope::cli {
 namespace {
 
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo]
-                       [--seed N] [fault options] [--verbose]
+                       [--seed N] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
+                       [--delivery whole|burst:BYTES:US|random:MAX] [fault options] [--verbose]
 
 Runs a virtual lidar that a host cannot tell from a real one by its bytes: it answers every command
 of the model's manual, streams scan packets paced to real time and to the model's baud (G1 230400,
@@ -38,6 +41,23 @@ G6/TG 512000), and can inject faults. It serves until SIGINT or SIGTERM, then ex
   --distance-scale X     encode ranges with X mm per raw unit instead of the manual's (G1 1,
                          G6 0.25, TG 0.5), like vendor firmware variants.
   --health-quirk         answer only the other health command (A5 91 <-> A5 92), as some units do.
+  --host-compat NAME     manual (default): answer exactly what the model's manual lists.
+                         ydlidar-sdk: also answer what YDLIDAR's SDK (1.2.19, and its ROS 2 driver)
+                         asks beyond the manual, so it starts without its 1-2 s timeouts: A5 92
+                         health on G6/TG, A5 93 zero-offset angle (0), A5 00 silently, a
+                         device-info frame after the scan header; TG reports its scan rate 0.4 Hz
+                         high, as the SDK expects. The manual's answers are unchanged.
+  --firmware MAJOR.MINOR firmware the device info reports (default 1.2), in the manual's byte order
+                         (low byte major). YDLidar-SDK reads the bytes the other way round, and on
+                         TG picks its distance scale from them: --firmware 1.1 or 2.0 takes its
+                         "old firmware" path (S/2 mm, the manual's), 1.2 and above raw S mm.
+                         G1: major 0..3, minor 0..31 (its CT carries them too).
+  --delivery MODEL       how bytes reach the host, as a USB-serial bridge delivers them:
+                         whole (default): as soon as the line has carried them (a read sees whole
+                         replies and packets when the host keeps up); burst:BYTES:US: BYTES at a
+                         time every US microseconds, a short rest after one quiet interval (a
+                         CP210x/CH340 latency timer, e.g. burst:64:1000); random:MAX: writes of
+                         1..MAX bytes at line rate, split anywhere (seeded by --seed).
   --verbose              print the commands received and the mode changes on stderr.
   --zero-log FILE        append "<n> <CLOCK_MONOTONIC ns>" to FILE just after each zero packet's
                          last byte is written (for latency measurements).
@@ -61,7 +81,27 @@ Faults (all off by default; every injected fault is counted):
 examples:
   ydscope-cli sim --model G6 --pty /tmp/lidar &       then: ydscope-cli info --port /tmp/lidar
   ydscope-cli sim --model G1 --scene room --tcp 127.0.0.1:2000 --lose-packets 0.01 --verbose
+  ydscope-cli sim --model TG30 --pty /tmp/ydlidar --host-compat ydlidar-sdk --firmware 1.1
 )";
+
+// "MAJOR.MINOR" with the model's limits (G1's CT holds major 0..3, minor 0..31).
+std::pair<std::uint8_t, std::uint8_t> parse_firmware(const std::string& text, const ModelProfile& profile) {
+  const unsigned max_major = profile.model == Model::G1 ? 3 : 255;
+  const unsigned max_minor = profile.model == Model::G1 ? 31 : 255;
+  unsigned major = 0;
+  unsigned minor = 0;
+  const auto dot = text.find('.');
+  const auto parse = [](std::string_view part, unsigned& value) {
+    const auto [ptr, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return !part.empty() && ec == std::errc() && ptr == part.data() + part.size();
+  };
+  if (dot == std::string::npos || !parse(std::string_view(text).substr(0, dot), major) ||
+      !parse(std::string_view(text).substr(dot + 1), minor) || major > max_major || minor > max_minor)
+    throw UsageError("--firmware needs MAJOR.MINOR with major 0.." + std::to_string(max_major) + " and minor 0.." +
+                     std::to_string(max_minor) + " on the " + std::string(profile.name) + ", such as 1.2, not '" +
+                     text + "'");
+  return {static_cast<std::uint8_t>(major), static_cast<std::uint8_t>(minor)};
+}
 
 std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text) {
   const auto colon = text.rfind(':');
@@ -79,7 +119,7 @@ int run_sim(std::span<const std::string> raw) {
   const Arguments args(raw,
                        {"model", "pty", "tcp", "scene", "seed", "distance-scale", "zero-log", "corrupt", "drop",
                         "lose-packets", "stall-ms", "stall-every-ms", "health-bits", "junk", "unplug-after-ms",
-                        "replug-after-ms"},
+                        "replug-after-ms", "host-compat", "firmware", "delivery"},
                        {"verbose", "health-quirk"});
 
   const std::string model_name = args.required("model");
@@ -96,6 +136,20 @@ int run_sim(std::span<const std::string> raw) {
   options.device.seed = static_cast<std::uint64_t>(args.integer("seed", 0, INT64_MAX).value_or(1));
   options.device.distance_scale = args.number("distance-scale", 0.001, 1000.0);
   options.device.health_quirk = args.has("health-quirk");
+  if (const auto compat = args.value("host-compat")) {
+    const auto parsed = host_compat_from_name(*compat);
+    if (!parsed)
+      throw UsageError("unknown --host-compat '" + *compat + "'; the choices are " + std::string(host_compat_names()));
+    options.device.host_compat = *parsed;
+  }
+  if (const auto firmware = args.value("firmware"))
+    std::tie(options.device.firmware_major, options.device.firmware_minor) = parse_firmware(*firmware, *profile);
+  if (const auto delivery = args.value("delivery")) {
+    std::string error;
+    const auto parsed = parse_delivery(*delivery, &error);
+    if (!parsed) throw UsageError("--delivery " + *delivery + ": " + error);
+    options.delivery = *parsed;
+  }
   FaultConfig& faults = options.device.faults;
   faults.corrupt_byte_rate = args.number("corrupt", 0.0, 1.0).value_or(0.0);
   faults.drop_byte_rate = args.number("drop", 0.0, 1.0).value_or(0.0);

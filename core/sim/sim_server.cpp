@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -38,7 +39,9 @@ class SimServer::Impl {
   void handle_requests_locked(std::int64_t now);
   void unplug_locked(std::int64_t now);
   void replug_locked(std::int64_t now);
-  void write_out(const std::vector<std::uint8_t>& out, const std::vector<std::size_t>& zero_ends);
+  void write_out(const std::vector<std::uint8_t>& out, const std::vector<std::size_t>& zero_ends,
+                 const std::vector<std::size_t>* piece_ends = nullptr);
+  void shape(std::int64_t now, const std::vector<std::uint8_t>& out, const std::vector<std::size_t>& zero_ends);
   void wake() const {
     const std::uint64_t one = 1;
     if (wake_fd >= 0) (void)!::write(wake_fd, &one, sizeof one);
@@ -55,6 +58,10 @@ class SimServer::Impl {
   mutable std::mutex mu;
   std::condition_variable cv;
   std::unique_ptr<VirtualLidar> device;
+  std::unique_ptr<DeliveryShaper> shaper;  // null for DeliveryKind::Whole
+  std::deque<std::uint64_t> shaped_zero_ends;  // stream offsets of zero-packet ends still held
+  std::uint64_t shaped_in = 0;                 // bytes given to the shaper so far
+  std::uint64_t shaped_out = 0;                // bytes it has released so far
   std::unique_ptr<SimEndpoint> endpoint;  // the server thread's, or start/stop's while it is not running
   std::thread thread;
   int wake_fd = -1;
@@ -78,6 +85,11 @@ void SimServer::Impl::unplug_locked(std::int64_t now) {
   if (!endpoint) return;
   endpoint.reset();  // closes the pty or the sockets; removes the link
   device->power_cycle(now);
+  if (shaper) {  // the bridge lost power with the device
+    shaper->clear();
+    shaped_zero_ends.clear();
+    shaped_out = shaped_in;
+  }
   device_path.clear();
   ++counters.unplugs;
   log_line(now, "unplugged");
@@ -129,9 +141,10 @@ void SimServer::Impl::handle_requests_locked(std::int64_t now) {
   }
 }
 
-void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std::vector<std::size_t>& zero_ends) {
+void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std::vector<std::size_t>& zero_ends,
+                                const std::vector<std::size_t>* piece_ends) {
   // Written in pieces that end at each zero packet's last byte, so its time stamp is taken just
-  // after the write that completed it.
+  // after the write that completed it, and at each write the delivery model makes.
   std::size_t pos = 0;
   std::size_t written = 0;
   std::size_t zeros = 0;
@@ -142,7 +155,19 @@ void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std:
     pos = end;
     return sent == piece.size();
   };
-  for (const std::size_t end : zero_ends) {
+  std::size_t next_zero = 0;
+  std::size_t next_piece = 0;
+  const std::size_t pieces = piece_ends ? piece_ends->size() : 0;
+  while (next_zero < zero_ends.size() || next_piece < pieces) {
+    const std::size_t zero_end = next_zero < zero_ends.size() ? zero_ends[next_zero] : out.size() + 1;
+    const std::size_t piece_end = next_piece < pieces ? (*piece_ends)[next_piece] : out.size() + 1;
+    const std::size_t end = std::min(zero_end, piece_end);
+    if (piece_end == end) ++next_piece;
+    if (zero_end != end) {
+      if (end > pos) write_piece(end);
+      continue;
+    }
+    ++next_zero;
     if (!write_piece(end)) continue;
     const std::int64_t stamp = monotonic_ns();
     const std::uint64_t index = zero_index++;
@@ -153,11 +178,29 @@ void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std:
       std::fflush(zero_log);
     }
   }
-  write_piece(out.size());
+  if (pos < out.size()) write_piece(out.size());
   std::lock_guard lock(mu);
   counters.bytes_written += written;
   counters.bytes_unheard += out.size() - written;
   counters.zero_packets_written += zeros;
+}
+
+void SimServer::Impl::shape(std::int64_t now, const std::vector<std::uint8_t>& out,
+                            const std::vector<std::size_t>& zero_ends) {
+  for (const std::size_t end : zero_ends) shaped_zero_ends.push_back(shaped_in + end);
+  shaped_in += out.size();
+  shaper->push(now, out);
+  std::vector<std::uint8_t> shaped;
+  std::vector<std::size_t> piece_ends;
+  shaper->pop(now, shaped, piece_ends);
+  if (shaped.empty()) return;
+  std::vector<std::size_t> shaped_zeros;
+  while (!shaped_zero_ends.empty() && shaped_zero_ends.front() <= shaped_out + shaped.size()) {
+    shaped_zeros.push_back(static_cast<std::size_t>(shaped_zero_ends.front() - shaped_out));
+    shaped_zero_ends.pop_front();
+  }
+  shaped_out += shaped.size();
+  write_out(shaped, shaped_zeros, &piece_ends);
 }
 
 void SimServer::Impl::run() {
@@ -177,7 +220,12 @@ void SimServer::Impl::run() {
       device->produce(now, out, &zero_ends);
       next = std::min({device->next_event_ns(), unplug_at, replug_at});
     }
-    if (!out.empty()) write_out(out, zero_ends);
+    if (shaper) {
+      shape(monotonic_ns(), out, zero_ends);  // the shaper is the server thread's alone
+      next = std::min(next, shaper->next_due_ns());
+    } else if (!out.empty()) {
+      write_out(out, zero_ends);
+    }
 
     fds.clear();
     fds.push_back({wake_fd, POLLIN, 0});
@@ -223,6 +271,12 @@ void SimServer::start() {
   s.started_ns = monotonic_ns();
   s.device = std::make_unique<VirtualLidar>(s.options.device, s.started_ns);
   s.device->set_log([&s](std::int64_t t, std::string_view line) { s.log_line(t, line); });
+  s.shaper.reset();
+  if (s.options.delivery.kind != DeliveryKind::Whole)
+    s.shaper = std::make_unique<DeliveryShaper>(s.options.delivery, s.device->profile().default_baud,
+                                                s.options.device.seed, s.started_ns);
+  s.shaped_zero_ends.clear();
+  s.shaped_in = s.shaped_out = 0;
   if (!s.options.zero_packet_log.empty()) {
     s.zero_log = std::fopen(s.options.zero_packet_log.c_str(), "w");
     if (!s.zero_log)

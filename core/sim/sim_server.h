@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/sim/delivery.h"
 #include "core/sim/faults.h"
 #include "core/sim/virtual_lidar.h"
 
@@ -29,6 +30,8 @@ struct SimServerOptions {
   // Tcp: listen address (loopback by default); port 0 picks a free port (see SimServer::tcp_port).
   std::string tcp_host = "127.0.0.1";
   std::uint16_t tcp_port = 0;
+  // How the bytes reach the host (core/sim/delivery.h); Whole is the line as it carries them.
+  DeliveryModel delivery;
   // Called on the server thread with CLOCK_MONOTONIC ns just after the write() that carried a zero
   // packet's last byte returned; zero_index counts zero packets since the server started.
   std::function<void(std::int64_t mono_ns, std::uint64_t zero_index)> on_zero_packet_written;

@@ -12,7 +12,8 @@
 //   the 3 s watchdog and answers nothing (the manuals' note: only the first A5 60 from the stopped
 //   state gets the full reply header). Without a keep-alive for 3 s the scan stops by itself.
 // - A5 D9 toggles protection; the reply is 00 when it is now on, 01 when now off (the manuals).
-// - Commands the model's manual does not list get no reply at all (counted as unsupported).
+// - Commands the model's manual does not list get no reply at all (counted as unsupported), unless
+//   a host compatibility mode (VirtualLidarConfig::host_compat, core/sim/host_compat.h) answers them.
 // - Restart (G1 A5 40, G6/TG A5 80): no reply; back to the power-on state (idle, defaults).
 // - Stream: laps of N = round(ranging Hz / scan Hz) samples evenly spaced over 360 degrees; the
 //   zero packet (LSN 1) holds sample 0, then packets of up to 40 samples. With the motor faults
@@ -39,6 +40,7 @@
 #include "core/protocol/model_profile.h"
 #include "core/protocol/reply.h"
 #include "core/sim/faults.h"
+#include "core/sim/host_compat.h"
 
 namespace ydscope {
 
@@ -57,9 +59,13 @@ struct VirtualLidarConfig {
   std::optional<double> distance_scale;
   // Some units answer only the other health command (A5 91 <-> A5 92); this emulates them.
   bool health_quirk = false;
-  std::uint8_t firmware_major = 1;  // also G1's CT version (major 0..3, minor 0..31)
+  // Device-info firmware in the manuals' byte order (low byte major); also G1's CT version (major
+  // 0..3, minor 0..31). YDLidar-SDK reads the two bytes the other way round (see host_compat.h).
+  std::uint8_t firmware_major = 1;
   std::uint8_t firmware_minor = 2;
   std::uint8_t hardware = 1;
+  // Manual: only the manual's answers. YdlidarSdk: also what the vendor SDK asks beyond them.
+  HostCompat host_compat = HostCompat::Manual;
 };
 
 struct DeviceCounters {
@@ -119,6 +125,7 @@ class VirtualLidar {
   void power_cycle(std::int64_t now_ns);
   void set_faults(const FaultConfig& faults);
   const FaultConfig& faults() const { return faults_; }
+  HostCompat host_compat() const { return config_.host_compat; }
   // Sends nothing from from_ns for duration_ns (packets and replies due then are discarded).
   void stall(std::int64_t from_ns, std::int64_t duration_ns);
 
@@ -148,6 +155,9 @@ class VirtualLidar {
   void generate_packet();
   void handle_command(std::uint8_t code, std::int64_t now_ns);
   void answer(Command command, std::span<const std::uint8_t> payload, std::int64_t now_ns);
+  void answer_compat(const CompatCommand& extra, std::int64_t now_ns);
+  void send_reply(std::span<const std::uint8_t> reply, std::int64_t now_ns);
+  HealthReply health_reply() const;
   void start_scan(std::int64_t now_ns);
   void stop_scan(std::int64_t now_ns, std::string_view why);
   bool in_stall(std::int64_t t_ns);

@@ -207,3 +207,62 @@ TEST(CliSim, HelpExplainsEveryFaultOption) {
 
 }  // namespace
 }  // namespace ydscope
+
+namespace ydscope {
+namespace {
+
+// Issue 15: the vendor-SDK host mode, a chosen firmware and a USB-bridge delivery, through the pty.
+TEST(CliSim, HostCompatFirmwareAndDeliveryReachTheHost) {
+  const auto dir = temp_dir();
+  const std::string link = (dir / "ydlidar").string();
+  Child child({"sim", "--model", "TG30", "--pty", link, "--host-compat", "ydlidar-sdk", "--firmware", "1.1",
+               "--delivery", "burst:64:1000"});
+  ASSERT_EQ(child.read_line(10s).rfind("ready /dev/pts/", 0), 0u);
+  test::HostPort host;
+  ASSERT_TRUE(host.open_device(link));
+  ASSERT_TRUE(host.send({0xA5, 0x92}));  // the SDK's health request, not in the TG manual
+  EXPECT_EQ(host.read(10, 3s), (std::vector<std::uint8_t>{0xA5, 0x5A, 0x03, 0x00, 0x00, 0x00, 0x06, 0x00, 0x00, 0x00}));
+  ASSERT_TRUE(host.send({0xA5, 0x90}));
+  const auto info = host.read(27, 3s);
+  ASSERT_EQ(info.size(), 27u);
+  EXPECT_EQ(info[7], 101);  // TG30
+  EXPECT_EQ(info[8], 1);    // firmware 1.1: low byte major, high byte minor (the manual's order)
+  EXPECT_EQ(info[9], 1);
+  ASSERT_TRUE(host.send({0xA5, 0x93}));
+  EXPECT_EQ(host.read(11, 3s),
+            (std::vector<std::uint8_t>{0xA5, 0x5A, 0x04, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x00}));
+  host.close();
+  child.signal(SIGTERM);
+  EXPECT_EQ(child.wait(10s), 0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliSim, BadHostCompatFirmwareOrDeliveryIsOneSentence) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--host-compat", "sdk"}, "unknown --host-compat 'sdk'; the choices are manual, ydlidar-sdk"},
+      {{"--firmware", "1"}, "--firmware needs MAJOR.MINOR"},
+      {{"--firmware", "4.0"}, "major 0..3 and minor 0..31 on the G1"},
+      {{"--delivery", "bursts"}, "the delivery models are whole, burst:BYTES:US"},
+      {{"--delivery", "random:0"}, "random needs the largest write"},
+  };
+  for (const auto& [extra, message] : cases) {
+    std::vector<std::string> args{"sim", "--model", "G1", "--pty", "/tmp/ydscope-never"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Child child(args);
+    EXPECT_EQ(child.wait(10s), 2) << extra[0];
+    const std::string err = child.read_stderr();
+    EXPECT_NE(err.find(message), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  }
+}
+
+TEST(CliSim, HelpExplainsTheHostOptions) {
+  Child child({"sim", "--help"});
+  EXPECT_EQ(child.wait(10s), 0);
+  const std::string help = child.read_stdout();
+  for (const char* option : {"--host-compat", "ydlidar-sdk", "--firmware", "--delivery", "burst:BYTES:US", "random:MAX"})
+    EXPECT_NE(help.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace ydscope
