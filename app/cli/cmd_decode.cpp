@@ -176,9 +176,11 @@ int run_decode(std::span<const std::string> raw) {
   const std::string path = args.single_positional("FILE (or - for standard input)");
   const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
-  const auto recording = recording_metadata_of(path);
+  const auto recording = path != "-" && is_recording_file(path)
+                             ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model")))
+                             : std::nullopt;
   const std::string model = recording ? "" : args.required("model");
-  const ModelProfile* profile = recording ? &recording_profile(args.value("model"), *recording, path) : find_profile(model);
+  const ModelProfile* profile = recording ? recording->profile : find_profile(model);
   if (!profile)
     throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
   const auto mcap = args.value("mcap");
@@ -191,7 +193,8 @@ int run_decode(std::span<const std::string> raw) {
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
-  const auto scale = recording ? recording_distance_scale(scale_option, args.value("model").has_value(), *recording)
+  const auto scale = recording ? recording_distance_scale(scale_option, args.value("model").has_value(),
+                                                          recording->summary.metadata)
                                : scale_option;
 
   ScanDecoder decoder(*profile, scale);
@@ -206,7 +209,10 @@ int run_decode(std::span<const std::string> raw) {
     write_lap(out, filtered, profile->ct_carries_info);
   };
   const auto feed = [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, on_lap); };
-  if (recording) read_recording_device_bytes(path, feed);
+  if (recording) {
+    print_recording_warnings("ydscope-cli decode", recording->warnings());
+    read_recording_device_bytes(path, feed);
+  }
   else read_input(input.get(), path, feed);
   decoder.finish(on_lap);
   write_summary(out, decoder.counters());

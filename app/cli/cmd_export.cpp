@@ -67,8 +67,8 @@ int run_export(std::span<const std::string> raw) {
   refuse_to_overwrite(out, args, "--mcap");
   McapExportOptions options = mcap_options_from(args);
   // One pass for the merged metadata: the model may be named only after the recording started.
-  const auto metadata = recording_metadata_of(path);
-  options.ros.model = recording_profile(args.value("model"), *metadata, path).model;
+  const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"));
+  options.ros.model = plan.profile->model;
   options.ros.distance_scale = args.number("distance-scale", 1e-6, 1e6);
 
   std::string error;
@@ -101,8 +101,7 @@ int run_export(std::span<const std::string> raw) {
               static_cast<unsigned long long>(stats.message_count), stats.chunk_count,
               static_cast<unsigned long long>(exporter->bytes_written()));
   std::fflush(stdout);
-  if (reader->corrupt() || reader->truncated())
-    std::fprintf(stderr, "ydscope-cli export: warning: %s\n", (reader->corrupt() ? reader->error() : reader->warning()).c_str());
+  print_recording_warnings("ydscope-cli export", plan.warnings());
   return kExitOk;
 }
 

@@ -263,8 +263,7 @@ int run_record(std::span<const std::string> raw) {
     std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s\n", out.c_str(),
                 static_cast<double>(summary->duration_ns) / 1e9, static_cast<unsigned long long>(summary->device_bytes),
                 static_cast<unsigned long long>(summary->host_bytes), laps_in(out, summary->metadata).c_str());
-    if (!summary->warning.empty() || !summary->error.empty())
-      std::fprintf(stderr, "ydscope-cli record: warning: %s\n", (summary->error.empty() ? summary->warning : summary->error).c_str());
+    print_recording_warnings("ydscope-cli record", summary->damage);
   } else if (!failure.empty() && s.counters.bytes_received == 0 && s.counters.bytes_sent == 0) {
     std::filesystem::remove(live->path());
     throw std::runtime_error(failure);

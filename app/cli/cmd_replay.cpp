@@ -61,16 +61,16 @@ int run_replay(std::span<const std::string> raw) {
   if (format != "jsonl" && format != "summary")
     throw UsageError("--format must be jsonl or summary, not '" + format + "'");
 
+  const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"));
+  print_recording_warnings("ydscope-cli replay", plan.warnings());
+  const ModelProfile& profile = *plan.profile;
+  const auto scale = recording_distance_scale(args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale),
+                                              args.value("model").has_value(), plan.summary.metadata);
+
   boost::asio::io_context io;
   std::string error;
-  auto failure = RecordingOpenFailure::Unreadable;
-  auto link = ReplayLink::open(io, path, {.speed = speed}, error, &failure);
-  if (!link) throw_open_failure(error, failure);
-  for (const std::string& warning : link->warnings())
-    std::fprintf(stderr, "ydscope-cli replay: warning: %s\n", warning.c_str());
-  const ModelProfile& profile = recording_profile(args.value("model"), link->metadata(), path);
-  const auto scale = recording_distance_scale(args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale),
-                                              args.value("model").has_value(), link->metadata());
+  auto link = ReplayLink::open(io, path, {.speed = speed}, error);
+  if (!link) throw std::runtime_error(error);  // the file changed since the plan read it
 
   ScanDecoder decoder(profile, scale);
   JsonOut out(stdout);

@@ -12,6 +12,7 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include "core/record/recording_reader.h"
+#include "core/record/recording_plan.h"
 
 namespace ydscope {
 namespace {
@@ -245,18 +246,11 @@ std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const 
                                              RecordingOpenFailure* failure) {
   const auto summary = summarize_recording(path, error, failure);
   if (!summary) return nullptr;
-  if (summary->device_bytes == 0) {
-    error = path + " holds no bytes from a device; nothing to replay";
-    return nullptr;
-  }
+  if (error = nothing_to_replay(*summary, path); !error.empty()) return nullptr;
   auto reader = RecordingReader::open(path, error);
   if (!reader) return nullptr;
   auto core = std::make_shared<Core>(io, std::move(reader), options, summary->duration_ns);
-  std::vector<std::string> warnings;
-  for (const std::string* warning : {&summary->error, &summary->warning, &summary->time_warning})
-    if (!warning->empty()) warnings.push_back(*warning);
-  for (const std::string& warning : summary->metadata_warnings) warnings.push_back(path + ": " + warning);
-  return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, std::move(warnings)));
+  return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, summary->damage));
 }
 
 void ReplayLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {

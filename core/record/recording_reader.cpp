@@ -182,6 +182,15 @@ bool RecordingReader::next(RecordView& out) {
   }
 }
 
+std::vector<std::string> RecordingReader::damage() const {
+  std::vector<std::string> sentences;
+  if (corrupt()) sentences.push_back(error_);
+  if (truncated()) sentences.push_back(warning_);
+  if (time_corrections_ > 0) sentences.push_back(time_warning());
+  for (const std::string& field : metadata_warnings_) sentences.push_back(path_ + ": " + field);
+  return sentences;
+}
+
 bool is_recording_file(const std::string& path) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return false;
@@ -208,6 +217,7 @@ std::optional<RecordingSummary> summarize_recording(const std::string& path, std
   summary.error = reader->error();
   summary.time_warning = reader->time_warning();
   summary.metadata_warnings = reader->metadata_warnings();
+  summary.damage = reader->damage();
   return summary;
 }
 

@@ -63,6 +63,9 @@ class RecordingReader {
   std::string time_warning() const;
   std::uint64_t time_corrections() const { return time_corrections_; }
   const std::string& error() const { return error_; }
+  // Everything above that was found wrong but still reads, one sentence each: a corrupt record or
+  // a cut-off tail, damaged record times, damaged metadata fields ("PATH: ..."). Empty when sound.
+  std::vector<std::string> damage() const;
   std::uint16_t version() const { return version_; }
   const std::string& path() const { return path_; }
   std::uint64_t records_read() const { return records_read_; }
@@ -106,6 +109,7 @@ struct RecordingSummary {
   std::string error;             // corrupt record
   std::string time_warning;      // damaged record times (RecordingReader::time_warning())
   std::vector<std::string> metadata_warnings;  // damaged metadata fields that were skipped
+  std::vector<std::string> damage;             // all of the above as sentences (RecordingReader::damage)
 };
 std::optional<RecordingSummary> summarize_recording(const std::string& path, std::string& error,
                                                     RecordingOpenFailure* failure = nullptr);

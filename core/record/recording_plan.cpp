@@ -1,0 +1,74 @@
+#include "core/record/recording_plan.h"
+
+namespace ydscope {
+namespace {
+
+RecordingRefusal refusal_of(RecordingOpenFailure failure) {
+  switch (failure) {
+    case RecordingOpenFailure::Unreadable: return RecordingRefusal::Unreadable;
+    case RecordingOpenFailure::NotARecording: return RecordingRefusal::NotARecording;
+    case RecordingOpenFailure::Unsupported: return RecordingRefusal::Unsupported;
+  }
+  return RecordingRefusal::Unreadable;
+}
+
+}  // namespace
+
+const ModelProfile* recording_model(const std::optional<std::string>& model_option, const RecordingMetadata& metadata,
+                                    const std::string& path, std::string& error) {
+  const std::string choices(model_names());
+  if (model_option) {
+    const ModelProfile* profile = find_profile(*model_option);
+    if (!profile) error = "unknown model '" + *model_option + "'; valid models are " + choices;
+    return profile;
+  }
+  if (!metadata.model) {
+    error = path + " does not say which lidar made it; pass --model (" + choices + ")";
+    return nullptr;
+  }
+  const ModelProfile* profile = find_profile(*metadata.model);
+  if (!profile)
+    error = path + " was made with model '" + *metadata.model + "', which this ydscope does not know; pass --model (" +
+            choices + ")";
+  return profile;
+}
+
+std::optional<double> recording_distance_scale(const std::optional<double>& scale_option, bool model_chosen,
+                                               const RecordingMetadata& metadata) {
+  if (scale_option) return scale_option;
+  if (model_chosen) return std::nullopt;  // the recorded scale belonged to the recorded model
+  return metadata.distance_scale;
+}
+
+std::string nothing_to_replay(const RecordingSummary& summary, const std::string& path) {
+  if (summary.device_bytes > 0) return {};
+  return path + " holds no bytes from a device; nothing to replay";
+}
+
+RecordingPlan plan_recording(const std::string& path, RecordingUse use, const std::optional<std::string>& model_option,
+                             const std::optional<double>& scale_option) {
+  RecordingPlan plan;
+  auto failure = RecordingOpenFailure::Unreadable;
+  auto summary = summarize_recording(path, plan.refusal_text, &failure);
+  if (!summary) {
+    plan.refusal = refusal_of(failure);
+    return plan;
+  }
+  plan.summary = std::move(*summary);
+  if (use == RecordingUse::Replay) {
+    plan.refusal_text = nothing_to_replay(plan.summary, path);
+    if (!plan.refusal_text.empty()) {
+      plan.refusal = RecordingRefusal::NothingToPlay;
+      return plan;
+    }
+  }
+  plan.profile = recording_model(model_option, plan.summary.metadata, path, plan.refusal_text);
+  if (!plan.profile) {
+    plan.refusal = RecordingRefusal::NeedsModel;
+    return plan;
+  }
+  plan.distance_scale = recording_distance_scale(scale_option, model_option.has_value(), plan.summary.metadata);
+  return plan;
+}
+
+}  // namespace ydscope
