@@ -12,6 +12,7 @@
 #include "core/analysis/lap_timing.h"
 #include "core/analysis/text_format.h"
 #include "core/link/device_probe.h"
+#include "core/protocol/health_level.h"
 #include "core/protocol/reply.h"
 
 namespace ydscope::cli {
@@ -32,11 +33,8 @@ CommandResult await_result(const std::function<void(CommandCallback)>& post, con
   return result.get();
 }
 
-// A5 92 answers module bits (bits 6-7 reserved); A5 91 a status (0 ok) and an error code.
-bool health_problem(const HealthReport& h) {
-  if (h.command == Command::HealthStatusBits) return (h.status & 0x3F) != 0;
-  return h.status != 0 || h.error_code != 0;
-}
+// A warning counts as much as an error here: the unit under test must be clean.
+bool health_problem(const HealthReport& h) { return health_level(h.command, h.status, h.error_code) != HealthLevel::Ok; }
 
 HealthObservation health_reading(const HealthReport& h, const char* when) {
   return {command_bytes_text(h.command) + " " + when, health_problem(h), h.summary};

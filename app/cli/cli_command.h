@@ -12,6 +12,9 @@ namespace ydscope::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
+// The command ran to the end, but the lidar is not right: it reported a health error (scan,
+// record) or failed a criterion (check). What it produced is complete.
+inline constexpr int kExitLidarFault = 3;
 
 struct CliCommand {
   std::string_view name;

@@ -86,7 +86,6 @@ examples:
   ydscope-cli check --port /dev/ttyUSB0 --sector 350:10 --target-mm 2000 --format json | jq .verdict
 )";
 
-constexpr int kExitNotWithinSpec = 3;
 constexpr int kExitInterrupted = 130;
 
 std::atomic<bool> interrupted{false};
@@ -163,7 +162,7 @@ int run_check_command(std::span<const std::string> raw) {
                  record.measured_seconds, plan.seconds);
     return kExitInterrupted;
   }
-  return all_passed(record.results) ? kExitOk : kExitNotWithinSpec;
+  return all_passed(record.results) ? kExitOk : kExitLidarFault;
 }
 
 const RegisterCliCommand registration{

@@ -15,6 +15,7 @@
 
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
+#include "app/cli/health_watch.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/session_cli.h"
@@ -58,8 +59,14 @@ output: one summary line on stdout per file, read back from the finished .ydrec 
 from it) and counted while writing the MCAP:
   recorded FILE: S s, B bytes from the device, H bytes to it, L laps
   wrote OUT.mcap: L laps, M messages in C chunks, B bytes
+When the lidar reported a health warning or error, the first line ends with the worst of them:
+  ...; the lidar reported a health error: error (error code 0x00FF) (A5 91)
 
-exit status: 0 recorded; 1 the device or the file failed (one sentence on stderr; what was
+health: a warning or an error the lidar reports (its A5 91/92 answer, or G1's CT health bits) is
+one line on stderr when it first shows and again whenever it changes, back to ok included.
+
+exit status: 0 recorded (a health warning does not change this); 3 recorded, but the lidar
+reported a health error; 1 the device or the file failed (one sentence on stderr; what was
 recorded until then stays in FILE); 2 usage error.
 
 examples:
@@ -203,6 +210,8 @@ int run_record(std::span<const std::string> raw) {
   };
 
   std::string failure;
+  HealthWatch health("ydscope-cli record");
+  health.clear_line_first(tty);
   const auto connect_start = Clock::now();
   Lap lap;
   SessionSnapshot s = session.snapshot();
@@ -221,8 +230,10 @@ int run_record(std::span<const std::string> raw) {
   const std::uint64_t bytes_at_scan_start = s.counters.bytes_received;
   auto last_progress = Clock::time_point{};
   while (failure.empty() && !interrupted.load() && (!seconds || seconds_since(scan_start) < *seconds)) {
-    session.laps().drain_newest(lap);  // nobody looks at laps here; keep the queue from filling
+    // Nobody looks at laps here beyond the newest one's CT health; keep the queue from filling.
+    if (session.laps().drain_newest(lap) > 0) health.observe_lap(lap);
     s = session.snapshot();
+    health.observe_answer(s.health);
     if (out_option && !s.recording) {
       failure = s.message.empty() ? "recording stopped" : s.message;
       break;
@@ -260,23 +271,24 @@ int run_record(std::span<const std::string> raw) {
       if (live) std::filesystem::remove(live->path());
       throw std::runtime_error(failure);
     }
-    std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s\n", out.c_str(),
+    std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s%s\n", out.c_str(),
                 static_cast<double>(summary->duration_ns) / 1e9, static_cast<unsigned long long>(summary->device_bytes),
-                static_cast<unsigned long long>(summary->host_bytes), laps_in(out, summary->metadata).c_str());
+                static_cast<unsigned long long>(summary->host_bytes), laps_in(out, summary->metadata).c_str(),
+                health.summary_note().c_str());
     print_recording_warnings("ydscope-cli record", summary->damage);
   } else if (!failure.empty() && s.counters.bytes_received == 0 && s.counters.bytes_sent == 0) {
     std::filesystem::remove(live->path());
     throw std::runtime_error(failure);
   }
   if (live) {
-    std::printf("%s\n", live->summary().c_str());
+    std::printf("%s%s\n", live->summary().c_str(), out_option ? "" : health.summary_note().c_str());
     if (live->dropped())
       std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidar\n",
                    live->path().c_str(), static_cast<unsigned long long>(live->dropped()));
   }
   std::fflush(stdout);
   if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + shown);
-  return kExitOk;
+  return health.worst() == HealthLevel::Error ? kExitLidarFault : kExitOk;
 }
 
 const RegisterCliCommand registration{

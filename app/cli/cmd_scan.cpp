@@ -8,6 +8,7 @@
 
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
+#include "app/cli/health_watch.h"
 #include "app/cli/lap_bell.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
@@ -29,9 +30,18 @@ options:
   --distance-scale MM   mm per distance count, overriding the model's (see `decode --help`)
 
 output: the schema of `ydscope-cli decode --help` (lap objects, then one summary object, whose
-bytes count everything the lidar sent, replies included).
+bytes count everything the lidar sent, replies included), with the health the session knows:
+  a lap's "health" is G1's CT health bits of that lap (as decode prints them) and, on G6/TG,
+  the status byte of the lidar's A5 91 answer (0 normal, 1 warning, 2 error; null unanswered;
+  the bits of A5 92 on a unit that answers only that);
+  the summary adds "health":{"level":"ok|warning|error","source":"A5 91|A5 92|CT","summary":S}
+  for the worst health seen during the run (S in words, as info prints it), or null.
 
-exit status: 0 N laps were printed; 1 the device failed or stopped sending (one sentence on
+health: a warning or an error the lidar reports (its A5 91/92 answer, or G1's CT health bits) is
+one line on stderr when it first shows and again whenever it changes, back to ok included.
+
+exit status: 0 N laps were printed (a health warning does not change this); 3 N laps were printed
+but the lidar reported a health error; 1 the device failed or stopped sending (one sentence on
 stderr); 2 usage error.
 
 example:
@@ -60,14 +70,17 @@ int run_scan(std::span<const std::string> raw) {
   const bool g1_info = started.device && started.device->profile && started.device->profile->ct_carries_info;
   const bool jsonl = format == "jsonl";
 
+  HealthWatch health("ydscope-cli scan");
+  health.observe_answer(started.health);
   JsonOut out(stdout);
   Lap lap;
   std::int64_t printed = 0;
   std::string failure;
   while (printed < *laps_wanted && !interrupted.load()) {
     if (session.laps().try_pop(lap)) {
+      health.observe_lap(lap);
       if (jsonl) {
-        write_lap(out, lap, g1_info);
+        write_lap(out, lap, g1_info, health.lap_health(lap, g1_info));
         out.flush();  // a program reading the pipe gets each lap as it arrives
       }
       ++printed;
@@ -75,6 +88,7 @@ int run_scan(std::span<const std::string> raw) {
     }
     out.flush();
     const SessionSnapshot s = session.snapshot();
+    health.observe_answer(s.health);
     if (s.state != LinkState::Scanning && s.state != LinkState::CommandInProgress) {
       failure = s.message.empty() ? "the scan stopped (" + describe_snapshot(s) + ")" : s.message;
       break;
@@ -91,11 +105,13 @@ int run_scan(std::span<const std::string> raw) {
   summary.checksum_errors = end.counters.checksum_errors;
   summary.zero_packets = end.counters.zero_packets;
   summary.laps = end.counters.laps;
-  write_summary(out, summary);
+  write_summary_fields(out, summary);
+  health.write_summary_field(out);
+  out.raw("}\n");
   out.flush();
   std::fflush(stdout);
   if (!failure.empty()) throw std::runtime_error(failure);
-  return kExitOk;
+  return health.worst() == HealthLevel::Error ? kExitLidarFault : kExitOk;
 }
 
 const RegisterCliCommand registration{

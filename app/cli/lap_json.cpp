@@ -122,6 +122,10 @@ void JsonOut::flush() {
 }
 
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
+  write_lap(out, lap, g1_info, g1_info && lap.ct_info_trusted() ? lap.health_bits : std::nullopt);
+}
+
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health) {
   out.raw(R"({"type":"lap","index":)");
   out.integer(lap.index);
   out.raw(R"(,"points":[)");
@@ -142,7 +146,7 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
   out.raw(R"(],"scan_hz":)");
   out.fixed_or_null(g1_info && trusted ? lap.scan_hz : std::nullopt, 2);
   out.raw(R"(,"health":)");
-  out.integer_or_null(g1_info && trusted ? lap.health_bits : std::nullopt);
+  out.integer_or_null(health);
   out.raw(R"(,"crc_ok":)");
   out.raw(lap.crc == CrcVerdict::Ok ? "true" : lap.crc == CrcVerdict::Mismatch ? "false" : "null");
   out.raw(R"(,"packets":)");
@@ -157,7 +161,12 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
   out.maybe_flush();
 }
 
-void write_summary(JsonOut& out, const DecoderCounters& c) {
+void write_summary(JsonOut& out, const DecoderCounters& counters) {
+  write_summary_fields(out, counters);
+  out.raw("}\n");
+}
+
+void write_summary_fields(JsonOut& out, const DecoderCounters& c) {
   out.raw(R"({"type":"summary","bytes":)");
   out.integer(c.bytes);
   out.raw(R"(,"packets":)");
@@ -172,7 +181,6 @@ void write_summary(JsonOut& out, const DecoderCounters& c) {
     out.raw(R"(,"cut_points":)");
     out.integer(c.overflow_points);
   }
-  out.raw("}\n");
 }
 
 }  // namespace ydscope::cli

@@ -50,7 +50,11 @@ class JsonOut {
 
 // {"type":"lap",...} and a newline; g1_info: the model carries CT information (scan_hz, health).
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info);
+// The same with the "health" a live session knows for it (see HealthWatch::lap_health).
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health);
 // {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L} and a newline.
 void write_summary(JsonOut& out, const DecoderCounters& counters);
+// The same without the closing brace and newline, for a summary with more fields.
+void write_summary_fields(JsonOut& out, const DecoderCounters& counters);
 
 }  // namespace ydscope::cli

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/protocol/health_level.h"
 #include "ui/view/health_names.h"
 
 namespace ydscope::ui {
@@ -12,7 +13,11 @@ Severity worst(Severity a, Severity b) { return static_cast<int>(a) >= static_ca
 std::vector<HealthAlert> health_alerts(const HealthAlertInput& in) {
   std::vector<HealthAlert> alerts;
   const bool bits_model = reports_health_bits(in.model) || in.answer_is_bits;
-  if (in.answer_status && *in.answer_status != 0) {
+  const HealthLevel answer_level =
+      !in.answer_status ? HealthLevel::Ok
+      : bits_model      ? health_bits_level(*in.answer_status)
+                        : health_status_level(*in.answer_status, in.answer_error_code);
+  if (answer_level != HealthLevel::Ok) {
     if (bits_model) {
       alerts.push_back({Severity::Error, "health (A5 92): " + describe_health_bits(in.model, *in.answer_status)});
     } else {
@@ -20,10 +25,10 @@ std::vector<HealthAlert> health_alerts(const HealthAlertInput& in) {
       char text[96];
       std::snprintf(text, sizeof text, "health %s: status %u, error code 0x%04X", std::string(info.name).c_str(),
                     static_cast<unsigned>(*in.answer_status), static_cast<unsigned>(in.answer_error_code));
-      alerts.push_back({*in.answer_status == 1 ? Severity::Warning : Severity::Error, text});
+      alerts.push_back({answer_level == HealthLevel::Warning ? Severity::Warning : Severity::Error, text});
     }
   }
-  if (in.ct_bits && *in.ct_bits != 0) {
+  if (in.ct_bits && health_bits_level(*in.ct_bits) != HealthLevel::Ok) {
     // Untrusted CT bits may belong to another lap: worth a look, not an alarm.
     alerts.push_back({in.ct_trusted ? Severity::Error : Severity::Warning,
                       std::string(in.ct_trusted ? "health (CT): " : "health (CT, CRC8 failed): ") +
