@@ -59,6 +59,10 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       options.device.scene = request.scene;
       options.device.faults = request.faults;
       options.device.seed = 7;
+      options.device.host_compat = request.host_compat;
+      options.device.firmware_major = request.firmware_major;
+      options.device.firmware_minor = request.firmware_minor;
+      options.delivery = request.delivery;
       options.transport = SimTransport::Pty;
       options.pty_link = sim_link_path();
       try {
@@ -70,7 +74,11 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       }
       config.address = sim_->link_path().empty() ? sim_->device_path() : sim_->link_path();
       config.model = profile->model;
-      description_ = "virtual " + std::string(profile->name) + " (" + request.scene + " scene) on " + sim_->device_path();
+      description_ = "virtual " + std::string(profile->name) + " (" + request.scene + " scene";
+      if (request.host_compat != HostCompat::Manual)
+        description_ += ", " + std::string(host_compat_name(request.host_compat)) + " host";
+      if (request.delivery.kind != DeliveryKind::Whole) description_ += ", delivery " + delivery_text(request.delivery);
+      description_ += ") on " + sim_->device_path();
       break;
     }
     case ui::ConnectRequest::Kind::Replay: {

@@ -1,4 +1,5 @@
 // Connection: where the bytes come from (a port, the virtual lidar, a recording) and recording.
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,8 @@ namespace {
 constexpr const char* kBauds[] = {"model default", "115200", "128000", "230400", "512000"};
 constexpr std::uint32_t kBaudValues[] = {0, 115200, 128000, 230400, 512000};
 constexpr const char* kScenes[] = {"room", "demo"};
+constexpr const char* kHosts[] = {"manual only", "YDLidar-SDK host"};
+constexpr const char* kDeliveries[] = {"whole packets", "USB bursts", "random splits"};
 
 std::string model_label(int choice) {
   const auto profiles = all_profiles();
@@ -70,6 +73,35 @@ void port_section(UiModel& m) {
   if (ImGui::Button("Disconnect")) m.disconnect_request = true;
 }
 
+// For testing other host software against the virtual lidar (README, "The virtual lidar as a
+// vendor-SDK test double"); applies when the virtual lidar starts.
+void host_section(UiModel& m) {
+  if (!ImGui::TreeNode("host")) return;
+  ImGui::Combo("answers", &m.sim_host_choice, kHosts, IM_ARRAYSIZE(kHosts));
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("YDLidar-SDK host: also answers what YDLIDAR's SDK and ROS 2 driver ask beyond\n"
+                      "the manual (A5 92 on G6/TG, A5 93, ...), so they start without timeouts.");
+  const bool g1 = model_label(m.sim_model_choice) == "G1";  // its CT carries major 0..3, minor 0..31
+  ImGui::InputInt2("firmware", m.sim_firmware);
+  m.sim_firmware[0] = std::clamp(m.sim_firmware[0], 0, g1 ? 3 : 255);
+  m.sim_firmware[1] = std::clamp(m.sim_firmware[1], 0, g1 ? 31 : 255);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("major.minor in the manual's byte order; YDLidar-SDK reads it the other way round\n"
+                      "and picks TG's distance scale from it (1.1: S/2 mm as the manual, 1.2 and above: S mm)");
+  ImGui::Combo("delivery", &m.sim_delivery_choice, kDeliveries, IM_ARRAYSIZE(kDeliveries));
+  if (m.sim_delivery_choice == 1) {
+    ImGui::InputInt("burst bytes", &m.sim_burst_bytes);
+    ImGui::InputInt("latency timer us", &m.sim_burst_interval_us, 100, 1000);
+  } else if (m.sim_delivery_choice == 2) {
+    ImGui::InputInt("largest write", &m.sim_random_max);
+  }
+  m.sim_burst_bytes = std::clamp(m.sim_burst_bytes, 1, 4096);
+  m.sim_burst_interval_us = std::clamp(m.sim_burst_interval_us, 1, 1'000'000);
+  m.sim_random_max = std::clamp(m.sim_random_max, 1, 4096);
+  ImGui::TextDisabled("applies when the virtual lidar starts");
+  ImGui::TreePop();
+}
+
 void sim_section(UiModel& m) {
   model_combo("sim model", m.sim_model_choice, false);
   ImGui::Combo("scene", &m.sim_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
@@ -95,12 +127,20 @@ void sim_section(UiModel& m) {
     }
     ImGui::TreePop();
   }
+  host_section(m);
   if (ImGui::Button("Start virtual lidar")) {
     ConnectRequest r;
     r.kind = ConnectRequest::Kind::Sim;
     r.model = model_label(m.sim_model_choice);
     r.scene = kScenes[m.sim_scene_choice];
     r.faults = m.sim_faults;
+    r.host_compat = m.sim_host_choice == 1 ? HostCompat::YdlidarSdk : HostCompat::Manual;
+    r.firmware_major = static_cast<std::uint8_t>(m.sim_firmware[0]);
+    r.firmware_minor = static_cast<std::uint8_t>(m.sim_firmware[1]);
+    r.delivery.kind = static_cast<DeliveryKind>(m.sim_delivery_choice);
+    r.delivery.burst_bytes = static_cast<std::uint32_t>(m.sim_burst_bytes);
+    r.delivery.interval_ns = static_cast<std::int64_t>(m.sim_burst_interval_us) * 1000;
+    r.delivery.max_piece = static_cast<std::uint32_t>(m.sim_random_max);
     m.connect_request = r;
   }
 }

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "core/link/session.h"
+#include "core/sim/delivery.h"
 #include "core/sim/faults.h"
+#include "core/sim/host_compat.h"
 #include "ui/view/command_feedback.h"
 #include "ui/view/health_alerts.h"
 #include "ui/view/health_timeline.h"
@@ -33,6 +35,10 @@ struct ConnectRequest {
   std::optional<std::uint32_t> baud;  // Port only
   std::string scene = "demo";         // Sim only
   FaultConfig faults;                 // Sim only
+  HostCompat host_compat = HostCompat::Manual;  // Sim only: what it answers beyond the manual
+  std::uint8_t firmware_major = 1;    // Sim only: what its device info reports
+  std::uint8_t firmware_minor = 2;
+  DeliveryModel delivery;             // Sim only: how its bytes reach the host
 };
 
 struct ReplayControl {
@@ -95,6 +101,12 @@ struct UiModel {
   int sim_model_choice = 2;   // 1-based in all_profiles(): G6
   int sim_scene_choice = 1;   // demo
   FaultConfig sim_faults;
+  int sim_host_choice = 0;            // 0 manual, 1 YDLidar-SDK
+  int sim_firmware[2] = {1, 2};       // major, minor
+  int sim_delivery_choice = 0;        // 0 whole, 1 USB bursts, 2 random splits
+  int sim_burst_bytes = 64;
+  int sim_burst_interval_us = 1000;
+  int sim_random_max = 17;
   char replay_text[512] = "";
   char record_text[512] = "";
   double record_started_s = 0.0;
