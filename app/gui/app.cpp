@@ -12,14 +12,19 @@
 #include "ui/panels/panels.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
-#include "core/protocol/commands.h"
 #include "ui/view/health_names.h"
 
 namespace ydscope::gui {
 namespace {
 
-// How long the automatic start waits for laps from a discovered port before showing the sim.
-constexpr double kAutoProbeSeconds = 8.0;
+// The Connection panel's model choice for a model name: 0 none, then all_profiles() order from 1.
+int model_choice(const std::optional<std::string>& model, int none) {
+  const ModelProfile* profile = model ? find_profile(*model) : nullptr;
+  const auto profiles = all_profiles();
+  for (std::size_t i = 0; i < profiles.size(); ++i)
+    if (profile == &profiles[i]) return static_cast<int>(i) + 1;
+  return none;
+}
 
 std::int64_t steady_ns() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -91,30 +96,34 @@ std::string App::start_source() {
       request.model = options_.model;
       request.scene = options_.scene;
       // The Virtual tab shows what runs.
-      const auto profiles = all_profiles();
-      for (std::size_t i = 0; i < profiles.size(); ++i) {
-        if (options_.model && find_profile(*options_.model) == &profiles[i]) model_.sim_model_choice = static_cast<int>(i) + 1;
-      }
+      model_.sim_model_choice = model_choice(options_.model, model_.sim_model_choice);
       model_.sim_scene_choice = options_.scene == "room" ? 0 : 1;
       break;
     }
     case SourceKind::Replay:
       request.kind = ui::ConnectRequest::Kind::Replay;
       request.address = options_.replay_file;
+      request.model = options_.model;
       settings_.last_replay_file = options_.replay_file;
       std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", options_.replay_file.c_str());
+      model_.replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
       break;
   }
+  model_.show_source_tab = static_cast<int>(request.kind);
+  return start(request);
+}
+
+std::string App::start(const ui::ConnectRequest& request) {
   const std::string error = source_.start(request);
+  has_source_ = error.empty();
+  model_.start_error = error;
+  model_.start_error_replay = request.kind == ui::ConnectRequest::Kind::Replay;
+  model_.status_message = error;
   model_.source_text = source_.description();
   model_.sim_active = source_.sim_active();
   model_.replay.available = source_.replay_active();
-  model_.status_message = error;
-  if (!error.empty()) {
-    model_.banner = error;
-    has_source_ = false;
-  }
-  model_.show_source_tab = static_cast<int>(request.kind);
+  model_.source_warnings = source_.warnings();
+  for (const std::string& warning : model_.source_warnings) std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
   return error;
 }
 
@@ -139,68 +148,6 @@ void App::drain_laps() {
   if (lap_.crc == CrcVerdict::Mismatch) ++model_.crc_mismatch_laps;
 }
 
-void App::update_model() {
-  model_.now_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  model_.snap = session_.snapshot();
-  if (source_.auto_probing()) {
-    // The automatic choice found a port: keep it once laps flow, else show the virtual lidar.
-    if (model_.snap.state == LinkState::Scanning) {
-      source_.auto_probe_done();
-      model_.banner.clear();
-    } else if (model_.now_s > kAutoProbeSeconds) {
-      start_clean();
-      model_.banner = source_.fall_back_to_sim();
-      model_.source_text = source_.description();
-      model_.snap = session_.snapshot();
-    }
-  }
-  model_.sim_active = source_.sim_active();
-  const SessionSnapshot& s = model_.snap;
-  // The target field starts from the device's set value whenever that changes.
-  if (s.scan_hz && s.scan_hz != last_set_scan_hz_) model_.scan_target_hz = static_cast<float>(*s.scan_hz);
-  last_set_scan_hz_ = s.scan_hz;
-  model_.timeline.observe("link", static_cast<std::uint32_t>(s.state), model_.now_s, std::string(link_state_name(s.state)));
-  if (s.health) {
-    const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;
-    const char* source = s.health->command == Command::HealthStatusBits ? "A5 92" : "A5 91";
-    std::string text = ui::reports_health_bits(m) ? ui::describe_health_bits(m, s.health->status)
-                                                  : std::string(ui::health_status_info(s.health->status).name);
-    const std::uint32_t value = static_cast<std::uint32_t>(s.health->status) << 16 | s.health->error_code;
-    if (!ui::reports_health_bits(m) && s.health->error_code) {
-      char code[24];
-      std::snprintf(code, sizeof code, ", error 0x%04X", static_cast<unsigned>(s.health->error_code));
-      text += code;
-    }
-    model_.timeline.observe(source, value, model_.now_s, text);
-  }
-  update_view_state();
-}
-
-void App::update_view_state() {
-  const SessionSnapshot& s = model_.snap;
-  ui::ViewStateInput in;
-  in.state = s.state;
-  in.link_message = s.message;
-  in.address = model_.source_text;
-  in.has_source = has_source_;
-  in.replay = model_.replay.available;
-  in.replay_paused = model_.replay.available && model_.replay.paused;
-  if (last_lap_at_) in.seconds_since_lap = std::chrono::duration<double>(std::chrono::steady_clock::now() - *last_lap_at_).count();
-  model_.view_state = ui::describe_view_state(in);
-
-  ui::HealthAlertInput health;
-  health.model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
-  if (s.health) {
-    health.answer_status = s.health->status;
-    health.answer_error_code = s.health->error_code;
-    health.answer_is_bits = s.health->command == Command::HealthStatusBits;
-  }
-  health.ct_bits = model_.ct_health;
-  health.ct_trusted = model_.ct_health_trusted;
-  health.crc8_failures = s.counters.crc8_failures;
-  model_.alerts = ui::health_alerts(health);
-}
-
 void App::start_clean() {
   ui::UiModel& m = model_;
   m.snap = {};
@@ -219,6 +166,8 @@ void App::start_clean() {
   m.replay = {};
   m.paused_view = false;
   m.feedback->clear();
+  m.start_error.clear();
+  m.source_warnings.clear();
   if (m.distance_scale_override) {
     m.distance_scale_override = false;
     session_.set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
@@ -349,12 +298,8 @@ void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
     if (request.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = request.address;
     source_.stop();
     start_clean();
-    const std::string error = source_.start(request);
-    has_source_ = error.empty();
-    m.status_message = error;
-    m.source_text = source_.description();
     m.banner.clear();
-    m.replay.available = source_.replay_active();
+    start(request);
   }
   if (m.replay.available) {
     ReplayHandle& replay = source_.replay();
@@ -367,6 +312,7 @@ void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
     if (const auto status = replay.status()) {
       m.replay.position_s = static_cast<double>(status->position_ns) * 1e-9;
       m.replay.duration_s = static_cast<double>(status->duration_ns) * 1e-9;
+      m.replay.passes = status->loops;
     }
   }
   if (m.sim_faults_request) {

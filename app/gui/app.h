@@ -39,6 +39,9 @@ class App {
   // The current lap, for the CSV export.
   const Lap& current_lap() const { return lap_; }
   bool quit_requested() const { return quit_; }
+  // No lap will come until the user picks another source: it did not start, or it is a replay
+  // that went round without one.
+  bool no_laps_coming() const { return !model_.start_error.empty() || model_.view_state.give_up; }
   // Saves a timestamped PNG after the next frame, as the S key does (SIGUSR1 asks for it).
   void request_screenshot() { model_.screenshot_request = true; }
 
@@ -50,6 +53,10 @@ class App {
   void toggle_fullscreen();
   // A new source or a Disconnect: everything measured from the old one goes.
   void start_clean();
+  // Starts `request` (after start_clean) and puts the outcome where the user looks: the overlay,
+  // the status line and the Connection panel; a source's warnings also go to stderr in the
+  // words ydscope-cli uses. Empty, or the sentence of why it did not start.
+  std::string start(const ui::ConnectRequest& request);
   void update_view_state();
 
   GLFWwindow* window_;

@@ -32,6 +32,7 @@ void LidarSource::stop() {
   }
   replay_ = false;
   description_.clear();
+  warnings_.clear();
 }
 
 std::string LidarSource::start(const ui::ConnectRequest& request) {
@@ -86,7 +87,7 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       replay_handle_ = std::make_shared<ReplayHandle>();
       ReplayOptions options;
       options.loop = true;
-      auto replay = replay_config(request.address, options, replay_handle_, error);
+      auto replay = replay_config(request.address, request.model, options, replay_handle_, error, warnings_);
       if (!replay) return error;
       config = std::move(*replay);
       replay_ = true;

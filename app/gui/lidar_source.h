@@ -31,6 +31,9 @@ class LidarSource {
   void stop();
 
   std::string description() const { return description_; }
+  // What is wrong with the current source but does not stop it (a recording cut off at its end,
+  // damaged record times or fields), one sentence each, in ydscope-cli's words.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   bool sim_active() const { return sim_ != nullptr; }
   SimServer* sim() { return sim_.get(); }
   bool replay_active() const { return replay_; }
@@ -40,6 +43,7 @@ class LidarSource {
   Session& session_;
   std::unique_ptr<SimServer> sim_;
   std::string description_;
+  std::vector<std::string> warnings_;
   bool replay_ = false;
   bool auto_probing_ = false;
   std::shared_ptr<ReplayHandle> replay_handle_ = std::make_shared<ReplayHandle>();

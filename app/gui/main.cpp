@@ -92,10 +92,9 @@ int run(const ydscope::gui::AppOptions& options) {
       exit_code = 1;
     }
     if (app) {
-      if (const std::string error = app->start_source(); !error.empty()) {
-        std::fprintf(stderr, "ydscope: %s\n", error.c_str());
-        if (screenshot_mode) exit_code = 1;
-      }
+      // A source that does not start (or a replay without a lap) is said on stderr and on screen
+      // (the overlay); a screenshot run still saves that picture, then exits 1.
+      if (const std::string error = app->start_source(); !error.empty()) std::fprintf(stderr, "ydscope: %s\n", error.c_str());
       // Screenshot mode: at least N frames, and at least a few laps drawn, but never forever.
       constexpr std::uint64_t kLapsBeforeScreenshot = 5;
       const auto started = std::chrono::steady_clock::now();
@@ -121,7 +120,8 @@ int run(const ydscope::gui::AppOptions& options) {
         app->frame();
         ++frames;
         if (screenshot_mode) {
-          const bool enough = frames >= options.frames && app->laps_shown() >= kLapsBeforeScreenshot;
+          const bool enough =
+              frames >= options.frames && (app->laps_shown() >= kLapsBeforeScreenshot || app->no_laps_coming());
           const bool timed_out = std::chrono::steady_clock::now() > deadline;
           if (enough || timed_out) {
             int w = 0, h = 0;
@@ -137,6 +137,8 @@ int run(const ydscope::gui::AppOptions& options) {
             } else if (!enough) {
               std::fprintf(stderr, "ydscope: only %llu laps arrived in 30 s; the screenshot was saved anyway.\n",
                            static_cast<unsigned long long>(app->laps_shown()));
+              exit_code = 1;
+            } else if (app->no_laps_coming()) {
               exit_code = 1;
             }
             break;

@@ -1,7 +1,6 @@
 #include "app/gui/replay_source.h"
 
-#include "core/protocol/model_profile.h"
-#include "core/record/recording_reader.h"
+#include "core/record/recording_plan.h"
 
 namespace ydscope::gui {
 namespace {
@@ -56,17 +55,22 @@ void ReplayHandle::set_loop(bool loop) {
   if (auto link = lock()) link->set_loop(loop);
 }
 
-std::optional<SessionConfig> replay_config(const std::string& path, ReplayOptions options,
-                                           std::shared_ptr<ReplayHandle> handle, std::string& error) {
-  const auto summary = summarize_recording(path, error);
-  if (!summary) return std::nullopt;
+std::optional<SessionConfig> replay_config(const std::string& path, const std::optional<std::string>& model,
+                                           ReplayOptions options, std::shared_ptr<ReplayHandle> handle,
+                                           std::string& error, std::vector<std::string>& warnings) {
+  const RecordingPlan plan = plan_recording(path, RecordingUse::Replay, model, std::nullopt);
+  if (!plan.usable()) {
+    error = plan.refusal_text;
+    return std::nullopt;
+  }
+  warnings = plan.warnings();
   SessionConfig config;
   config.address = path;
-  const ModelProfile* profile = summary->metadata.model ? find_profile(*summary->metadata.model) : nullptr;
-  config.model = profile ? profile->model : Model::G6;
-  config.distance_scale = summary->metadata.distance_scale;
-  // A replay that ends is finished, not a fault to reconnect from.
-  config.reconnect = options.loop;
+  config.model = plan.profile->model;
+  config.distance_scale = plan.distance_scale;
+  // A replay never reconnects: a file that does not open now will not open in 4 s either (once
+  // it retried forever), and one that played to its end is finished.
+  config.reconnect = false;
   config.open_link = [path, options, handle](boost::asio::io_context& io, std::uint32_t, std::string& open_error)
       -> std::unique_ptr<ByteLink> {
     std::shared_ptr<ReplayLink> link = ReplayLink::open(io, path, options, open_error);

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/link/replay_link.h"
 #include "core/link/session.h"
@@ -26,9 +27,12 @@ class ReplayHandle {
   std::weak_ptr<ReplayLink> link_;
 };
 
-// A session configuration that replays `path` (model and scale from the recording's metadata).
-// Empty plus one sentence in `error` when the file is not a readable recording.
-std::optional<SessionConfig> replay_config(const std::string& path, ReplayOptions options,
-                                           std::shared_ptr<ReplayHandle> handle, std::string& error);
+// A session configuration that replays `path`, decoded as `model` (a name) or else as the
+// recording says, as ydscope-cli replay would (core/record/recording_plan.h). Empty plus that
+// plan's sentence in `error` when the recording cannot give a lap; `warnings` receives what is
+// wrong with it but still plays, in the CLI's words.
+std::optional<SessionConfig> replay_config(const std::string& path, const std::optional<std::string>& model,
+                                           ReplayOptions options, std::shared_ptr<ReplayHandle> handle,
+                                           std::string& error, std::vector<std::string>& warnings);
 
 }  // namespace ydscope::gui

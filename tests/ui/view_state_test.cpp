@@ -1,6 +1,9 @@
 // The state-to-overlay mapping: a picture that is not live is always dimmed and says why in words.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "ui/view/view_state.h"
 
 namespace ydscope::ui {
@@ -95,6 +98,81 @@ TEST(ViewState, NoSourceSaysDisconnected) {
   EXPECT_TRUE(v.dim);
   EXPECT_EQ(v.headline, "Disconnected");
   EXPECT_EQ(v.status, "disconnected");
+}
+
+// Issue 17: the app once showed a recording it could not play as "Disconnected" (or retried it
+// for ever); now the overlay carries the sentence ydscope-cli gives (core/record/recording_plan.h).
+TEST(ViewState, ASourceThatDidNotStartSaysWhyInLargeWords) {
+  ViewStateInput in;
+  in.replay = true;
+  in.start_error = "x.ydrec does not say which lidar made it; pass --model (G1, G6, TG15, TG30, TG50)";
+  ViewState v = describe_view_state(in);
+  EXPECT_TRUE(v.dim);
+  EXPECT_EQ(v.severity, Severity::Error);
+  EXPECT_EQ(v.headline, "Cannot replay");
+  EXPECT_EQ(v.subtitle, in.start_error);
+  EXPECT_NE(v.detail.find("a model to decode it as"), std::string::npos) << v.detail;
+  EXPECT_EQ(v.status, "cannot replay");
+  in.replay = false;
+  in.start_error = "the virtual lidar did not start: no pseudo-terminal";
+  v = describe_view_state(in);
+  EXPECT_EQ(v.headline, "Cannot connect");
+  EXPECT_EQ(v.subtitle, in.start_error);
+}
+
+TEST(ViewState, ASourcesWarningsAreSaidLiveOrNot) {
+  const std::vector<std::string> warnings{"cut.ydrec ends inside a record at byte 9 (the recorder was probably stopped "
+                                          "abruptly); the 3 records before it are intact"};
+  ViewStateInput in = scanning(0.1);
+  in.replay = true;
+  in.source_warnings = warnings;
+  ViewState v = describe_view_state(in);
+  EXPECT_TRUE(v.live);
+  EXPECT_EQ(v.notices, warnings);
+  in.replay_paused = true;
+  EXPECT_EQ(describe_view_state(in).notices, warnings);
+  in.source_warnings = {};
+  EXPECT_TRUE(describe_view_state(in).notices.empty());
+}
+
+TEST(ViewState, AReplayThatWentRoundWithoutALapGivesUp) {
+  ViewStateInput in = scanning(0.0);
+  in.seconds_since_lap.reset();
+  in.replay = true;
+  in.address = "recording junk.ydrec";
+  in.model = "G6";
+  EXPECT_FALSE(describe_view_state(in).give_up) << "the first pass may still bring one";
+  in.replay_passes = 1;
+  const ViewState v = describe_view_state(in);
+  EXPECT_TRUE(v.give_up);
+  EXPECT_TRUE(v.dim);
+  EXPECT_EQ(v.severity, Severity::Error);
+  EXPECT_EQ(v.headline, "No laps");
+  EXPECT_EQ(v.subtitle, "recording junk.ydrec played through without one complete lap");
+  EXPECT_NE(v.detail.find("its bytes are not G6 scan packets"), std::string::npos) << v.detail;
+  in.replay_paused = true;  // the app pauses it: still the reason, not "paused"
+  EXPECT_EQ(describe_view_state(in).headline, "No laps");
+  in.seconds_since_lap = 30.0;  // it did give laps once: going round is fine
+  EXPECT_FALSE(describe_view_state(in).give_up);
+}
+
+TEST(ViewState, AReplayThatFailedBeforeItsFirstLapCouldNotPlay) {
+  ViewStateInput in = scanning(0.0);
+  in.seconds_since_lap.reset();
+  in.state = LinkState::Failed;
+  in.replay = true;
+  in.address = "recording gone.ydrec";
+  in.link_message = "cannot open gone.ydrec: No such file or directory";
+  ViewState v = describe_view_state(in);
+  EXPECT_EQ(v.headline, "Cannot replay");
+  EXPECT_EQ(v.severity, Severity::Error);
+  EXPECT_EQ(v.detail, in.link_message);
+  // One that played laps and ended does not repeat the link's words about unplugged devices.
+  in.seconds_since_lap = 2.0;
+  in.link_message = "the link to replay of demo.ydrec closed (device unplugged or bridge gone)";
+  v = describe_view_state(in);
+  EXPECT_EQ(v.headline, "Replay ended");
+  EXPECT_EQ(v.detail, "");
 }
 
 TEST(ViewState, CommandPauseIsLiveUntilTheLapsGoStale) {

@@ -19,20 +19,21 @@ constexpr const char* kScenes[] = {"room", "demo"};
 constexpr const char* kHosts[] = {"manual only", "YDLidar-SDK host"};
 constexpr const char* kDeliveries[] = {"whole packets", "USB bursts", "random splits"};
 
-std::string model_label(int choice) {
+// `none`: what choice 0 means ("detect"), or null when a model must be chosen.
+std::string model_label(int choice, const char* none = "detect") {
   const auto profiles = all_profiles();
-  if (choice <= 0 || choice > static_cast<int>(profiles.size())) return "detect";
+  if (choice <= 0 || choice > static_cast<int>(profiles.size())) return none ? none : "";
   return std::string(profiles[static_cast<std::size_t>(choice - 1)].name);
 }
 
-bool model_combo(const char* label, int& choice, bool with_detect) {
+bool model_combo(const char* label, int& choice, const char* none) {
   const auto profiles = all_profiles();
   bool changed = false;
-  const int first = with_detect ? 0 : 1;
-  if (!with_detect && choice < 1) choice = 1;
-  if (ImGui::BeginCombo(label, model_label(choice).c_str())) {
+  const int first = none ? 0 : 1;
+  if (!none && choice < 1) choice = 1;
+  if (ImGui::BeginCombo(label, model_label(choice, none).c_str())) {
     for (int i = first; i <= static_cast<int>(profiles.size()); ++i) {
-      if (ImGui::Selectable(model_label(i).c_str(), i == choice)) {
+      if (ImGui::Selectable(model_label(i, none).c_str(), i == choice)) {
         choice = i;
         changed = true;
       }
@@ -56,7 +57,7 @@ void port_section(UiModel& m) {
   ImGui::SameLine();
   if (ImGui::SmallButton("rescan")) m.refresh_ports_request = true;
   ImGui::InputText("address", m.port_text, sizeof m.port_text);
-  model_combo("model", m.port_model_choice, true);
+  model_combo("model", m.port_model_choice, "detect");
   ImGui::Combo("baud", &m.port_baud_choice, kBauds, IM_ARRAYSIZE(kBauds));
   const bool can_connect = m.port_text[0] != '\0';
   if (!can_connect) ImGui::BeginDisabled();
@@ -103,7 +104,7 @@ void host_section(UiModel& m) {
 }
 
 void sim_section(UiModel& m) {
-  model_combo("sim model", m.sim_model_choice, false);
+  model_combo("sim model", m.sim_model_choice, nullptr);
   ImGui::Combo("scene", &m.sim_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
   if (ImGui::TreeNode("faults")) {
     float corrupt = static_cast<float>(m.sim_faults.corrupt_byte_rate * 1e3);
@@ -147,10 +148,13 @@ void sim_section(UiModel& m) {
 
 void replay_section(UiModel& m) {
   ImGui::InputText("recording", m.replay_text, sizeof m.replay_text);
+  // For a recording that names no model (or one this ydscope does not know), as --model does.
+  model_combo("decode as", m.replay_model_choice, "as recorded");
   if (ImGui::Button("Open recording") && m.replay_text[0]) {
     ConnectRequest r;
     r.kind = ConnectRequest::Kind::Replay;
     r.address = m.replay_text;
+    if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
     m.connect_request = r;
   }
   if (m.replay.available) {

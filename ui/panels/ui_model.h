@@ -31,7 +31,8 @@ struct PortEntry {
 struct ConnectRequest {
   enum class Kind { Port, Sim, Replay } kind = Kind::Port;
   std::string address;                // port path / tcp URL, or the recording for Replay
-  std::optional<std::string> model;   // Port: fixed model (empty = detect); Sim: the model
+  std::optional<std::string> model;   // Port: fixed model (empty = detect); Sim: the model;
+                                      // Replay: decode as this one (empty = the recording's)
   std::optional<std::uint32_t> baud;  // Port only
   std::string scene = "demo";         // Sim only
   FaultConfig faults;                 // Sim only
@@ -48,6 +49,7 @@ struct ReplayControl {
   float speed = 1.0f;
   double position_s = 0.0;  // filled by the app from the replay's status
   double duration_s = 0.0;
+  std::uint64_t passes = 0;  // times it went round to its start
   bool changed = false;    // set by the panel when the user touched a control
 };
 
@@ -56,6 +58,9 @@ struct UiModel {
   SessionSnapshot snap;
   std::string source_text;  // "virtual G6 (demo scene) on /dev/pts/4", "recording demo.ydrec"
   std::string banner;       // shown over the view, e.g. "No lidar found — showing the virtual G6 (demo scene)"
+  std::string start_error;  // why the chosen source did not start (then there is no source)
+  bool start_error_replay = false;  // ... and it was a recording
+  std::vector<std::string> source_warnings;  // wrong with the source but not stopping it
   std::vector<PortEntry> ports;
   bool sim_active = false;
   double now_s = 0.0;       // since start, for the health timeline
@@ -108,6 +113,7 @@ struct UiModel {
   int sim_burst_interval_us = 1000;
   int sim_random_max = 17;
   char replay_text[512] = "";
+  int replay_model_choice = 0;  // 0 = as the recording says, then model_names() order
   char record_text[512] = "";
   double record_started_s = 0.0;
   float scan_target_hz = 10.0f;

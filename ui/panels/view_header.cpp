@@ -67,6 +67,9 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
     draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {view_left + 16.0f, y}, colour, t.c_str(), nullptr, wrap);
   };
   add_line(text, severity_colour(line_severity), false);
+  // The source's own warnings (a recording cut off at its end) stay beside the status line.
+  for (auto note = v.notices.rbegin(); note != v.notices.rend(); ++note)
+    add_line("warning: " + *note, severity_colour(Severity::Warning), true);
   if (!m.alerts.empty()) {
     std::string alert = m.alerts.front().text;
     if (m.alerts.size() > 1) alert += "  (+" + std::to_string(m.alerts.size() - 1) + " more in Health)";

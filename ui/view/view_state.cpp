@@ -20,41 +20,49 @@ std::string last_lap_text(const std::optional<double>& age) {
   return age ? "last lap " + format_age(*age) + " ago" : "no lap yet from this source";
 }
 
-ViewState no_data(Severity severity, std::string subtitle, const ViewStateInput& in, std::string status) {
+ViewState dimmed(Severity severity, std::string headline, std::string subtitle, std::string detail, std::string status) {
   ViewState v;
   v.dim = true;
   v.severity = severity;
-  v.headline = "No data";
-  v.subtitle = std::move(subtitle) + ", " + last_lap_text(in.seconds_since_lap);
-  v.detail = std::string(in.link_message);
+  v.headline = std::move(headline);
+  v.subtitle = std::move(subtitle);
+  v.detail = std::move(detail);
   v.status = std::move(status);
   return v;
 }
 
-}  // namespace
+ViewState no_data(Severity severity, std::string subtitle, const ViewStateInput& in, std::string status) {
+  return dimmed(severity, "No data", std::move(subtitle) + ", " + last_lap_text(in.seconds_since_lap),
+                std::string(in.link_message), std::move(status));
+}
 
-ViewState describe_view_state(const ViewStateInput& in) {
+ViewState describe_link(const ViewStateInput& in) {
   const std::string where(in.address.empty() ? std::string_view("the lidar") : in.address);
   const bool fresh = in.seconds_since_lap && *in.seconds_since_lap <= kStaleLapSeconds;
 
-  if (!in.has_source) {
-    ViewState v;
-    v.dim = true;
-    v.severity = Severity::Info;
-    v.headline = "Disconnected";
-    v.subtitle = "choose a port, the virtual lidar or a recording in the Connection panel";
-    v.status = "disconnected";
+  if (!in.has_source && !in.start_error.empty()) {
+    // The same sentence ydscope-cli gives for that source (for a recording: recording_plan.h).
+    if (in.replay)
+      return dimmed(Severity::Error, "Cannot replay", std::string(in.start_error),
+                    "choose another recording, or a model to decode it as, in the Connection panel (Replay)",
+                    "cannot replay");
+    return dimmed(Severity::Error, "Cannot connect", std::string(in.start_error),
+                  "choose another source in the Connection panel", "cannot connect");
+  }
+  if (!in.has_source)
+    return dimmed(Severity::Info, "Disconnected", "choose a port, the virtual lidar or a recording in the Connection panel",
+                  "", "disconnected");
+  if (in.replay && in.replay_passes > 0 && !in.seconds_since_lap) {
+    // Going round again cannot help: its bytes hold no lap for this model.
+    const std::string model = in.model.empty() ? std::string("the model chosen") : std::string(in.model);
+    ViewState v = dimmed(Severity::Error, "No laps", where + " played through without one complete lap",
+                         "its bytes are not " + model + " scan packets; open it as another model in the Connection panel (Replay)",
+                         "no laps");
+    v.give_up = true;
     return v;
   }
-  if (in.replay && in.replay_paused) {
-    ViewState v;
-    v.dim = true;
-    v.severity = Severity::Info;
-    v.headline = "Replay paused";
-    v.subtitle = where + ", press Play to go on";
-    v.status = "replay paused";
-    return v;
-  }
+  if (in.replay && in.replay_paused)
+    return dimmed(Severity::Info, "Replay paused", where + ", press Play to go on", "", "replay paused");
   switch (in.state) {
     case LinkState::Scanning:
     case LinkState::CommandInProgress:
@@ -78,19 +86,25 @@ ViewState describe_view_state(const ViewStateInput& in) {
     case LinkState::Reconnecting:
       return no_data(Severity::Warning, "reconnecting to " + where, in, "reconnecting");
     case LinkState::Failed:
-      if (in.replay) {
-        ViewState v;
-        v.dim = true;
-        v.severity = Severity::Info;
-        v.headline = "Replay ended";
-        v.subtitle = where + " played to the end, " + last_lap_text(in.seconds_since_lap);
-        v.detail = std::string(in.link_message);
-        v.status = "replay ended";
-        return v;
-      }
+      // A replay that gave laps and stopped played to its end (the link's own words would speak
+      // of a device unplugged); one that gave none could not be played.
+      if (in.replay && in.seconds_since_lap)
+        return dimmed(Severity::Info, "Replay ended", where + " played to the end, " + last_lap_text(in.seconds_since_lap),
+                      "", "replay ended");
+      if (in.replay)
+        return dimmed(Severity::Error, "Cannot replay", "no lap came from " + where, std::string(in.link_message),
+                      "cannot replay");
       return no_data(Severity::Error, "gave up on " + where, in, "failed");
   }
   return no_data(Severity::Warning, "unknown link state", in, "unknown");
+}
+
+}  // namespace
+
+ViewState describe_view_state(const ViewStateInput& in) {
+  ViewState v = describe_link(in);
+  v.notices.assign(in.source_warnings.begin(), in.source_warnings.end());
+  return v;
 }
 
 }  // namespace ydscope::ui

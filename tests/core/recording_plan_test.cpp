@@ -1,0 +1,108 @@
+// The one place that says what a recording can be decoded or played as (core/record/
+// recording_plan.h), asked by ydscope-cli and by the app alike: its sentences, its kinds, and
+// the damage it reports as warnings.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/record/recording_plan.h"
+#include "link/raw_recording.h"
+
+namespace ydscope {
+namespace {
+
+using test::RawRecording;
+
+class RecordingPlanTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::path(testing::TempDir()) / ("ydscope-plan-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string write(const std::string& name, const RawRecording& recording) {
+    const std::string path = (dir_ / name).string();
+    recording.write(path);
+    return path;
+  }
+  std::filesystem::path dir_;
+};
+
+const std::string kModels = "G1, G6, TG15, TG30, TG50";
+
+TEST_F(RecordingPlanTest, ARecordingWithDeviceBytesPlaysAsItsModelAndScale) {
+  RawRecording recording(1, 16, "model=TG30\ndistance_scale=1\n");
+  recording.add_device_records({0, 1000});
+  const std::string path = write("tg30.ydrec", recording);
+  const RecordingPlan plan = plan_recording(path, RecordingUse::Replay, std::nullopt, std::nullopt);
+  ASSERT_TRUE(plan.usable()) << plan.refusal_text;
+  EXPECT_EQ(plan.profile->model, Model::TG30);
+  EXPECT_EQ(plan.distance_scale, 1.0);
+  EXPECT_TRUE(plan.warnings().empty());
+  // Another model drops the recorded scale (it belonged to the recorded model); a chosen scale wins.
+  const RecordingPlan as_g6 = plan_recording(path, RecordingUse::Replay, "G6", std::nullopt);
+  EXPECT_EQ(as_g6.profile->model, Model::G6);
+  EXPECT_FALSE(as_g6.distance_scale.has_value());
+  EXPECT_EQ(plan_recording(path, RecordingUse::Replay, "G6", 0.5).distance_scale, 0.5);
+}
+
+// Issue 17: in the app such a file retried "reconnecting… in 4 s" for ever.
+TEST_F(RecordingPlanTest, NoDeviceBytesIsNothingToReplayButDecodesToNoLaps) {
+  const std::string path = write("empty.ydrec", RawRecording());
+  const RecordingPlan replay = plan_recording(path, RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(replay.refusal, RecordingRefusal::NothingToPlay);
+  EXPECT_EQ(replay.refusal_text, path + " holds no bytes from a device; nothing to replay");
+  EXPECT_TRUE(plan_recording(path, RecordingUse::Decode, std::nullopt, std::nullopt).usable());
+}
+
+// Issue 17: the app once played these silently as G6.
+TEST_F(RecordingPlanTest, NoModelOrAnUnknownOneNeedsAModel) {
+  RawRecording anonymous(1, 16, "baud=512000\n");
+  anonymous.add_device_records({0});
+  const std::string nameless = write("nameless.ydrec", anonymous);
+  RecordingPlan plan = plan_recording(nameless, RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::NeedsModel);
+  EXPECT_EQ(plan.refusal_text, nameless + " does not say which lidar made it; pass --model (" + kModels + ")");
+  EXPECT_TRUE(plan_recording(nameless, RecordingUse::Replay, "G1", std::nullopt).usable());
+
+  RawRecording g9(1, 16, "model=G9\n");
+  g9.add_device_records({0});
+  const std::string unknown = write("g9.ydrec", g9);
+  plan = plan_recording(unknown, RecordingUse::Decode, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::NeedsModel);
+  EXPECT_EQ(plan.refusal_text,
+            unknown + " was made with model 'G9', which this ydscope does not know; pass --model (" + kModels + ")");
+  plan = plan_recording(unknown, RecordingUse::Decode, "G7", std::nullopt);
+  EXPECT_EQ(plan.refusal_text, "unknown model 'G7'; valid models are " + kModels);
+}
+
+TEST_F(RecordingPlanTest, OpenFailuresKeepTheirKindAndSentence) {
+  RecordingPlan plan = plan_recording((dir_ / "none.ydrec").string(), RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::Unreadable);
+  EXPECT_FALSE(plan.refusal_text.empty());
+  RawRecording version9(9);
+  plan = plan_recording(write("v9.ydrec", version9), RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::Unsupported);
+  EXPECT_NE(plan.refusal_text.find("version 9"), std::string::npos) << plan.refusal_text;
+}
+
+// The CLI warns about these; the app says the same words beside its status line.
+TEST_F(RecordingPlanTest, DamageThatStillPlaysIsAWarningEach) {
+  RawRecording recording;
+  recording.add_device_records({0, 1000, 2000});
+  std::vector<std::uint8_t> bytes = recording.bytes();
+  bytes.resize(bytes.size() - 1);  // cut inside the last record
+  const std::string path = (dir_ / "cut.ydrec").string();
+  test::write_file_bytes(path, bytes);
+  const RecordingPlan plan = plan_recording(path, RecordingUse::Replay, std::nullopt, std::nullopt);
+  ASSERT_TRUE(plan.usable()) << plan.refusal_text;
+  ASSERT_EQ(plan.warnings().size(), 1u);
+  EXPECT_EQ(plan.warnings()[0].rfind(path + " ends inside a record at byte ", 0), 0u) << plan.warnings()[0];
+  EXPECT_NE(plan.warnings()[0].find("the 3 records before it are intact"), std::string::npos) << plan.warnings()[0];
+}
+
+}  // namespace
+}  // namespace ydscope
