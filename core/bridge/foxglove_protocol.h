@@ -10,6 +10,8 @@
 #include <variant>
 #include <vector>
 
+#include "core/text/json_string.h"
+
 namespace ydscope::foxglove {
 
 inline constexpr std::string_view kSubprotocol = "foxglove.websocket.v1";
@@ -67,7 +69,8 @@ using ClientRequest =
 // known "op", or its fields have the wrong shape.
 std::optional<ClientRequest> parse_client_message(std::string_view text, std::string& error);
 
-// A JSON string literal (quotes and escapes) appended to `out`.
-void append_json_string(std::string& out, std::string_view text);
+// A JSON string literal, always valid UTF-8 (core/text/json_string.h): a WebSocket text frame
+// that is not UTF-8 makes clients drop the connection.
+using ydscope::append_json_string;
 
 }  // namespace ydscope::foxglove
