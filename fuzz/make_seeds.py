@@ -18,12 +18,17 @@ HERE = pathlib.Path(__file__).resolve().parent
 TARGET_OF_MODEL = {"G1": "scan_g1", "G6": "scan_g6", "TG30": "scan_tg"}
 
 
-def records(data):
+def timed_records(data):
     offset = struct.unpack_from("<H", data, 14)[0]
     while offset + 16 <= len(data):
         kind, _flags, _reserved, length, t_ns = struct.unpack_from("<BBHIq", data, offset)
-        yield kind, data[offset + 16:offset + 16 + length]
+        yield kind, data[offset + 16:offset + 16 + length], t_ns
         offset += 16 + length
+
+
+def records(data):
+    for kind, payload, _t_ns in timed_records(data):
+        yield kind, payload
 
 
 def model_of(data):
@@ -33,6 +38,19 @@ def model_of(data):
                 if line.startswith("model="):
                     return line[len("model="):]
     raise SystemExit("recording has no model")
+
+
+def mcap_export_input(data, options):
+    """A recording as fuzz_mcap_export reads it: an options byte, then per record its type, a time
+    step (cube root of the microseconds since the record before), a u16 length and the payload."""
+    out = bytearray([options])
+    previous_ns = 0
+    for kind, payload, t_ns in timed_records(data):
+        step = min(255, round((max(0, t_ns - previous_ns) / 1000) ** (1 / 3)))
+        previous_ns += step ** 3 * 1000
+        payload = payload[:0xFFFF]
+        out += struct.pack("<BBH", kind, step, len(payload)) + payload
+    return bytes(out)
 
 
 def write(target, name, data):
@@ -52,6 +70,9 @@ def main(paths):
         # Replies: chunking, junk limit, then the start-up replies and the first scan packets.
         write("replies", f"sim-{model}-startup", b"\x05\x10" + device[:160])
         write("recording", f"sim-{model}.ydrec", data)
+        # MCAP export: zstd chunks of 64 << 4 bytes (several per recording), and lz4 of 64 KiB.
+        write("mcap_export", f"sim-{model}-zstd", mcap_export_input(data, 1 | (4 << 2)))
+        write("mcap_export", f"sim-{model}-lz4", mcap_export_input(data, 2 | (10 << 2)))
 
 
 if __name__ == "__main__":

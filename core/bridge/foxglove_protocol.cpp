@@ -3,6 +3,7 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -12,6 +13,10 @@ namespace {
 namespace pt = boost::property_tree;
 
 void append_number(std::string& out, double value) {
+  if (!std::isfinite(value)) {  // JSON has no NaN or infinity
+    out += "null";
+    return;
+  }
   char text[32];
   const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
   out.append(text, ec == std::errc() ? end : text);
@@ -56,6 +61,29 @@ const pt::ptree* array_field(const pt::ptree& tree, const char* name, std::strin
   return &*child;
 }
 
+// property_tree's JSON reader recurses once per level of nesting, so a client message of 64 KiB of
+// "[" would overflow the server thread's stack. No request of the protocol nests deeper than 3.
+constexpr int kMaxJsonDepth = 32;
+
+bool nests_deeper_than(std::string_view text, int limit) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
+}
+
 std::vector<std::string> string_list(const pt::ptree* list) {
   std::vector<std::string> out;
   if (list)
@@ -64,25 +92,6 @@ std::vector<std::string> string_list(const pt::ptree* list) {
 }
 
 }  // namespace
-
-void append_json_string(std::string& out, std::string_view text) {
-  out.push_back('"');
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out.push_back('\\');
-      out.push_back(c);
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += escaped;
-    } else {
-      out.push_back(c);
-    }
-  }
-  out.push_back('"');
-}
 
 std::string server_info_json(std::string_view name, std::string_view session_id) {
   std::string out = R"({"op":"serverInfo","name":)";
@@ -150,6 +159,10 @@ std::array<std::uint8_t, 13> message_data_header(std::uint32_t subscription_id, 
 }
 
 std::optional<ClientRequest> parse_client_message(std::string_view text, std::string& error) {
+  if (nests_deeper_than(text, kMaxJsonDepth)) {
+    error = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+    return std::nullopt;
+  }
   pt::ptree tree;
   try {
     std::istringstream in{std::string(text)};
