@@ -1,28 +1,9 @@
 // Steady-state decoding allocates nothing: the framer's buffer is fixed and laps are preallocated.
-// Counts global operator new calls around the feed loop (the replacement only counts; it is
-// harmless for the other tests in this program).
+// Counts global operator new calls around the feed loop (allocation_counter.h).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
+#include "allocation_counter.h"
 #include "protocol_test_support.h"
-
-namespace {
-std::atomic<std::uint64_t> g_allocations{0};
-}
-
-// GCC cannot see that every operator new here is the malloc-based one below.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size ? size : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ydscope {
 namespace {
@@ -46,11 +27,11 @@ TEST(DecoderAllocation, NoAllocationPerPacketOrLap) {
       ++laps;
       points += lap.points.size();
     };
-    const std::uint64_t before = g_allocations.load();
+    const std::uint64_t before = test::allocations().calls;
     for (std::size_t pos = 0; pos < stream.size(); pos += 97)
       decoder.feed({stream.data() + pos, std::min<std::size_t>(97, stream.size() - pos)}, 0, on_lap);
     decoder.finish(on_lap);
-    EXPECT_EQ(g_allocations.load() - before, 0u) << profile_for(model).name;
+    EXPECT_EQ(test::allocations().calls - before, 0u) << profile_for(model).name;
     EXPECT_GE(laps, 49u);
     EXPECT_GT(points, 0u);
   }

@@ -1,9 +1,11 @@
-// Metadata text of a recording: every field round-trips, escaping, unknown keys, damaged values.
+// Metadata text of a recording: every field round-trips, escaping, unknown keys, damaged values;
+// and the device details a replay shows from it.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
+#include "core/link/recorded_device.h"
 #include "core/protocol/model_profile.h"
 #include "core/record/recording_metadata.h"
 
@@ -76,6 +78,41 @@ TEST(RecordingMetadata, MergeTakesOnlyTheFieldsSetLater) {
   EXPECT_EQ(start.model, "G1");
   EXPECT_EQ(start.baud, 512000u);
   EXPECT_EQ(start.serial, "123");
+}
+
+}  // namespace
+}  // namespace ydscope
+
+namespace ydscope {
+namespace {
+
+// A recording's device fields are bytes on the wire; a file claiming more leaves them blank
+// instead of showing a wrapped-around value (or reading an overflowing number, which sscanf
+// would do with undefined behaviour).
+TEST(RecordedDevice, FieldsWiderThanADeviceByteStayBlank) {
+  const ModelProfile& g6 = profile_for(Model::G6);
+  RecordingMetadata sound;
+  sound.model_code = 13;
+  sound.hardware = 1;
+  sound.firmware = "1.2";
+  const DeviceDetails ok = recorded_device(sound, g6);
+  EXPECT_EQ(ok.model_code, 13);
+  EXPECT_EQ(ok.hardware, 1);
+  EXPECT_EQ(ok.firmware.major, 1);
+  EXPECT_EQ(ok.firmware.minor, 2);
+  for (const char* firmware : {"300.7", "-1.2", "4294967297.1", "1.256", "1", "1.", ".2", "1.2.3", "x.y", ""}) {
+    RecordingMetadata lying;
+    lying.firmware = firmware;
+    const DeviceDetails device = recorded_device(lying, g6);
+    EXPECT_EQ(device.firmware.major, 0) << firmware;
+    EXPECT_EQ(device.firmware.minor, 0) << firmware;
+  }
+  RecordingMetadata wide;
+  wide.model_code = 1000;
+  wide.hardware = 256;
+  const DeviceDetails device = recorded_device(wide, g6);
+  EXPECT_EQ(device.model_code, 0);
+  EXPECT_EQ(device.hardware, 0);
 }
 
 }  // namespace
