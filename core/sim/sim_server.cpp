@@ -75,6 +75,17 @@ class SimServer::Impl {
   std::string device_path;
   std::uint16_t tcp_port = 0;
   std::int64_t started_ns = 0;
+  // The device's clock: CLOCK_MONOTONIC since start, times options.time_scale. Every time the
+  // device and the scheduled faults see is on it; only waits (and zero-packet stamps) are wall.
+  std::int64_t now() const {
+    const std::int64_t wall = monotonic_ns() - started_ns;
+    if (options.time_scale == 1.0) return started_ns + wall;
+    return started_ns + static_cast<std::int64_t>(static_cast<double>(wall) * options.time_scale);
+  }
+  std::int64_t wall_wait(std::int64_t device_ns) const {
+    if (options.time_scale == 1.0) return device_ns;
+    return static_cast<std::int64_t>(static_cast<double>(device_ns) / options.time_scale);
+  }
   std::int64_t unplug_at = kNever;
   std::int64_t replug_at = kNever;
   std::FILE* zero_log = nullptr;
@@ -215,7 +226,7 @@ void SimServer::Impl::run() {
     {
       std::lock_guard lock(mu);
       if (stop_requested) break;
-      const std::int64_t now = monotonic_ns();
+      const std::int64_t now = this->now();
       handle_requests_locked(now);
       device->produce(now, out, &zero_ends);
       next = std::min({device->next_event_ns(), unplug_at, replug_at});
@@ -234,7 +245,7 @@ void SimServer::Impl::run() {
       endpoint->poll_fds(fds);
       recheck = endpoint->needs_recheck();
     }
-    std::int64_t wait = next == kNever ? kMaxWaitNs : std::clamp<std::int64_t>(next - monotonic_ns(), 0, kMaxWaitNs);
+    std::int64_t wait = next == kNever ? kMaxWaitNs : std::clamp<std::int64_t>(wall_wait(next - now()), 0, kMaxWaitNs);
     if (recheck) wait = std::min(wait, kRecheckWaitNs);
     const timespec timeout{static_cast<time_t>(wait / 1'000'000'000), static_cast<long>(wait % 1'000'000'000)};
     if (::ppoll(fds.data(), fds.size(), &timeout, nullptr) < 0 && errno != EINTR) break;
@@ -247,7 +258,7 @@ void SimServer::Impl::run() {
     if (endpoint) endpoint->service(std::span<const pollfd>(fds).subspan(1), host, counters);
     if (!host.empty()) {
       counters.bytes_in += host.size();
-      device->receive(host, monotonic_ns());
+      device->receive(host, now());
     }
   }
 }
@@ -371,7 +382,7 @@ void SimServer::set_faults(const FaultConfig& faults) {
 
 void SimServer::stall(std::chrono::milliseconds duration) {
   std::lock_guard lock(impl_->mu);
-  if (impl_->device) impl_->device->stall(monotonic_ns(), duration.count() * 1'000'000);
+  if (impl_->device) impl_->device->stall(impl_->now(), duration.count() * 1'000'000);
 }
 
 void SimServer::with_device(const std::function<void(VirtualLidar&)>& fn) {

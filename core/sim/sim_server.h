@@ -43,6 +43,9 @@ struct SimServerOptions {
   // replug_after (zero: stay unplugged). Zero unplug_after = off.
   std::chrono::milliseconds unplug_after{0};
   std::chrono::milliseconds replug_after{0};
+  // The device runs this many times faster than real time (its line too: a pseudo-terminal has
+  // no baud), for soak benchmarks; 1 = real time. Stall and unplug times are in device time.
+  double time_scale = 1.0;
 };
 
 struct SimServerCounters {
