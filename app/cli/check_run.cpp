@@ -88,6 +88,8 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   LapBell bell;
   Session session(64, [&bell] { bell.ring(); });
   show(plan.progress, "connecting to " + plan.session.address + " ...");
+  record.started_unix_s = std::chrono::duration_cast<std::chrono::seconds>(
+                              std::chrono::system_clock::now().time_since_epoch()).count();
   record.started = connect_or_throw(session, plan.session);
   if (plan.distance_scale) session.set_distance_scale(plan.distance_scale);
   const SessionSnapshot& s0 = record.started;
@@ -157,6 +159,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   LapTimingAccumulator timing;
   std::optional<SectorAccumulator> sector;
   if (plan.sector) sector.emplace(*plan.sector);
+  record.sector_region = plan.sector;
   CtHealth ct_health;
   const auto start = Clock::now();
   auto last_progress = start;

@@ -33,10 +33,12 @@ struct CheckPlan {
 
 struct CheckRecord {
   SessionSnapshot started;  // the device as it answered at connect time
+  std::int64_t started_unix_s = 0;  // wall clock at connect, for the report's date
   AcceptanceLimits limits;
   CheckObservations observations;
   std::vector<CriterionResult> results;
-  std::optional<SectorStatistics> sector;
+  std::optional<Sector> sector_region;      // what --sector asked for
+  std::optional<SectorStatistics> sector;  // what fell in it
   Lap last_lap;              // the polar snapshot of the report
   double measured_seconds = 0;
   bool interrupted = false;  // Ctrl-C: the results cover only what was measured until then

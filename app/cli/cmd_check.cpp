@@ -10,6 +10,7 @@
 
 #include "app/common/arguments.h"
 #include "app/cli/check_output.h"
+#include "app/cli/check_report.h"
 #include "app/cli/check_run.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/session_cli.h"
@@ -18,8 +19,8 @@ namespace ydscope::cli {
 namespace {
 
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli check --port PATH [--model auto|M] [--seconds S] [--scan-hz F] [--ranging-khz K]
-                         [--sector A:B --target-mm D [--tolerance-mm T] [--noise-mm N]]
-                         [--format text|json] [limit options]
+                         [--sector A:B [--band MIN:MAX] --target-mm D [--tolerance-mm T] [--noise-mm N]]
+                         [--format text|json] [--report OUT.html] [limit options]
 
 Runs an acceptance test of the lidar: reads its identity and health, sets the scan frequency (and
 the ranging frequency when asked), lets the motor settle, measures for S seconds, reads the health
@@ -49,10 +50,15 @@ options:
                          G6 8, TG 10 Hz; within 5 to 12 Hz)
   --ranging-khz K        set this ranging frequency first (G6/TG: 4, 8 or 9; G1's is fixed)
   --sector A:B           also judge the points from A to B degrees (may cross 0, e.g. 350:10)
+  --band MIN:MAX         count only returns MIN to MAX mm away in the sector (the target, not
+                         the wall behind it); misses still count against it
   --target-mm D          a flat target D mm away fills the sector: judge bias and noise
   --tolerance-mm T       |bias| limit (default 2 % of D, at least 20 mm)
   --noise-mm N           std-dev limit (default 1 % of D, at least 10 mm)
   --format FORMAT        text (default) or json (one object, schema below)
+  --report OUT.html      also write a self-contained HTML report (criteria table, scan rate over
+                         time, the sector's histogram, the last lap from above) to archive with
+                         the unit; written even when the run fails or is interrupted
   --distance-scale MM    mm per distance count, overriding the model's (see `decode --help`)
 
 limit options (defaults in brackets):
@@ -84,6 +90,7 @@ examples:
   ydscope-cli check --port /dev/ttyUSB0
   ydscope-cli check --port /dev/ttyUSB0 --model G6 --seconds 30 --scan-hz 10 --ranging-khz 8
   ydscope-cli check --port /dev/ttyUSB0 --sector 350:10 --target-mm 2000 --format json | jq .verdict
+  ydscope-cli check --port /dev/ttyUSB0 --report "check-$(date +%F-%H%M%S).html"
 )";
 
 constexpr int kExitInterrupted = 130;
@@ -124,6 +131,11 @@ CheckPlan plan_from(const Arguments& args) {
     plan.sector = parse_sector(*text, error);
     if (!plan.sector) throw UsageError("--sector: " + error);
   }
+  if (const auto band = args.value("band")) {
+    if (!plan.sector) throw UsageError("--band needs --sector A:B (the angles the band narrows)");
+    std::string error;
+    if (!set_range_band(*plan.sector, *band, error)) throw UsageError("--band: " + error);
+  }
   plan.target_mm = args.number("target-mm", 1, 1e6);
   plan.bias_tolerance_mm = args.number("tolerance-mm", 0, 1e6);
   plan.noise_max_mm = args.number("noise-mm", 0, 1e6);
@@ -139,13 +151,16 @@ CheckPlan plan_from(const Arguments& args) {
 }
 
 int run_check_command(std::span<const std::string> raw) {
-  std::set<std::string> options{"seconds", "settle-seconds", "scan-hz", "ranging-khz", "sector", "target-mm",
-                                "tolerance-mm", "noise-mm", "format", "distance-scale"};
+  std::set<std::string> options{"seconds", "settle-seconds", "scan-hz", "ranging-khz", "sector", "band", "target-mm",
+                                "tolerance-mm", "noise-mm", "format", "distance-scale", "report"};
   for (const LimitOption& option : kLimitOptions) options.insert(option.name);
   const Arguments args(raw, session_value_options(options), {});
   const std::string format = args.value("format").value_or("text");
   if (format != "text" && format != "json") throw UsageError("--format must be text or json, not '" + format + "'");
   const CheckPlan plan = plan_from(args);
+  const std::optional<std::string> report = args.value("report");
+  if (report)
+    if (const std::string problem = report_output_problem(*report); !problem.empty()) throw UsageError(problem);
 
   std::signal(SIGINT, check_on_signal);
   std::signal(SIGTERM, check_on_signal);
@@ -153,6 +168,14 @@ int run_check_command(std::span<const std::string> raw) {
   if (format == "json") print_check_json(stdout, record);
   else print_check_text(stdout, record);
   std::fflush(stdout);
+  if (report) {
+    try {
+      write_check_report(*report, record);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ydscope-cli check: %s\n", e.what());
+      return kExitFailure;
+    }
+  }
   if (!record.failure.empty()) {
     std::fprintf(stderr, "ydscope-cli check: %s\n", record.failure.c_str());
     return kExitFailure;

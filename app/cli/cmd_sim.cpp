@@ -73,6 +73,9 @@ Faults (all off by default; every injected fault is counted):
   --health-bits N        raise health bits (0..255): G1 status bits in A5 92 and in CT; G6/TG
                          A5 91 status 2 (error) with N as the error code.
   --junk N               send N junk bytes in front of every reply header.
+  --scan-offset-hz F     a motor that misses its set rate: it turns F Hz faster (or, negative,
+                         slower) than set (-5..5); G1's CT reports the rate it really turns at.
+  --scan-wobble-hz F     a motor that wanders: up to F Hz about its rate, over 2 s (0..5).
   --unplug-after-ms N    disconnect after N ms: the pseudo-terminal and LINK disappear (TCP: the
                          host is dropped and the port closed); the device loses power.
   --replug-after-ms N    come back N ms after the unplug with a new pseudo-terminal (LINK is
@@ -119,7 +122,8 @@ int run_sim(std::span<const std::string> raw) {
   const Arguments args(raw,
                        {"model", "pty", "tcp", "scene", "seed", "distance-scale", "zero-log", "corrupt", "drop",
                         "lose-packets", "stall-ms", "stall-every-ms", "health-bits", "junk", "unplug-after-ms",
-                        "replug-after-ms", "host-compat", "firmware", "delivery"},
+                        "replug-after-ms", "host-compat", "firmware", "delivery", "scan-offset-hz",
+                        "scan-wobble-hz"},
                        {"verbose", "health-quirk"});
 
   const std::string model_name = args.required("model");
@@ -163,6 +167,8 @@ int run_sim(std::span<const std::string> raw) {
                      std::to_string(faults.stall_every_ms) + "), or the virtual lidar never sends again");
   faults.health_bits = static_cast<std::uint8_t>(args.integer("health-bits", 0, 255).value_or(0));
   faults.junk_before_reply = static_cast<std::uint32_t>(args.integer("junk", 0, 4096).value_or(0));
+  faults.scan_hz_offset = args.number("scan-offset-hz", -5.0, 5.0).value_or(0.0);
+  faults.scan_hz_wobble = args.number("scan-wobble-hz", 0.0, 5.0).value_or(0.0);
   options.unplug_after = std::chrono::milliseconds(args.integer("unplug-after-ms", 0, 86'400'000).value_or(0));
   options.replug_after = std::chrono::milliseconds(args.integer("replug-after-ms", 0, 86'400'000).value_or(0));
   if (options.replug_after.count() > 0 && options.unplug_after.count() == 0)

@@ -12,7 +12,7 @@ double wrap_degrees(double degrees) {
   return wrapped < 0 ? wrapped + 360.0 : wrapped;
 }
 
-std::optional<double> parse_degrees(std::string_view text) {
+std::optional<double> parse_number(std::string_view text) {
   double value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
@@ -40,8 +40,8 @@ bool Sector::contains(const LapPoint& point) const {
 
 std::optional<Sector> parse_sector(std::string_view text, std::string& error) {
   const auto colon = text.find(':');
-  const auto from = colon == std::string_view::npos ? std::nullopt : parse_degrees(text.substr(0, colon));
-  const auto to = colon == std::string_view::npos ? std::nullopt : parse_degrees(text.substr(colon + 1));
+  const auto from = colon == std::string_view::npos ? std::nullopt : parse_number(text.substr(0, colon));
+  const auto to = colon == std::string_view::npos ? std::nullopt : parse_number(text.substr(colon + 1));
   if (!from || !to) {
     error = "a sector is FROM:TO in degrees, such as 260:280 or 350:10, not '" + std::string(text) + "'";
     return std::nullopt;
@@ -59,6 +59,24 @@ std::optional<Sector> parse_sector(std::string_view text, std::string& error) {
   sector.from_deg = wrap_degrees(*from);
   sector.to_deg = wrap_degrees(*to);
   return sector;
+}
+
+bool set_range_band(Sector& sector, std::string_view text, std::string& error) {
+  const auto colon = text.find(':');
+  const auto lo = colon == std::string_view::npos ? std::nullopt : parse_number(text.substr(0, colon));
+  const auto hi = colon == std::string_view::npos ? std::nullopt : parse_number(text.substr(colon + 1));
+  if (!lo || !hi) {
+    error = "a range band is MIN:MAX in mm, such as 1500:2500, not '" + std::string(text) + "'";
+    return false;
+  }
+  if (*lo < 0 || *hi <= *lo) {
+    error = "a range band needs 0 <= MIN < MAX, not '" + std::string(text) + "'";
+    return false;
+  }
+  sector.min_mm = *lo;
+  sector.max_mm = *hi;
+  sector.name += " (" + std::string(text) + " mm)";
+  return true;
 }
 
 }  // namespace ydscope

@@ -38,4 +38,8 @@ inline bool is_valid_return(const LapPoint& point) {
 // Parses "A:B" in degrees (each in [0, 360], A != B). Empty plus one sentence in `error` on a mistake.
 std::optional<Sector> parse_sector(std::string_view text, std::string& error);
 
+// Narrows `sector` to returns "MIN:MAX" mm away (0 <= MIN < MAX) and names the band in its name.
+// False plus one sentence in `error` on a mistake.
+bool set_range_band(Sector& sector, std::string_view text, std::string& error);
+
 }  // namespace ydscope

@@ -30,6 +30,24 @@ TEST(Sector, ASectorMayCrossZero) {
   EXPECT_DOUBLE_EQ(s->offset_deg(2.0), 12.0);
 }
 
+TEST(Sector, ARangeBandKeepsTheTargetAndDropsTheWallBehindIt) {
+  std::string error;
+  Sector s = *parse_sector("260:280", error);
+  ASSERT_TRUE(set_range_band(s, "1500:2500", error)) << error;
+  EXPECT_EQ(s.name, "260:280 (1500:2500 mm)");
+  EXPECT_TRUE(s.contains({270.0f, 2000.0f, PointFlag::None}));
+  EXPECT_FALSE(s.contains({270.0f, 3000.0f, PointFlag::None})) << "the wall behind the target";
+  EXPECT_FALSE(s.contains({270.0f, 1000.0f, PointFlag::None}));
+  EXPECT_TRUE(s.contains({270.0f, 0.0f, PointFlag::None})) << "a miss still counts against the sector";
+  for (const char* text : {"", "2000", "a:b", "-1:100", "500:500", "900:100", "1:1e999"}) {
+    Sector t = *parse_sector("260:280", error);
+    error.clear();
+    EXPECT_FALSE(set_range_band(t, text, error)) << text;
+    EXPECT_FALSE(error.empty()) << text;
+    EXPECT_FALSE(t.min_mm) << text;
+  }
+}
+
 TEST(Sector, MistakesGetOneSentence) {
   for (const char* text : {"", "260", "a:b", "10:", "400:10", "-5:10", "30:30", "0:360", "1e999:2"}) {
     std::string error;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -110,6 +112,9 @@ TEST(CheckCli, AFlatTargetAtTheRightDistancePassesAndAtTheWrongOneFailsTheBias) 
   EXPECT_EQ(failed_ids(wrong.out), "range_bias") << wrong.out;
   const CliResult strict = check(sim, " --sector 260:280 --target-mm 2400 --noise-mm 2");
   EXPECT_EQ(failed_ids(strict.out), "range_noise") << strict.out;
+  const CliResult banded = check(sim, " --sector 260:280 --band 2300:2500 --target-mm 2400");
+  EXPECT_EQ(banded.status, 0) << banded.out;
+  EXPECT_NE(banded.out.find(R"~("name":"260:280 (2300:2500 mm)")~"), std::string::npos) << banded.out;
 }
 
 TEST(CheckCli, MistakesAreUsageErrorsWithOneSentence) {
@@ -118,11 +123,54 @@ TEST(CheckCli, MistakesAreUsageErrorsWithOneSentence) {
   for (const std::string& args : {std::string("check"), "check" + port + " --target-mm 2000",
                                   "check" + port + " --sector 10", "check" + port + " --format xml",
                                   "check" + port + " --tolerance-mm 5", "check" + port + " --seconds 0",
-                                  "check" + port + " --scan-hz 20", "check" + port + " --ranging-khz 5"}) {
+                                  "check" + port + " --scan-hz 20", "check" + port + " --ranging-khz 5",
+                                  "check" + port + " --band 1:2", "check" + port + " --sector 10:20 --band 5"}) {
     const CliResult run = run_cli(args);
     EXPECT_EQ(run.status, 2) << args << "\n" << run.out;
     EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << args << "\n" << run.out;
   }
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
+  SimOnPty sim(Model::G6);
+  const auto report = std::filesystem::path(::testing::TempDir()) / ("check-report-" + std::to_string(getpid()) + ".html");
+  const CliResult run = check(sim, " --sector 260:280 --target-mm 2300 --report " + report.string());
+  EXPECT_EQ(run.status, 3) << run.out;
+  const std::string html = read_text(report);
+  std::filesystem::remove(report);
+  ASSERT_FALSE(html.empty()) << "no report at " << report;
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find(R"(<span class="verdict fail" id="verdict">FAIL</span>)"), std::string::npos);
+  for (const char* id : {"identity", "health", "scan_rate", "scan_jitter", "sample_rate", "link", "valid_returns",
+                         "sector_valid", "range_bias", "range_noise"})
+    EXPECT_EQ(occurrences(html, std::string("<tr data-id=\"") + id + "\">"), 1u) << id;
+  EXPECT_NE(html.find(R"(<tr data-id="range_bias"><td class="v fail">FAIL</td>)"), std::string::npos);
+  EXPECT_NE(html.find(R"(<tr data-id="scan_rate"><td class="v pass">PASS</td>)"), std::string::npos);
+  EXPECT_EQ(occurrences(html, "<svg "), 4u) << "scan rate, sector histogram, valid share by angle, polar snapshot";
+  EXPECT_NE(html.find("<title>Scan rate of each lap over the run</title>"), std::string::npos);
+  EXPECT_NE(html.find("<title>Histogram of the sector&#39;s ranges</title>"), std::string::npos);
+  EXPECT_NE(html.find("<title>The last lap from above</title>"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos) << "self-contained and inert";
+  EXPECT_EQ(html.find(" src="), std::string::npos) << "nothing fetched";
+  EXPECT_EQ(html.find(" href="), std::string::npos) << "nothing fetched";
+}
+
+TEST(CheckCli, AReportThatCannotBeWrittenIsRefusedBeforeConnecting) {
+  // The port does not exist: reaching it would be exit 1, so exit 2 shows the report was checked first.
+  const CliResult run = run_cli("check --port /nonexistent/ttyUSB9 --report /nonexistent-folder/unit.html");
+  EXPECT_EQ(run.status, 2) << run.out;
+  EXPECT_NE(run.out.find("the folder /nonexistent-folder does not exist"), std::string::npos) << run.out;
 }
 
 TEST(CheckCli, AMissingPortIsADeviceFailure) {
@@ -133,6 +181,7 @@ TEST(CheckCli, AMissingPortIsADeviceFailure) {
 
 TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   SimOnPty sim(Model::G6);
+  const auto report = std::filesystem::path(::testing::TempDir()) / ("check-ctrl-c-" + std::to_string(getpid()) + ".html");
   int out_pipe[2];
   ASSERT_EQ(pipe(out_pipe), 0);
   const pid_t child = fork();
@@ -140,9 +189,9 @@ TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   if (child == 0) {
     dup2(out_pipe[1], STDOUT_FILENO);
     close(out_pipe[0]);
-    const std::string port = sim.port();
+    const std::string port = sim.port(), report_path = report.string();
     execl(YDSCOPE_CLI_PATH, YDSCOPE_CLI_PATH, "check", "--port", port.c_str(), "--seconds", "60", "--settle-seconds",
-          "0.3", static_cast<char*>(nullptr));
+          "0.3", "--report", report_path.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
   close(out_pipe[1]);
@@ -168,6 +217,10 @@ TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   DeviceMode mode = DeviceMode::Scanning;
   sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
   EXPECT_EQ(mode, DeviceMode::Idle);
+  const std::string html = read_text(report);
+  std::filesystem::remove(report);
+  EXPECT_NE(html.find(R"(id="verdict">INCOMPLETE</span>)"), std::string::npos) << "the report is written, marked";
+  EXPECT_NE(html.find("Interrupted after"), std::string::npos);
 }
 
 }  // namespace

@@ -196,12 +196,40 @@ TEST(CliSim, AStallMustBeShorterThanItsPeriod) {
   }
 }
 
+TEST(CliSim, AMotorOffItsSetRateShowsInG1sOwnRateReport) {
+  // G1's CT carries the rate the motor really turns at: set 9 Hz (the default), turning 1 Hz fast.
+  Child child({"sim", "--model", "G1", "--tcp", "127.0.0.1:0", "--scan-offset-hz", "1"});
+  const std::string line = child.read_line(10s);
+  ASSERT_EQ(line.rfind("ready tcp://", 0), 0u) << line;
+  const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' scan --port " + line.substr(6) + " --laps 4";
+  std::FILE* scan = ::popen(command.c_str(), "r");
+  ASSERT_NE(scan, nullptr);
+  std::string laps;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, scan)) laps += buffer;
+  EXPECT_EQ(::pclose(scan), 0) << laps.substr(0, 300);
+  EXPECT_NE(laps.find(R"("scan_hz":10,)"), std::string::npos) << laps.substr(0, 300);
+  EXPECT_EQ(laps.find(R"("scan_hz":9,)"), std::string::npos);
+}
+
+TEST(CliSim, MotorFaultsOutsideTheirSpanAreUsageErrors) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"--scan-offset-hz", "6"},
+                                               std::vector<std::string>{"--scan-wobble-hz", "-1"}}) {
+    std::vector<std::string> all{"sim", "--model", "G6", "--pty", "/tmp/ydscope-never"};
+    all.insert(all.end(), args.begin(), args.end());
+    Child child(all);
+    EXPECT_EQ(child.wait(10s), 2) << args[0];
+    EXPECT_NE(child.read_stderr().find(args[0]), std::string::npos) << args[0];
+  }
+}
+
 TEST(CliSim, HelpExplainsEveryFaultOption) {
   Child child({"sim", "--help"});
   EXPECT_EQ(child.wait(10s), 0);
   const std::string help = child.read_stdout();
   for (const char* option : {"--corrupt", "--drop", "--lose-packets", "--stall-ms", "--stall-every-ms", "--health-bits",
-                             "--junk", "--unplug-after-ms", "--replug-after-ms", "--zero-log", "--scene", "--seed"})
+                             "--junk", "--unplug-after-ms", "--replug-after-ms", "--zero-log", "--scene", "--seed",
+                             "--scan-offset-hz", "--scan-wobble-hz"})
     EXPECT_NE(help.find(option), std::string::npos) << option;
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+// Small inline-SVG pictures for the check report: plain markup (no scripts, no external files) in
+// user units, so the report stays one self-contained file that any browser scales and prints.
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/analysis/lap_timing.h"
+#include "core/analysis/sector.h"
+#include "core/analysis/value_summary.h"
+#include "core/protocol/lap.h"
+
+namespace ydscope::cli {
+
+// Each lap's rate against time, with the target as a line and the tolerance as a band.
+std::string svg_scan_rate_chart(std::span<const LapRateSample> series, double target_hz, double tolerance_pct);
+
+// Counts per bin of a histogram; `x_label` names the binned quantity ("range (mm)").
+std::string svg_histogram_chart(const Histogram& histogram, std::string_view x_label);
+
+// Share of valid returns per angle bin (negative: no points fell in that bin), as bars.
+std::string svg_valid_share_chart(std::span<const double> share_by_angle, double from_deg, double bin_deg);
+
+// One lap seen from above: range rings, the points, and the sector as a shaded wedge.
+std::string svg_polar_snapshot(const Lap& lap, const std::optional<Sector>& sector);
+
+// Text made safe for HTML and SVG markup (&, <, >, " and ').
+std::string markup_escaped(std::string_view text);
+
+}  // namespace ydscope::cli
