@@ -105,6 +105,7 @@ int run_scan(std::span<const std::string> raw) {
   summary.checksum_errors = end.counters.checksum_errors;
   summary.zero_packets = end.counters.zero_packets;
   summary.laps = end.counters.laps;
+  summary.overflow_points = end.counters.cut_points;  // "cut_points", as decode prints it
   write_summary_fields(out, summary);
   health.write_summary_field(out);
   out.raw("}\n");

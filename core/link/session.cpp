@@ -317,7 +317,8 @@ LapEndOutlook Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std:
     if (wake_) wake_();
   });
   const DecoderCounters c = decoder_->counters();
-  counters_.set_decoder_totals({c.packets, c.zero_packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches});
+  counters_.set_decoder_totals(
+      {c.packets, c.zero_packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches, c.overflow_points});
   return decoder_->lap_end_outlook();
 }
 

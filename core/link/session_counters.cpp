@@ -10,6 +10,7 @@ void SessionCounters::set_decoder_totals(const DecoderTotals& totals) {
   checksum_errors_.store(base_.checksum_errors + totals.checksum_errors, std::memory_order_relaxed);
   resync_bytes_.store(base_.resync_bytes + totals.resync_bytes, std::memory_order_relaxed);
   crc8_failures_.store(base_.crc8_failures + totals.crc8_failures, std::memory_order_relaxed);
+  cut_points_.store(base_.cut_points + totals.cut_points, std::memory_order_relaxed);
 }
 
 void SessionCounters::close_decoder_epoch() {
@@ -19,12 +20,13 @@ void SessionCounters::close_decoder_epoch() {
   base_.checksum_errors += current_.checksum_errors;
   base_.resync_bytes += current_.resync_bytes;
   base_.crc8_failures += current_.crc8_failures;
+  base_.cut_points += current_.cut_points;
   current_ = {};
 }
 
 void SessionCounters::reset() {
   for (auto* counter : {&bytes_received_, &reads_, &bytes_sent_, &drained_bytes_, &reconnects_, &refused_commands_, &queue_drops_,
-                        &packets_, &zero_packets_, &laps_, &checksum_errors_, &resync_bytes_, &crc8_failures_}) {
+                        &packets_, &zero_packets_, &laps_, &checksum_errors_, &resync_bytes_, &crc8_failures_, &cut_points_}) {
     counter->store(0, std::memory_order_relaxed);
   }
   last_byte_ns_.store(0, std::memory_order_relaxed);
@@ -62,6 +64,7 @@ CounterSnapshot SessionCounters::read(std::int64_t now_ns) const {
   s.checksum_errors = checksum_errors_.load(std::memory_order_relaxed);
   s.resync_bytes = resync_bytes_.load(std::memory_order_relaxed);
   s.crc8_failures = crc8_failures_.load(std::memory_order_relaxed);
+  s.cut_points = cut_points_.load(std::memory_order_relaxed);
   s.queue_drops = queue_drops_.load(std::memory_order_relaxed);
   s.drained_bytes = drained_bytes_.load(std::memory_order_relaxed);
   s.reconnects = reconnects_.load(std::memory_order_relaxed);

@@ -247,6 +247,31 @@ TEST(G1, MissingLastCrcByteIsAnUnknownVerdict) {
   EXPECT_EQ(decoded.counters.crc_mismatches, 0u);
 }
 
+// Issue 17 asked which byte counts when several lie between a lap's last packet and its closing
+// zero packet: the one right before the zero packet (README, decode's output). Junk before the
+// true LastCRC leaves the verdict Ok; junk after it (so it is no longer right before) is a Mismatch.
+TEST(G1, WithSeveralBytesBeforeAZeroPacketTheLastOneIsTheLastCrc) {
+  test::G1LapSpec spec;
+  Bytes first;
+  const std::uint8_t crc = test::append_g1_lap(first, spec, 0x00);
+  const auto with_gap = [&](const Bytes& gap) {
+    Bytes stream = first;
+    Bytes next;
+    test::append_g1_lap(next, spec, 0x00);
+    append(stream, gap);
+    append(stream, Bytes(next.begin() + 1, next.end()));  // the zero packet right after the gap
+    test::append_g1_lap(stream, spec, 0x00);
+    return decode(profile_for(Model::G1), stream);
+  };
+  const auto junk_first = with_gap({0x13, 0x37, crc});
+  ASSERT_EQ(junk_first.laps.size(), 2u);
+  EXPECT_EQ(junk_first.laps[0].crc, CrcVerdict::Ok);
+  const auto junk_last = with_gap({crc, 0x13});
+  ASSERT_EQ(junk_last.laps.size(), 2u);
+  EXPECT_EQ(junk_last.laps[0].crc, crc == 0x13 ? CrcVerdict::Ok : CrcVerdict::Mismatch);
+  EXPECT_FALSE(junk_last.laps[0].ct_info_trusted());
+}
+
 TEST(Laps, PointStorageIsBounded) {
   // A stream that never sends the next zero packet cannot grow a lap past Lap::kMaxPoints.
   Bytes stream = packet(kCtLapStart, 0.0, 0.0, {40});

@@ -28,6 +28,8 @@ void draw_stats_panel(const UiModel& m) {
   pair("checksum err", "%.0f", static_cast<double>(c.checksum_errors), c.checksum_errors > 0);
   pair("resync bytes", "%.0f", static_cast<double>(c.resync_bytes), c.resync_bytes > 0);
   pair("CRC8 fails", "%.0f", static_cast<double>(c.crc8_failures), c.crc8_failures > 0);
+  // Only a stream that lost its zero packets makes a lap longer than a lap can be.
+  if (c.cut_points > 0) pair("points cut", "%.0f", static_cast<double>(c.cut_points), true);
   pair("queue drops", "%.0f", static_cast<double>(m.snap.queue_dropped), m.snap.queue_dropped > 0);
   pair("laps skipped", "%.0f", static_cast<double>(m.laps_skipped), false);
   pair("reconnects", "%.0f", static_cast<double>(c.reconnects), c.reconnects > 0);
