@@ -16,7 +16,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/protocol/lap.h"
 #include "core/protocol/model_profile.h"
+#include "core/protocol/scan_decoder.h"
 #include "core/protocol/scan_packet.h"
 #include "core/sim/host_compat.h"
 #include "core/sim/virtual_lidar.h"
@@ -174,6 +176,32 @@ TEST_P(VendorSdkStartup, ManualRepliesAreUnchangedByTheMode) {
     std::int64_t t2 = t;
     EXPECT_EQ(exchange(manual, {0xA5, code}, t), exchange(sdk, {0xA5, code}, t2)) << "A5 " << int(code);
   }
+}
+
+// What the mode costs ydscope's own decoder: the device-info frame after the scan header is 27
+// bytes it skips as resync bytes, once per scan start; the laps are the same.
+TEST_P(VendorSdkStartup, OwnDecoderSkipsTheDeviceInfoFrameAndDecodesTheSameLaps) {
+  DecoderCounters counters[2];
+  std::vector<std::size_t> lap_sizes[2];
+  for (const HostCompat compat : {HostCompat::Manual, HostCompat::YdlidarSdk}) {
+    const auto k = static_cast<std::size_t>(compat);
+    VirtualLidar lidar(config(compat));
+    ScanDecoder decoder(profile());
+    std::int64_t t = 0;
+    lidar.receive(std::vector<std::uint8_t>{0xA5, 0x60}, t);
+    std::vector<std::uint8_t> out;
+    for (t = 0; t < 1'000 * kMs; t += 5 * kMs) {
+      out.clear();
+      lidar.produce(t, out);
+      decoder.feed(out, t, [&](const Lap& lap) { lap_sizes[k].push_back(lap.points.size()); });
+    }
+    counters[k] = decoder.counters();
+  }
+  EXPECT_EQ(lap_sizes[0], lap_sizes[1]);
+  EXPECT_GE(lap_sizes[1].size(), 7u);
+  EXPECT_EQ(counters[1].packets, counters[0].packets);
+  EXPECT_EQ(counters[1].checksum_errors, 0u);
+  EXPECT_EQ(counters[1].resync_bytes, counters[0].resync_bytes + 27u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, VendorSdkStartup,
