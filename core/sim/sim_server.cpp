@@ -232,7 +232,7 @@ void SimServer::Impl::run() {
       next = std::min({device->next_event_ns(), unplug_at, replug_at});
     }
     if (shaper) {
-      shape(monotonic_ns(), out, zero_ends);  // the shaper is the server thread's alone
+      shape(now(), out, zero_ends);  // on the device clock, like next; the shaper is this thread's alone
       next = std::min(next, shaper->next_due_ns());
     } else if (!out.empty()) {
       write_out(out, zero_ends);
