@@ -61,6 +61,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   history_.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
   std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", settings_.last_replay_file.c_str());
   model_.ports = discover_ports();
+  restore_sectors();
 }
 
 App::~App() {
@@ -137,6 +138,8 @@ void App::drain_laps() {
   ++model_.laps_shown;
   model_.scan_rate.add_lap_end(lap_.index, lap_.last_rx_ns);
   model_.points_in_lap = lap_.points.size();
+  model_.plots.add_lap({model_.scan_rate.hz(), model_.snap.scan_hz, lap_.points.size()});
+  for (ui::SectorWatch& sector : model_.sectors) sector.add_lap(lap_);
   pending_latency_rx_ns_ = lap_.last_rx_ns;
   if (lap_.health_bits) {
     model_.ct_health = lap_.health_bits;
@@ -163,6 +166,8 @@ void App::start_clean() {
   m.ct_health_trusted = true;
   m.crc_mismatch_laps = 0;
   m.timeline.clear();
+  m.plots.clear();
+  for (ui::SectorWatch& sector : m.sectors) sector.clear();
   m.replay = {};
   m.paused_view = false;
   m.feedback->clear();
@@ -257,7 +262,9 @@ void App::after_present() {
   // Frame time = the work of a frame (draining, drawing, presenting), not the wait between frames.
   model_.frame_ms.add(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - last_frame_).count());
   if (pending_latency_rx_ns_ != 0) {
-    model_.latency_ms.add(static_cast<double>(steady_ns() - pending_latency_rx_ns_) * 1e-6);
+    const double latency_ms = static_cast<double>(steady_ns() - pending_latency_rx_ns_) * 1e-6;
+    model_.latency_ms.add(latency_ms);
+    model_.plots.add_latency_ms(latency_ms);
     pending_latency_rx_ns_ = 0;
   }
 }
@@ -280,6 +287,7 @@ void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
       m.status_message = error.empty() ? "exported lap " + std::to_string(lap_.index) + " to " + path : error;
     }
   }
+  carry_out_sector_requests();
   if (m.refresh_ports_request) {
     m.refresh_ports_request = false;
     m.ports = discover_ports();

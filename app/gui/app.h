@@ -58,6 +58,14 @@ class App {
   // words ydscope-cli uses. Empty, or the sentence of why it did not start.
   std::string start(const ui::ConnectRequest& request);
   void update_view_state();
+  // The watched sectors (app_sectors.cpp): restored at start, changed by the Sectors panel and
+  // Shift+drag on the view, kept in settings.ini.
+  void restore_sectors();
+  void carry_out_sector_requests();
+  // Empty, or why `spec` is not watched (a mistake, a duplicate, too many).
+  std::string watch_sector(const std::string& spec);
+  // settings.ini's list and the view's outlines follow model_.sectors.
+  void sync_sectors();
 
   GLFWwindow* window_;
   AppOptions options_;

@@ -36,6 +36,7 @@ void App::update_model() {
   if (s.scan_hz && s.scan_hz != last_set_scan_hz_) model_.scan_target_hz = static_cast<float>(*s.scan_hz);
   last_set_scan_hz_ = s.scan_hz;
   model_.timeline.observe("link", static_cast<std::uint32_t>(s.state), model_.now_s, std::string(link_state_name(s.state)));
+  model_.plots.sample_counters({model_.now_s, s.counters.bytes_per_s, s.counters.checksum_errors, s.counters.crc8_failures});
   if (s.health) {
     const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;
     const char* source = s.health->command == Command::HealthStatusBits ? "A5 92" : "A5 91";

@@ -1,6 +1,7 @@
 #include "app/gui/app_options.h"
 
 #include "app/gui/app_help.h"
+#include "core/analysis/sector.h"
 #include "core/protocol/model_profile.h"
 
 namespace ydscope::gui {
@@ -8,7 +9,7 @@ namespace ydscope::gui {
 const char* const kAppHelp = kAppHelpText;
 
 AppOptions parse_app_options(std::span<const std::string> raw) {
-  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames"},
+  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector"},
                        {"fullscreen"});
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
@@ -35,6 +36,11 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if (const auto frames = args.integer("frames", 1, 1'000'000)) {
     if (options.screenshot_path.empty()) throw UsageError("--frames goes with --screenshot PNG.");
     options.frames = static_cast<int>(*frames);
+  }
+  if (const auto sector = args.value("sector")) {
+    std::string error;
+    if (!parse_sector_spec(*sector, error)) throw UsageError("--sector: " + error);
+    options.sector = sector;
   }
   if (options.model && !find_profile(*options.model) && !(options.source == SourceKind::Port && *options.model == "auto")) {
     throw UsageError("unknown model '" + *options.model + "'; choose one of " + std::string(model_names()) + ".");

@@ -20,6 +20,7 @@ struct AppOptions {
   bool fullscreen = false;
   std::string screenshot_path;       // --screenshot PNG
   int frames = 120;                  // --frames N with --screenshot
+  std::optional<std::string> sector; // --sector "FROM:TO [MIN:MAX]": watch it from the start
 };
 
 // Throws UsageError (the shared parser's, app/common/arguments.h) with one sentence for a bad command line.

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace ydscope {
 
@@ -77,6 +78,23 @@ bool set_range_band(Sector& sector, std::string_view text, std::string& error) {
   sector.max_mm = *hi;
   sector.name += " (" + std::string(text) + " mm)";
   return true;
+}
+
+std::optional<Sector> parse_sector_spec(std::string_view spec, std::string& error) {
+  const auto space = spec.find(' ');
+  std::optional<Sector> sector = parse_sector(spec.substr(0, space), error);
+  if (!sector || space == std::string_view::npos) return sector;
+  if (!set_range_band(*sector, spec.substr(space + 1), error)) return std::nullopt;
+  return sector;
+}
+
+std::string sector_spec(const Sector& s) {
+  char text[96];
+  if (s.min_mm && s.max_mm)
+    std::snprintf(text, sizeof text, "%g:%g %g:%g", s.from_deg, s.to_deg, *s.min_mm, *s.max_mm);
+  else
+    std::snprintf(text, sizeof text, "%g:%g", s.from_deg, s.to_deg);
+  return text;
 }
 
 }  // namespace ydscope

@@ -42,4 +42,9 @@ std::optional<Sector> parse_sector(std::string_view text, std::string& error);
 // False plus one sentence in `error` on a mistake.
 bool set_range_band(Sector& sector, std::string_view text, std::string& error);
 
+// "FROM:TO" in degrees, optionally followed by " MIN:MAX" in mm (the app's --sector and its
+// settings.ini); sector_spec() writes it back. Empty plus one sentence in `error` on a mistake.
+std::optional<Sector> parse_sector_spec(std::string_view spec, std::string& error);
+std::string sector_spec(const Sector& sector);
+
 }  // namespace ydscope

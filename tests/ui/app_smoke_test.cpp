@@ -50,6 +50,24 @@ TEST(AppSmoke, VirtualG6RendersAScreenshot) {
   expect_scan_and_panels(png);
 }
 
+// --sector 260:280 shades a wedge on the lidar's left (270 degrees, clockwise from ahead): a dim
+// orange tint between the lidar and the wall there, and none in the mirror image on its right.
+TEST(AppSmoke, AWatchedSectorIsShadedOnTheView) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-sector.png";
+  std::filesystem::remove(png);
+  ASSERT_EQ(run_app("--sim G6 --scene room --sector 260:280 --screenshot '" + png + "' --frames 90"), 0);
+  const Image image = load_png(png);
+  ASSERT_TRUE(image.pixels) << png;
+  const int view_left = image.width * 35 / 100;
+  const int cx = (view_left + image.width) / 2, cy = image.height / 2;
+  const auto tinted = [](const unsigned char* p) { return p[0] > p[2] + 12 && p[0] < 120 && p[1] < 100; };
+  const int left = count_pixels(image, {cx - 160, cy - 8, cx - 40, cy + 8}, tinted);
+  const int right = count_pixels(image, {cx + 40, cy - 8, cx + 160, cy + 8}, tinted);
+  EXPECT_GT(left, 120 * 16 / 2) << "no sector shading left of the lidar";
+  EXPECT_LT(right, 120 * 16 / 20) << "shading where no sector is";
+}
+
 TEST(AppSmoke, DemoRecordingReplaysIntoAScreenshot) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
   const std::string recording = (ydscope::test::assets_dir() / "demo-g6.ydrec").string();

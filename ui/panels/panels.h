@@ -15,6 +15,8 @@ void draw_frequency_panels(UiModel& model, Session& session);
 void draw_view_panel(UiModel& model, ViewSettings& settings);
 void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
+void draw_plots_panel(const UiModel& model);
+void draw_sectors_panel(UiModel& model);
 
 // The whole left sidebar (full window height). Returns its width in pixels so the polar view can
 // use the rest of the window.

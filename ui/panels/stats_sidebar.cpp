@@ -61,6 +61,8 @@ float draw_sidebar(UiModel& m, ViewSettings& v, Session& session) {
     draw_view_panel(m, v);
     draw_filter_panel(m, v);
     draw_stats_panel(m);
+    draw_sectors_panel(m);
+    draw_plots_panel(m);
   }
   width = ImGui::GetWindowWidth();
   ImGui::End();

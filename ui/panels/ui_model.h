@@ -18,6 +18,8 @@
 #include "ui/view/health_timeline.h"
 #include "ui/view/point_cloud.h"
 #include "ui/view/rate_meters.h"
+#include "ui/view/run_plots.h"
+#include "ui/view/sector_watch.h"
 #include "ui/view/settings.h"
 #include "ui/view/view_state.h"
 
@@ -77,6 +79,8 @@ struct UiModel {
   std::uint64_t crc_mismatch_laps = 0;
   HealthTimeline timeline;
   CounterRate bytes_rate, packets_rate, laps_rate;
+  RunPlots plots;                         // the Plots panel's history
+  std::vector<SectorWatch> sectors;       // the Sectors panel's, in settings order
   ReplayControl replay;
   bool paused_view = false;               // the view holds the current laps
   ViewState view_state;                   // live, or dimmed with the reason in words
@@ -97,6 +101,8 @@ struct UiModel {
   bool screenshot_request = false;
   bool csv_request = false;
   bool reset_view_request = false;
+  std::optional<std::string> add_sector_request;    // a spec, "260:280 [1500:2500]"
+  std::optional<std::size_t> remove_sector_request;
   std::string status_message;  // outcome of the last local action (file saved, ...)
 
   // ---- panel edit state (kept between frames) ---------------------------------------------------
@@ -115,6 +121,8 @@ struct UiModel {
   char replay_text[512] = "";
   int replay_model_choice = 0;  // 0 = as the recording says, then model_names() order
   char record_text[512] = "";
+  char sector_text[64] = "";
+  std::string sector_error;  // why the typed sector was refused
   double record_started_s = 0.0;
   float scan_target_hz = 10.0f;
   bool distance_scale_override = false;

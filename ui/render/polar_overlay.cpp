@@ -1,6 +1,7 @@
 #include "ui/render/polar_overlay.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
@@ -35,6 +36,26 @@ void label(ImDrawList* draw, Vec2 at, const char* text, ImU32 colour, bool centr
   draw->AddText(p, colour, text);
 }
 
+// A translucent wedge from the origin out past the view's edge, in steps of at most 2 degrees.
+void sector_wedge(ImDrawList* draw, const ViewTransform& view, const SectorShape& sector, ImU32 fill, ImU32 edge) {
+  const float reach_mm = view.visible_radius_mm() * 2.0f + length(view.centre_world());
+  const Vec2 o = view.world_to_screen({0.0f, 0.0f});
+  const int steps = std::max(1, static_cast<int>(std::ceil(sector.width_deg / 2.0f)));
+  Vec2 previous = view.world_to_screen(polar_to_world(sector.from_deg, reach_mm));
+  draw->AddLine(im(o), im(previous), edge, 1.5f);
+  for (int i = 1; i <= steps; ++i) {
+    const Vec2 next = view.world_to_screen(
+        polar_to_world(sector.from_deg + sector.width_deg * static_cast<float>(i) / static_cast<float>(steps), reach_mm));
+    draw->AddTriangleFilled(im(o), im(previous), im(next), fill);
+    previous = next;
+  }
+  draw->AddLine(im(o), im(previous), edge, 1.5f);
+  // The name sits on the bisector, a little out from the lidar.
+  const float at_mm = 40.0f / std::max(view.px_per_mm(), 1e-6f);
+  label(draw, view.world_to_screen(polar_to_world(sector.from_deg + sector.width_deg * 0.5f, at_mm * 2.5f)),
+        sector.label.c_str(), edge, true);
+}
+
 }  // namespace
 
 void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
@@ -45,6 +66,10 @@ void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
     for (const GridLabel& l : in.grid->ring_labels) label(draw, l.screen + Vec2{4.0f, -2.0f}, l.text.c_str(), IM_COL32(170, 190, 220, 200), false);
     for (const GridLabel& l : in.grid->spoke_labels) label(draw, l.screen, l.text.c_str(), IM_COL32(150, 170, 200, 170), true, &view);
   }
+
+  for (const SectorShape& sector : in.sectors)
+    sector_wedge(draw, view, sector, IM_COL32(249, 168, 37, 38), IM_COL32(249, 168, 37, 200));
+  if (in.sweep) sector_wedge(draw, view, *in.sweep, IM_COL32(120, 200, 255, 45), IM_COL32(120, 200, 255, 230));
 
   // The lidar: a dot and a chevron pointing along 0 deg (the heading).
   const Vec2 o = view.world_to_screen({0.0f, 0.0f});

@@ -1,8 +1,10 @@
 #pragma once
 // What the polar view draws with ImGui's draw lists on top of the GL layer: ring and spoke labels,
-// the lidar's origin and heading, the hovered point and the ruler. A few dozen items per frame,
+// the lidar's origin and heading, watched sectors, the hovered point and the ruler. A few dozen items per frame,
 // never one per scan point.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "ui/view/grid_layout.h"
 #include "ui/view/hit_test.h"
@@ -11,6 +13,13 @@ struct ImDrawList;
 
 namespace ydscope::ui {
 
+// A watched sector as the view outlines it: clockwise from from_deg over width_deg.
+struct SectorShape {
+  float from_deg = 0.0f;
+  float width_deg = 0.0f;
+  std::string label;  // "S1"
+};
+
 struct OverlayInput {
   const ViewTransform* view = nullptr;
   const GridLayout* grid = nullptr;
@@ -18,6 +27,8 @@ struct OverlayInput {
   std::optional<PointHit> hover;
   const Ruler* ruler = nullptr;
   std::optional<Vec2> ruler_cursor_world;  // rubber band from the first end to the cursor
+  std::vector<SectorShape> sectors;
+  std::optional<SectorShape> sweep;        // the sector a Shift+drag is sweeping out
 };
 
 void draw_polar_overlay(ImDrawList* draw, const OverlayInput& input);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 
 #include <imgui.h>
@@ -31,14 +32,34 @@ void PolarView::handle_input(ViewSettings& settings) {
   const bool inside = view_.contains_screen(mouse) && !io.WantCaptureMouse;
   hover_cursor_.reset();
   cursor_world_.reset();
-  if (!inside) return;
+  if (!inside) {
+    if (sweep_from_deg_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) sweep_from_deg_.reset();  // let go outside
+    return;
+  }
   hover_cursor_ = mouse;
   cursor_world_ = view_.screen_to_world(mouse);
   if (io.MouseWheel != 0.0f) {
     view_.zoom_about(mouse, std::pow(1.15f, io.MouseWheel));
     settings.auto_range = false;
   }
-  if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+  const float angle = world_angle_deg(*cursor_world_);
+  if (io.KeyShift && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    sweep_from_deg_ = sweep_last_deg_ = angle;
+    sweep_turned_deg_ = 0.0f;
+  }
+  if (sweep_from_deg_) {
+    // Wrapped step since the last frame: the sweep follows the cursor round, either way.
+    float step = angle - sweep_last_deg_;
+    if (step > 180.0f) step -= 360.0f;
+    if (step < -180.0f) step += 360.0f;
+    sweep_turned_deg_ = std::clamp(sweep_turned_deg_ + step, -359.0f, 359.0f);
+    sweep_last_deg_ = angle;
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+      if (const auto shape = sweep_shape(); shape && shape->width_deg >= 1.0f)
+        swept_ = {shape->from_deg, std::fmod(shape->from_deg + shape->width_deg, 360.0f)};
+      sweep_from_deg_.reset();
+    }
+  } else if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     reset(settings);
   } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
     view_.pan_by_pixels({io.MouseDelta.x, io.MouseDelta.y});
@@ -46,6 +67,23 @@ void PolarView::handle_input(ViewSettings& settings) {
   }
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) ruler_.click(*cursor_world_);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ruler_.clear();
+}
+
+std::optional<SectorShape> PolarView::sweep_shape() const {
+  if (!sweep_from_deg_) return std::nullopt;
+  SectorShape shape;
+  shape.from_deg = sweep_turned_deg_ >= 0.0f ? *sweep_from_deg_ : std::fmod(*sweep_from_deg_ + sweep_turned_deg_ + 360.0f, 360.0f);
+  shape.width_deg = std::fabs(sweep_turned_deg_);
+  char label[32];
+  std::snprintf(label, sizeof label, "%.0f\xC2\xB0", static_cast<double>(shape.width_deg));
+  shape.label = label;
+  return shape;
+}
+
+std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
+  auto swept = swept_;
+  swept_.reset();
+  return swept;
 }
 
 void PolarView::auto_range(const LapHistory& history, const ViewSettings& settings) {
@@ -101,6 +139,8 @@ void PolarView::draw(const LapHistory& history, const ViewSettings& settings, fl
   overlay.show_grid_labels = settings.show_grid;
   overlay.ruler = &ruler_;
   overlay.ruler_cursor_world = cursor_world_;
+  overlay.sectors = sectors_;
+  overlay.sweep = sweep_shape();
   if (hover_cursor_ && !history.empty()) overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
 }

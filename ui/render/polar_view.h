@@ -1,11 +1,13 @@
 #pragma once
 // The polar view as the app uses it: mouse handling (wheel zoom about the cursor, drag to pan,
-// double-click to reset, right-click ruler, hover), auto-range, the point cloud rebuilt only when
+// double-click to reset, right-click ruler, Shift+drag to sweep a sector, hover), auto-range, the point cloud rebuilt only when
 // laps or settings change, and drawing through PolarRenderer plus the ImGui overlay.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
+#include "ui/render/polar_overlay.h"
 #include "ui/render/polar_renderer.h"
 #include "ui/view/hit_test.h"
 #include "ui/view/lap_history.h"
@@ -23,6 +25,10 @@ class PolarView {
   void handle_input(ViewSettings& settings);
   void reset(ViewSettings& settings);
   void clear_ruler() { ruler_.clear(); }
+  // The watched sectors to outline, in the order the Sectors panel lists them.
+  void set_sectors(std::vector<SectorShape> sectors) { sectors_ = std::move(sectors); }
+  // A sector the user has just swept out with Shift+drag, as {from, to} degrees, once.
+  std::optional<std::pair<float, float>> take_swept_sector();
   // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
   void invalidate() { dirty_ = true; }
   // Fits the view to the newest lap when auto-range is on.
@@ -52,6 +58,14 @@ class PolarView {
   ColourParams last_colours_;
   std::optional<Vec2> hover_cursor_;
   std::optional<Vec2> cursor_world_;
+  std::vector<SectorShape> sectors_;
+  // Shift+drag: where it started and how far it has turned (signed, so a sweep may pass 180).
+  std::optional<float> sweep_from_deg_;
+  float sweep_last_deg_ = 0.0f;
+  float sweep_turned_deg_ = 0.0f;
+  std::optional<std::pair<float, float>> swept_;
+
+  std::optional<SectorShape> sweep_shape() const;
 };
 
 }  // namespace ydscope::ui

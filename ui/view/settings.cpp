@@ -7,6 +7,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "ui/view/sector_watch.h"
+
 namespace ydscope::ui {
 namespace {
 
@@ -102,6 +104,15 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.show_grid = *b;
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
+    } else if (key == "sector") {
+      std::string error;
+      if (s.sectors.size() >= kMaxWatchedSectors) {
+        if (notes) notes->push_back("sector = " + value + " is left out: at most " + std::to_string(kMaxWatchedSectors) + " sectors");
+      } else if (parse_sector_spec(value, error)) {
+        s.sectors.push_back(value);
+      } else if (notes) {
+        notes->push_back("sector = " + value + " is left out: " + error);
+      }
     }
   }
   return s;
@@ -126,6 +137,7 @@ std::string format_settings(const ViewSettings& s) {
       << "show_panels = " << yes(s.show_panels) << "\n"
       << "show_grid = " << yes(s.show_grid) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n";
+  for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
   return out.str();
 }
 

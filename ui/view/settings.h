@@ -26,6 +26,7 @@ struct ViewSettings {
   bool show_panels = true;
   bool show_grid = true;
   std::string last_replay_file;
+  std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
 
   friend bool operator==(const ViewSettings&, const ViewSettings&) = default;
 };

@@ -1,0 +1,69 @@
+// App, the watched sectors: one SectorWatch per sector in the view model, fed every shown lap
+// (drain_laps), outlined on the view, added from the Sectors panel or a Shift+drag, and
+// remembered as settings.ini's `sector = ...` lines.
+#include <algorithm>
+#include <cstdio>
+
+#include "app/gui/app.h"
+
+namespace ydscope::gui {
+
+std::string App::watch_sector(const std::string& spec) {
+  std::string error;
+  const std::optional<Sector> sector = parse_sector_spec(spec, error);
+  if (!sector) return error;
+  const std::string canonical = sector_spec(*sector);
+  for (const ui::SectorWatch& w : model_.sectors)
+    if (w.spec() == canonical) return "sector " + canonical + " is watched already";
+  if (model_.sectors.size() >= ui::kMaxWatchedSectors)
+    return "at most " + std::to_string(ui::kMaxWatchedSectors) + " sectors; remove one first";
+  model_.sectors.emplace_back(*sector);
+  return {};
+}
+
+void App::restore_sectors() {
+  for (const std::string& spec : settings_.sectors) watch_sector(spec);  // checked when read
+  if (options_.sector) {
+    const std::string error = watch_sector(*options_.sector);
+    if (!error.empty() && error.find("already") == std::string::npos) std::fprintf(stderr, "ydscope: %s\n", error.c_str());
+  }
+  sync_sectors();
+}
+
+void App::carry_out_sector_requests() {
+  ui::UiModel& m = model_;
+  std::optional<std::string> added = m.add_sector_request;
+  m.add_sector_request.reset();
+  if (const auto swept = view_->take_swept_sector()) {
+    char spec[48];
+    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
+    added = spec;
+  }
+  bool changed = false;
+  if (added) {
+    m.sector_error = watch_sector(*added);
+    if (m.sector_error.empty()) m.sector_text[0] = '\0';
+    changed = m.sector_error.empty();
+  }
+  if (m.remove_sector_request) {
+    if (*m.remove_sector_request < m.sectors.size())
+      m.sectors.erase(m.sectors.begin() + static_cast<std::ptrdiff_t>(*m.remove_sector_request));
+    m.remove_sector_request.reset();
+    changed = true;
+  }
+  if (changed) sync_sectors();
+}
+
+void App::sync_sectors() {
+  ui::UiModel& m = model_;
+  settings_.sectors.clear();
+  std::vector<ui::SectorShape> shapes;
+  for (std::size_t i = 0; i < m.sectors.size(); ++i) {
+    const Sector& s = m.sectors[i].sector();
+    settings_.sectors.push_back(m.sectors[i].spec());
+    shapes.push_back({static_cast<float>(s.from_deg), static_cast<float>(s.width_deg()), "S" + std::to_string(i + 1)});
+  }
+  view_->set_sectors(std::move(shapes));
+}
+
+}  // namespace ydscope::gui
