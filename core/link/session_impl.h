@@ -1,6 +1,7 @@
 #pragma once
 // Session::Impl: the I/O thread's side of a Session. session.cpp holds the thread, the intents
-// and the snapshot; session_supervisor.cpp the connect / start-up / serve / reconnect coroutine.
+// and the snapshot; session_supervisor.cpp the connect / start-up / reconnect coroutine;
+// session_intents.cpp the intents served while scanning.
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
