@@ -16,13 +16,16 @@ constexpr std::string_view kHelpText = R"(usage: ydscope-cli ports [--format tab
 
 Lists the serial ports a lidar may be on: /dev/serial/by-id/* (names that survive re-plugging),
 /dev/ydlidar-* (made by the udev rule 70-ydlidar.rules), /dev/ttyUSB* and /dev/ttyACM*, with the
-USB vendor:product id, manufacturer, product, serial number and driver that the system reports. Ports on the USB-serial chips YDLIDAR boards use
-(CP210x 10c4:ea60, CH340 1a86:7523, CH9102 1a86:55d4) come first and are marked "lidar?".
+USB vendor:product id, manufacturer, product, serial number and driver that the system reports.
+Ports on the USB-serial chips YDLIDAR boards use (CP210x 10c4:ea60, CH340 1a86:7523, CH9102
+1a86:55d4) come first and are marked "likely". A single-board computer's own UARTs come last,
+marked "uart": /dev/ttyAMA* (Raspberry Pi), /dev/ttyTHS* (Jetson), and /dev/ttyS* where the
+kernel found a UART behind it; the app never opens those on its own, give them with --port.
 Pass the PORT column to --port of the other commands.
 
   --format table   (default) one port per line for people.
   --format json    one JSON array of objects: path, by_id, alias, name, vendor_id, product_id (hex text
-                   or null), manufacturer, product, serial, driver, known_lidar_bridge.
+                   or null), manufacturer, product, serial, driver, known_lidar_bridge, on_board_uart.
   --dev-root DIR, --sys-root DIR
                    look in DIR instead of /dev and /sys (for tests).
 
@@ -37,7 +40,8 @@ examples:
 
 void print_table(const std::vector<SerialPortInfo>& ports) {
   if (ports.empty()) {
-    std::fputs("no serial ports found (looked for /dev/serial/by-id/*, /dev/ttyUSB*, /dev/ttyACM*); plug the "
+    std::fputs("no serial ports found (looked for /dev/serial/by-id/*, /dev/ttyUSB*, /dev/ttyACM* and on-board "
+               "UARTs /dev/ttyAMA*, /dev/ttyTHS*, /dev/ttyS*); plug the "
                "lidar in, check 'dmesg' for its driver, or use --port tcp://host:port for a network bridge\n",
                stderr);
     return;
@@ -52,7 +56,8 @@ void print_table(const std::vector<SerialPortInfo>& ports) {
     if (!port.driver.empty()) description += (description.empty() ? "driver " : ", driver ") + port.driver;
     const std::string usb = port.usb_id().empty() ? "-" : port.usb_id();
     std::printf("%-*s  %-7s  %-9s  %-7s  %s\n", static_cast<int>(width), port.preferred_path().c_str(),
-                port.known_lidar_bridge ? "likely" : "-", usb.c_str(), port.name.c_str(), description.c_str());
+                port.known_lidar_bridge ? "likely" : port.on_board_uart ? "uart" : "-", usb.c_str(), port.name.c_str(),
+                description.c_str());
   }
 }
 
@@ -90,7 +95,8 @@ void print_json(const std::vector<SerialPortInfo>& ports) {
     out.string(port.serial);
     out.raw(",\"driver\":");
     out.string(port.driver);
-    out.raw(port.known_lidar_bridge ? ",\"known_lidar_bridge\":true}" : ",\"known_lidar_bridge\":false}");
+    out.raw(port.known_lidar_bridge ? ",\"known_lidar_bridge\":true" : ",\"known_lidar_bridge\":false");
+    out.raw(port.on_board_uart ? ",\"on_board_uart\":true}" : ",\"on_board_uart\":false}");
   }
   out.raw(ports.empty() ? "]\n" : "\n]\n");
   out.flush();

@@ -24,13 +24,18 @@ constexpr std::array<Bridge, 3> kLidarBridges{{
     {0x1a86, 0x55d4},  // WCH CH9102
 }};
 
-bool is_candidate_name(const std::string& name) {
-  const auto numbered = [&name](const std::string& prefix) {
-    return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
-           std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
-                       [](char c) { return c >= '0' && c <= '9'; });
-  };
-  return numbered("ttyUSB") || numbered("ttyACM");
+bool numbered(const std::string& name, const std::string& prefix) {
+  return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+         std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                     [](char c) { return c >= '0' && c <= '9'; });
+}
+
+bool is_usb_serial_name(const std::string& name) { return numbered(name, "ttyUSB") || numbered(name, "ttyACM"); }
+
+// Single-board computers wire lidars to their own UARTs: a Raspberry Pi's PL011 (ttyAMA), a
+// Jetson's (ttyTHS), and 8250-style ports (ttyS) on many others.
+bool is_on_board_uart_name(const std::string& name) {
+  return numbered(name, "ttyAMA") || numbered(name, "ttyTHS") || numbered(name, "ttyS");
 }
 
 std::string read_attribute(const fs::path& file) {
@@ -72,6 +77,7 @@ std::string SerialPortInfo::usb_id() const {
 }
 
 std::string SerialPortInfo::description() const {
+  if (on_board_uart && manufacturer.empty() && product.empty()) return "on-board UART";
   std::string text = manufacturer;
   if (!product.empty()) text += (text.empty() ? "" : " ") + product;
   const std::string id = usb_id();
@@ -110,10 +116,12 @@ std::vector<SerialPortInfo> PortDiscovery::list() const {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dev_root_, ec)) {
     const std::string name = entry.path().filename().string();
-    if (!is_candidate_name(name)) continue;
+    const bool uart = is_on_board_uart_name(name);
+    if (!is_usb_serial_name(name) && !(uart && has_real_uart(name))) continue;
     SerialPortInfo& port = by_name[name];
     port.name = name;
     port.path = entry.path().string();
+    port.on_board_uart = uart;
   }
   const fs::path by_id_dir = fs::path(dev_root_) / "serial" / "by-id";
   std::vector<fs::path> links;
@@ -141,9 +149,10 @@ std::vector<SerialPortInfo> PortDiscovery::list() const {
     const fs::path target = fs::canonical(alias, resolve_error);
     if (resolve_error) continue;
     const std::string name = target.filename().string();
-    if (!is_candidate_name(name)) continue;
+    if (!is_usb_serial_name(name) && !(is_on_board_uart_name(name) && has_real_uart(name))) continue;
     SerialPortInfo& port = by_name[name];
     port.name = name;
+    port.on_board_uart = is_on_board_uart_name(name);
     if (port.path.empty()) port.path = (fs::path(dev_root_) / name).string();
     if (port.alias.empty()) port.alias = alias.string();
   }
@@ -154,14 +163,25 @@ std::vector<SerialPortInfo> PortDiscovery::list() const {
   }
   std::sort(ports.begin(), ports.end(), [](const SerialPortInfo& a, const SerialPortInfo& b) {
     if (a.known_lidar_bridge != b.known_lidar_bridge) return a.known_lidar_bridge;
+    if (a.on_board_uart != b.on_board_uart) return b.on_board_uart;
     return natural_key(a.name) < natural_key(b.name);
   });
   return ports;
 }
 
 std::optional<SerialPortInfo> first_lidar_candidate(const std::vector<SerialPortInfo>& ports) {
-  if (ports.empty()) return std::nullopt;
-  return ports.front();
+  // Not an on-board UART: many PCs have a real ttyS0, and probing it would only delay the demo.
+  for (const SerialPortInfo& port : ports)
+    if (!port.on_board_uart) return port;
+  return std::nullopt;
+}
+
+bool PortDiscovery::has_real_uart(const std::string& name) const {
+  // ttyAMA and ttyTHS nodes exist only for hardware that is there. The 8250 driver makes ttyS0-3
+  // whether or not a UART answers; sysfs's `type` is 0 (PORT_UNKNOWN) for those placeholders.
+  if (!numbered(name, "ttyS")) return true;
+  const std::string type = read_attribute(fs::path(sys_root_) / "class" / "tty" / name / "type");
+  return !type.empty() && type != "0";
 }
 
 }  // namespace ydscope

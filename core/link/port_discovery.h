@@ -1,6 +1,8 @@
 #pragma once
 // Lists the serial ports a lidar may be on: /dev/serial/by-id/* (stable names), /dev/ydlidar-*
-// (made by assets/70-ydlidar.rules; /dev/ydlidar by older versions of it), /dev/ttyUSB*, /dev/ttyACM*, with the USB identity sysfs knows (vendor/product id, manufacturer, product,
+// (made by assets/70-ydlidar.rules; /dev/ydlidar by older versions of it), /dev/ttyUSB*, /dev/ttyACM*,
+// and single-board computers' on-board UARTs (ttyAMA*, ttyTHS*, ttyS* with a UART behind it), with
+// the USB identity sysfs knows (vendor/product id, manufacturer, product,
 // serial, driver). The roots are parameters so tests can point it at a fake /dev and /sys.
 #include <cstdint>
 #include <optional>
@@ -21,6 +23,7 @@ struct SerialPortInfo {
   std::string serial;
   std::string driver;                // kernel driver: cp210x, ch341, cdc_acm, ...
   bool known_lidar_bridge = false;   // a USB-serial chip YDLIDAR adapter boards use
+  bool on_board_uart = false;        // ttyAMA*, ttyTHS*, or a ttyS* with a UART behind it
 
   // The name to open: the by-id name survives re-plugging into another USB socket and, unlike
   // /dev/ydlidar, tells two lidars apart.
@@ -44,13 +47,14 @@ class PortDiscovery {
 
  private:
   void fill_from_sysfs(SerialPortInfo& port) const;
+  bool has_real_uart(const std::string& name) const;
 
   std::string dev_root_;
   std::string sys_root_;
 };
 
-// The port to try when none was given: the first of list() (known bridges come first), or
-// empty when there is no serial port at all.
+// The port to try when none was given: the first of list() (known bridges come first) that is
+// not an on-board UART (those are listed, but only --port opens them), or empty.
 std::optional<SerialPortInfo> first_lidar_candidate(const std::vector<SerialPortInfo>& ports);
 
 }  // namespace ydscope

@@ -148,6 +148,28 @@ TEST_F(FakeSystem, PerBridgeUdevNamesJoinTheirPorts) {
   EXPECT_EQ(ports[1].preferred_path(), (dev() / "ydlidar-0001").string());
 }
 
+TEST_F(FakeSystem, OnBoardUartsComeLastAndAreNeverTheAutomaticChoice) {
+  // A Pi's PL011, a Jetson's UART, an 8250 port with a 16550A behind it (type 4), and the three
+  // placeholders the 8250 driver makes anyway (type 0, or no sysfs entry at all).
+  for (const char* name : {"ttyAMA0", "ttyTHS1", "ttyS0", "ttyS1", "ttyS2", "ttyS3", "ttyUSB0"}) node(name);
+  attribute(sys() / "class" / "tty" / "ttyS0" / "type", "4");
+  attribute(sys() / "class" / "tty" / "ttyS1" / "type", "0");
+  attribute(sys() / "class" / "tty" / "ttyS2" / "type", "");
+  const auto ports = PortDiscovery(dev().string(), sys().string()).list();
+  ASSERT_EQ(ports.size(), 4u);
+  EXPECT_EQ(ports[0].name, "ttyUSB0");
+  EXPECT_FALSE(ports[0].on_board_uart);
+  EXPECT_EQ(ports[1].name, "ttyAMA0");
+  EXPECT_EQ(ports[2].name, "ttyS0");
+  EXPECT_EQ(ports[3].name, "ttyTHS1");
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_TRUE(ports[i].on_board_uart) << ports[i].name;
+    EXPECT_EQ(ports[i].description(), "on-board UART") << ports[i].name;
+  }
+  EXPECT_EQ(first_lidar_candidate(ports)->name, "ttyUSB0");
+  EXPECT_FALSE(first_lidar_candidate({ports[1], ports[2]})) << "only --port opens an on-board UART";
+}
+
 TEST_F(FakeSystem, NoPortsAndMissingFoldersAreJustEmpty) {
   EXPECT_TRUE(PortDiscovery(dev().string(), sys().string()).list().empty());
   EXPECT_TRUE(PortDiscovery((root_ / "nope").string(), (root_ / "nosys").string()).list().empty());
@@ -182,7 +204,7 @@ TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
   EXPECT_EQ(json, "[\n  {\"path\":\"" + (dev() / "ttyUSB0").string() +
                       "\",\"by_id\":null,\"alias\":null,\"name\":\"ttyUSB0\",\"vendor_id\":\"10c4\",\"product_id\":\"ea60\","
                       "\"manufacturer\":\"Silicon Labs\",\"product\":\"CP2102 \\\"Bridge\\\"\",\"serial\":\"0001\","
-                      "\"driver\":\"cp210x\",\"known_lidar_bridge\":true}\n]\n");
+                      "\"driver\":\"cp210x\",\"known_lidar_bridge\":true,\"on_board_uart\":false}\n]\n");
 
   EXPECT_EQ(run_cli("ports --format json --dev-root " + (root_ / "none").string()).first, "[]\n");
   EXPECT_EQ(run_cli("ports --format xml").second, 2);
