@@ -40,6 +40,7 @@ void SessionIo::attach(std::unique_ptr<ByteLink> link) {
   device_scanning_ = false;
   write_count_ = 0;
   writing_ = false;
+  received_any_ = false;
   start_read();
 }
 
@@ -78,7 +79,12 @@ void SessionIo::on_read(std::uint64_t generation, const boost::system::error_cod
   if (generation != generation_) return;  // a closed link's last word
   if (ec) {
     const std::string what = link_ ? link_->describe() : std::string("the port");
-    if (ec == asio::error::eof)
+    const bool closed = ec == asio::error::eof || ec == asio::error::connection_reset;
+    if (closed && !received_any_)  // closed at once: turned away, not unplugged
+      raise_fault("the link to " + what + " closed before it sent a byte: another program may be connected "
+                  "to it already (a virtual lidar or a ser2net port serves one host at a time); close that one "
+                  "and try again");
+    else if (ec == asio::error::eof)
       raise_fault("the link to " + what + " closed (device unplugged or bridge gone)");
     else
       raise_fault("reading " + what + " failed: " + ec.message() + " (device unplugged?)");
@@ -87,6 +93,7 @@ void SessionIo::on_read(std::uint64_t generation, const boost::system::error_cod
   const std::int64_t now = link_clock_ns();
   counters_.add_received(n, now);
   last_rx_ns_ = now;
+  received_any_ = true;
   const std::span<const std::uint8_t> bytes(buffer_.data(), n);
   if (on_wire_) on_wire_(false, bytes, now);
   route(bytes, now);

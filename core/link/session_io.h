@@ -138,6 +138,7 @@ class SessionIo {
   std::array<std::array<std::uint8_t, 2>, kWriteSlots> writes_{};
   std::size_t write_head_ = 0;
   std::size_t write_count_ = 0;
+  bool received_any_ = false;  // a link that closes before its first byte turned us away
   bool writing_ = false;
 
   // One timer for whichever coroutine step waits (the session runs one step at a time).

@@ -212,6 +212,27 @@ TEST(CliSim, AMotorOffItsSetRateShowsInG1sOwnRateReport) {
   EXPECT_EQ(laps.find(R"("scan_hz":9,)"), std::string::npos);
 }
 
+TEST(CliSim, ASecondHostIsTurnedAwayAndToldWhy) {
+  Child child({"sim", "--model", "G6", "--tcp", "127.0.0.1:0"});
+  const std::string line = child.read_line(10s);
+  ASSERT_EQ(line.rfind("ready tcp://", 0), 0u) << line;
+  test::HostPort first;  // the host that holds the virtual lidar
+  ASSERT_TRUE(first.connect_tcp(static_cast<std::uint16_t>(std::stoi(line.substr(line.rfind(':') + 1)))));
+  ASSERT_TRUE(first.send({0xA5, 0x90}));
+  ASSERT_EQ(first.read(27, 3s).size(), 27u) << "the first host is served";
+  const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' info --port " + line.substr(6) + " 2>&1";
+  std::FILE* info = ::popen(command.c_str(), "r");
+  ASSERT_NE(info, nullptr);
+  std::string said;
+  char buffer[1024];
+  while (std::fgets(buffer, sizeof buffer, info)) said += buffer;
+  const int status = ::pclose(info);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << said;
+  EXPECT_NE(said.find("closed before it sent a byte: another program may be connected to it already"),
+            std::string::npos)
+      << said;
+}
+
 TEST(CliSim, MotorFaultsOutsideTheirSpanAreUsageErrors) {
   for (const std::vector<std::string>& args : {std::vector<std::string>{"--scan-offset-hz", "6"},
                                                std::vector<std::string>{"--scan-wobble-hz", "-1"}}) {
