@@ -18,6 +18,7 @@
 
 #include "app/gui/app.h"
 #include "app/gui/app_options.h"
+#include "app/gui/sanitizer_pins.h"
 #include "app/gui/screenshot.h"
 #include "core/version.h"
 #include "ui/render/theme.h"
@@ -149,6 +150,7 @@ int run(const ydscope::gui::AppOptions& options) {
       }
     }
   }
+  ydscope::pin_loaded_libraries_for_leak_reports();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
