@@ -136,12 +136,6 @@ std::string read_text(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
   SimOnPty sim(Model::G6);
   const auto report = std::filesystem::path(::testing::TempDir()) / ("check-report-" + std::to_string(getpid()) + ".html");
@@ -154,7 +148,7 @@ TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
   EXPECT_NE(html.find(R"(<span class="verdict fail" id="verdict">FAIL</span>)"), std::string::npos);
   for (const char* id : {"identity", "health", "scan_rate", "scan_jitter", "sample_rate", "link", "valid_returns",
                          "sector_valid", "range_bias", "range_noise"})
-    EXPECT_EQ(occurrences(html, std::string("<tr data-id=\"") + id + "\">"), 1u) << id;
+    EXPECT_EQ(count(html, std::string("<tr data-id=\"") + id + "\">"), 1u) << id;
   // Each row says what the JSON verdict says (a loaded host may fail more than the bias).
   const std::string failed = "," + failed_ids(run.out) + ",";
   EXPECT_NE(failed.find(",range_bias,"), std::string::npos) << run.out;
@@ -164,7 +158,7 @@ TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
               std::string::npos)
         << id;
   }
-  EXPECT_EQ(occurrences(html, "<svg "), 4u) << "scan rate, sector histogram, valid share by angle, polar snapshot";
+  EXPECT_EQ(count(html, "<svg "), 4u) << "scan rate, sector histogram, valid share by angle, polar snapshot";
   EXPECT_NE(html.find("<title>Scan rate of each lap over the run</title>"), std::string::npos);
   EXPECT_NE(html.find("<title>Histogram of the sector&#39;s ranges</title>"), std::string::npos);
   EXPECT_NE(html.find("<title>The last lap from above</title>"), std::string::npos);

@@ -47,4 +47,11 @@ inline CliResult run_cli(const std::string& arguments) {
   return run_shell(std::string("'") + YDSCOPE_CLI_PATH + "' " + arguments + " 2>&1");
 }
 
+// How many times `what` occurs in `text` (overlaps counted): lines of a program's output, say.
+inline std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 }  // namespace ydscope::test

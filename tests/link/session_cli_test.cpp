@@ -12,12 +12,6 @@ namespace {
 
 using namespace test;
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 TEST(SessionCli, InfoPrintsOneJsonObjectWithTheDeviceDetails) {
   SimOnPty sim(Model::TG50);
   const CliResult run = run_cli("info --port " + sim.port());
