@@ -123,11 +123,12 @@ std::size_t lap_lines(const std::string& text) { return printed_laps(text).size(
 TEST_P(FaultMatrix, EndsWithItsSentenceAndDeliversEveryUntouchedLap) {
   const FaultCase& fault = GetParam().fault;
   const bool scan = GetParam().command == Command::Scan;
+  // Declared before the sim so it outlives the sim's thread, which calls it until the sim stops.
+  TruthRecorder truth;
   SimOnPty sim(fault.model, [&](SimServerOptions& o) {
     o.device.seed = 7;
     fault.inject(o);
   });
-  TruthRecorder truth;
   sim.server().with_device([&](VirtualLidar& d) { d.set_truth([&](const TruthPacket& p) { truth.add(p); }); });
 
   const bool event = fault.event != LinkEvent::None;
