@@ -202,7 +202,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   o.link.checksum_errors = after.counters.checksum_errors - before.counters.checksum_errors;
   o.link.resync_bytes = after.counters.resync_bytes - before.counters.resync_bytes;
   o.link.crc8_failures = after.counters.crc8_failures - before.counters.crc8_failures;
-  o.link.queue_drops = after.counters.queue_drops - before.counters.queue_drops;
+  o.link.queue_drops = after.queue_dropped - before.queue_dropped;
   o.link.lost_samples = o.timing.lost_samples;
   if (profile.ct_carries_info) o.health.push_back(ct_health.observation());
   if (sector) o.sector = record.sector = sector->statistics();

@@ -24,12 +24,9 @@ constexpr std::int64_t kKeepalivePeriodNs = 1'000'000'000;  // the manuals allow
 
 // ---- Session: thin forwarding ---------------------------------------------------------------
 
-Session::Session(LapQueue& queue, WakeFn wake) : queue_(&queue), impl_(std::make_unique<Impl>(queue, std::move(wake))) {}
-
-Session::Session(std::size_t queue_capacity, WakeFn wake)
-    : owned_queue_(std::make_unique<LapQueue>(queue_capacity)),
-      queue_(owned_queue_.get()),
-      impl_(std::make_unique<Impl>(*owned_queue_, std::move(wake))) {}
+Session::Session(std::size_t queue_capacity, WakeFn wake, std::string consumer)
+    : laps_(stream_.subscribe(std::move(consumer), queue_capacity, std::move(wake))),
+      impl_(std::make_unique<Impl>(stream_, *laps_)) {}
 
 Session::~Session() = default;
 
@@ -72,9 +69,9 @@ std::string describe_snapshot(const SessionSnapshot& s) {
 
 // ---- Impl: thread and lifetime --------------------------------------------------------------
 
-Session::Impl::Impl(LapQueue& queue, WakeFn wake)
-    : queue_(queue),
-      wake_(std::move(wake)),
+Session::Impl::Impl(LapStream& stream, const LapSubscription& main_consumer)
+    : stream_(stream),
+      main_consumer_(main_consumer),
       work_(io_.get_executor()),
       link_(io_, counters_),
       sequencer_(link_),
@@ -284,8 +281,9 @@ SessionSnapshot Session::Impl::snapshot() const {
     s = shared_;
   }
   s.counters = counters_.read(link_clock_ns());
-  s.queue_dropped = queue_.dropped_full();
-  s.queue_skipped = queue_.skipped();
+  s.queue_dropped = main_consumer_.dropped_full();
+  s.queue_skipped = main_consumer_.skipped();
+  s.consumers = stream_.stats();
   return s;
 }
 
@@ -312,10 +310,7 @@ void Session::Impl::new_decoder() {
 
 LapEndOutlook Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns) {
   if (!decoder_) return {};
-  decoder_->feed(bytes, rx_ns, [this](const Lap& lap) {
-    if (!queue_.try_push(lap)) counters_.add_queue_drop();
-    if (wake_) wake_();
-  });
+  decoder_->feed(bytes, rx_ns, [this](const Lap& lap) { stream_.publish(lap); });
   const DecoderCounters c = decoder_->counters();
   counters_.set_decoder_totals(
       {c.packets, c.zero_packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches, c.overflow_points});

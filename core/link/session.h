@@ -1,31 +1,33 @@
 #pragma once
-// Session: everything between a lidar port and the lap queue, on ONE I/O thread it owns.
+// Session: everything between a lidar port and its lap stream, on ONE I/O thread it owns.
 //
 // The I/O thread runs a boost::asio::io_context: it reads into a fixed buffer, feeds the
-// ScanDecoder, pushes each complete lap into the LapQueue, calls the wake callback, keeps counters,
+// ScanDecoder, publishes each complete lap once to the LapStream (every consumer has a ring of its
+// own and is woken after each lap it gets), keeps counters,
 // records every byte in both directions when asked, and runs commands as the manuals require
 // (stop, drain, command, reply with a timeout and a bounded retry, resume the scan). Faults
 // (unplugged port, stalled stream, wrong baud, silent device) become a LinkState and a sentence;
 // the session reconnects by itself with backoff. No exception leaves the I/O thread.
 //
 // Thread contract: every public method may be called from any thread (intents are posted to the
-// io_context). Completion callbacks and the wake callback run on the I/O thread: keep them short.
-// The LapQueue has exactly one consumer: the thread that drains it (UI or CLI).
+// io_context). Completion callbacks and wake callbacks run on the I/O thread: keep them short.
+// Each subscription has exactly one consumer thread: laps() is the creator's (UI or CLI); a file
+// writer, a bridge or a report subscribes to lap_stream() for its own.
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <boost/asio/io_context.hpp>
 
 #include "core/link/byte_link.h"
-#include "core/link/link_state.h"
-#include "core/link/session_counters.h"
+#include "core/link/session_snapshot.h"
 #include "core/protocol/lap.h"
-#include "core/protocol/lap_queue.h"
 #include "core/protocol/model_profile.h"
+#include "core/stream/lap_stream.h"
 
 namespace ydscope {
 
@@ -55,67 +57,20 @@ struct SessionConfig {
   LinkOpener open_link;               // empty: open `address` as a serial port or tcp:// bridge
 };
 
-struct DeviceDetails {
-  const ModelProfile* profile = nullptr;  // the model in use (detected or configured)
-  std::uint8_t model_code = 0;            // as the device reported it
-  FirmwareVersion firmware;
-  std::uint8_t hardware = 0;
-  std::string serial;                     // 16 serial bytes rendered as text
-};
-
-struct HealthReport {
-  Command command = Command::HealthStatusCode;  // the command that answered (A5 91 or A5 92)
-  std::uint8_t status = 0;       // G1: module bits; G6/TG: 0 ok, 1 warning, 2 error
-  std::uint16_t error_code = 0;
-  std::string summary;           // "ok", "error (code 0x0012)", "sensor, encoder abnormal"
-};
-
-// The outcome of one intent, also kept as SessionSnapshot::last_result.
-struct CommandResult {
-  bool ok = false;
-  std::string what;     // "set scan frequency to 10.0 Hz"
-  std::string message;  // read-back on success, one actionable sentence on failure
-  std::optional<double> scan_hz;
-  std::optional<std::uint16_t> ranging_khz;
-  std::optional<bool> power_down_protection;
-  std::optional<HealthReport> health;
-};
-using CommandCallback = std::function<void(const CommandResult&)>;
-
-struct SessionSnapshot {
-  LinkState state = LinkState::Idle;
-  std::string message;        // what is happening or what went wrong, in words
-  std::string link;           // the link's describe(): "/dev/ttyUSB0 at 512000 baud"
-  std::uint32_t baud = 0;
-  std::optional<DeviceDetails> device;
-  std::optional<HealthReport> health;
-  std::optional<double> scan_hz;             // set value (A5 0D), not the measured rate
-  std::optional<std::uint16_t> ranging_khz;  // A5 D1
-  std::optional<bool> power_down_protection; // known after toggling it
-  double distance_scale = 0;                 // mm per count in use
-  bool busy = false;                         // a command is running
-  std::string busy_what;
-  std::optional<CommandResult> last_result;
-  bool recording = false;
-  std::string recording_path;
-  CounterSnapshot counters;
-  std::uint64_t queue_dropped = 0;  // LapQueue::dropped_full
-  std::uint64_t queue_skipped = 0;  // LapQueue::skipped
-};
-
 class Session {
  public:
   using WakeFn = std::function<void()>;
 
-  // Pushes laps into `queue` (which must outlive the session); calls `wake` after every push.
-  Session(LapQueue& queue, WakeFn wake = {});
-  // Owns a queue of `queue_capacity` laps, reachable through laps().
-  explicit Session(std::size_t queue_capacity = 16, WakeFn wake = {});
+  // Subscribes its creator to the lap stream as `consumer` with a ring of `queue_capacity` laps,
+  // reachable through laps(); `wake` runs after every lap put in that ring.
+  explicit Session(std::size_t queue_capacity = 16, WakeFn wake = {}, std::string consumer = "main");
   ~Session();  // disconnects and joins the I/O thread
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
-  LapQueue& laps() { return *queue_; }
+  LapSubscription& laps() { return *laps_; }
+  // Further consumers subscribe here, from any thread, while laps flow (see LapStream).
+  LapStream& lap_stream() { return stream_; }
 
   // Intents, posted to the I/O thread. connect replaces any current connection.
   void connect(SessionConfig config);
@@ -143,8 +98,9 @@ class Session {
   class Impl;
 
  private:
-  std::unique_ptr<LapQueue> owned_queue_;
-  LapQueue* queue_;
+  // In this order: the I/O thread (impl_) stops before the stream and the rings go.
+  LapStream stream_;
+  std::unique_ptr<LapSubscription> laps_;
   std::unique_ptr<Impl> impl_;
 };
 

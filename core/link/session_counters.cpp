@@ -25,7 +25,7 @@ void SessionCounters::close_decoder_epoch() {
 }
 
 void SessionCounters::reset() {
-  for (auto* counter : {&bytes_received_, &reads_, &bytes_sent_, &drained_bytes_, &reconnects_, &refused_commands_, &queue_drops_,
+  for (auto* counter : {&bytes_received_, &reads_, &bytes_sent_, &drained_bytes_, &reconnects_, &refused_commands_,
                         &packets_, &zero_packets_, &laps_, &checksum_errors_, &resync_bytes_, &crc8_failures_, &cut_points_}) {
     counter->store(0, std::memory_order_relaxed);
   }
@@ -65,7 +65,6 @@ CounterSnapshot SessionCounters::read(std::int64_t now_ns) const {
   s.resync_bytes = resync_bytes_.load(std::memory_order_relaxed);
   s.crc8_failures = crc8_failures_.load(std::memory_order_relaxed);
   s.cut_points = cut_points_.load(std::memory_order_relaxed);
-  s.queue_drops = queue_drops_.load(std::memory_order_relaxed);
   s.drained_bytes = drained_bytes_.load(std::memory_order_relaxed);
   s.reconnects = reconnects_.load(std::memory_order_relaxed);
   s.refused_commands = refused_commands_.load(std::memory_order_relaxed);

@@ -19,7 +19,6 @@ struct CounterSnapshot {
   std::uint64_t resync_bytes = 0;     // bytes skipped while hunting a packet header
   std::uint64_t crc8_failures = 0;    // G1 laps whose LastCRC disagreed
   std::uint64_t cut_points = 0;       // points cut from laps longer than Lap::kMaxPoints
-  std::uint64_t queue_drops = 0;      // laps dropped because the consumer was behind
   std::uint64_t drained_bytes = 0;    // bytes discarded while draining before a command
   std::uint64_t reconnects = 0;       // links reopened after a fault
   std::uint64_t refused_commands = 0; // commands the session refused to send while scanning (bugs)
@@ -41,7 +40,6 @@ class SessionCounters {
   void add_drained(std::uint64_t n) { bump(drained_bytes_, n); }
   void add_reconnect() { bump(reconnects_, 1); }
   void add_refused() { bump(refused_commands_, 1); }
-  void add_queue_drop() { bump(queue_drops_, 1); }
   // The decoder's totals for the current link are added to what earlier links decoded.
   struct DecoderTotals {
     std::uint64_t packets = 0, zero_packets = 0, laps = 0, checksum_errors = 0, resync_bytes = 0, crc8_failures = 0,
@@ -66,7 +64,7 @@ class SessionCounters {
   }
 
   std::atomic<std::uint64_t> bytes_received_{0}, reads_{0}, bytes_sent_{0}, drained_bytes_{0}, reconnects_{0},
-      refused_commands_{0}, queue_drops_{0};
+      refused_commands_{0};
   std::atomic<std::uint64_t> packets_{0}, zero_packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0}, crc8_failures_{0},
       cut_points_{0};
   std::atomic<std::int64_t> last_byte_ns_{0};

@@ -27,7 +27,7 @@ namespace ydscope {
 
 class Session::Impl {
  public:
-  Impl(LapQueue& queue, WakeFn wake);
+  Impl(LapStream& stream, const LapSubscription& main_consumer);
   ~Impl();
 
   // ---- any thread -------------------------------------------------------------------------
@@ -76,8 +76,8 @@ class Session::Impl {
   void update_wire_hook();
   RecordingMetadata capture_start_metadata() const;
 
-  LapQueue& queue_;
-  WakeFn wake_;
+  LapStream& stream_;
+  const LapSubscription& main_consumer_;  // Session::laps(), whose counts the snapshot names
   boost::asio::io_context io_;
   boost::asio::executor_work_guard<boost::asio::io_context::executor_type> work_;
   SessionCounters counters_;

@@ -1,6 +1,6 @@
 #pragma once
 // One full revolution of the lidar: from a zero packet (inclusive) to the next (exclusive).
-// Laps live preallocated in the LapQueue, so the point storage keeps its capacity between uses.
+// Laps live preallocated in each consumer's LapRing (core/stream), so the point storage keeps its capacity between uses.
 #include <cstdint>
 #include <optional>
 #include <vector>

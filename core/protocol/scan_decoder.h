@@ -37,7 +37,7 @@ class ScanDecoder {
   explicit ScanDecoder(const ModelProfile& profile, std::optional<double> distance_scale = std::nullopt);
 
   // Consumes all of `bytes` received at rx_ns; calls on_lap for every lap completed. The Lap is
-  // valid only during the call (copy it, e.g. into a LapQueue).
+  // valid only during the call (copy it, e.g. into a LapStream).
   void feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, LapCallback on_lap);
 
   // End of stream (file decoding): lets packets hidden behind an incomplete false start out.

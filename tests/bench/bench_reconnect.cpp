@@ -106,19 +106,18 @@ int main(int argc, char** argv) {
   std::atomic<std::uint64_t> pushed{0};
   std::atomic<bool> have_thread{false};
   pthread_t io_thread{};
-  LapQueue queue(64);
-  Session session(queue, [&] {
+  Session session(64, [&] {
     if (!have_thread.load(std::memory_order_relaxed)) {
       io_thread = pthread_self();
       have_thread.store(true, std::memory_order_release);
     }
     pushed.fetch_add(1, std::memory_order_release);
   });
-  std::atomic<bool> consuming{true};
-  std::thread consumer([&] {
+  // Stops and joins when it goes out of scope, before the session it reads (declared earlier).
+  std::jthread consumer([&](std::stop_token stop) {
     Lap lap;
-    while (consuming.load()) {
-      while (queue.try_pop(lap)) {
+    while (!stop.stop_requested()) {
+      while (session.laps().try_pop(lap)) {
       }
       std::this_thread::sleep_for(10ms);
     }
@@ -171,7 +170,7 @@ int main(int argc, char** argv) {
               median(outage_cpu_percent), failures,
               static_cast<unsigned long long>(session.snapshot().counters.reconnects));
   session.disconnect();
-  consuming = false;
+  consumer.request_stop();
   consumer.join();
   kill(sim, SIGTERM);
   waitpid(sim, nullptr, 0);

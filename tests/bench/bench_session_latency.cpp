@@ -2,7 +2,7 @@
 // writing a real-time G6 stream (not a Google Benchmark: one timed run, numbers on stdout):
 //   - the I/O thread's CPU time over the run (its thread CPU clock, read from the main thread),
 //   - the latency from the write() that carried a closing zero packet's last byte (the virtual
-//     lidar stamps CLOCK_MONOTONIC right after it returns) to that lap being in the LapQueue
+//     lidar stamps CLOCK_MONOTONIC right after it returns) to that lap being in the session's lap ring
 //     (CLOCK_MONOTONIC in the session's wake callback, which runs right after the push),
 //   - optionally the peak RSS of `ydscope-cli scan` on the same kind of stream (--cli PATH).
 // Not run by ctest. Usage: bench_session_latency [--seconds S] [--model G6] [--cli PATH]
@@ -118,28 +118,14 @@ int main(int argc, char** argv) {
   std::atomic<std::size_t> queued{0};
   std::atomic<bool> have_thread{false};
   pthread_t io_thread{};
-  LapQueue queue(64);
-  std::atomic<bool> consuming{true};
-  // The consumer pops in push order (no drops: the queue never fills), so its i-th lap is the one
-  // whose push the wake callback stamped as queued_ns[i]; its last_rx_ns finds the zero packet.
   static std::int64_t closing_rx_ns[kMaxLaps];
   std::size_t popped = 0;
-  std::thread consumer([&] {
-    Lap lap;
-    while (consuming.load()) {
-      while (queue.try_pop(lap)) {
-        if (popped < kMaxLaps) closing_rx_ns[popped] = lap.last_rx_ns;
-        ++popped;
-      }
-      std::this_thread::sleep_for(5ms);
-    }
-  });
 
   double cpu_seconds = 0, wall_seconds = 0;
   std::uint64_t reads_in_window = 0;
   SessionSnapshot end;
   {
-    Session session(queue, [&] {
+    Session session(64, [&] {
       const std::int64_t now = link_clock_ns();
       const std::size_t n = queued.load(std::memory_order_relaxed);
       if (n < kMaxLaps) queued_ns[n] = now;
@@ -147,6 +133,19 @@ int main(int argc, char** argv) {
       if (!have_thread.load(std::memory_order_relaxed)) {
         io_thread = pthread_self();
         have_thread.store(true, std::memory_order_release);
+      }
+    });
+    // The consumer pops in push order (no drops: the ring never fills), so its i-th lap is the one
+    // whose push the wake callback stamped as queued_ns[i]; its last_rx_ns finds the zero packet.
+    // Stops and joins when it goes out of scope, before the session it reads (declared earlier).
+    std::jthread consumer([&](std::stop_token stop) {
+      Lap lap;
+      while (!stop.stop_requested()) {
+        while (session.laps().try_pop(lap)) {
+          if (popped < kMaxLaps) closing_rx_ns[popped] = lap.last_rx_ns;
+          ++popped;
+        }
+        std::this_thread::sleep_for(5ms);
       }
     });
     SessionConfig config;
@@ -170,9 +169,9 @@ int main(int argc, char** argv) {
     reads_in_window = session.snapshot().counters.reads - reads0;
     wall_seconds = static_cast<double>(wall1 - wall0) * 1e-9;
     end = session.snapshot();
+    consumer.request_stop();
+    consumer.join();
   }
-  consuming = false;
-  consumer.join();
 
   // Each lap is closed by the zero packet written nearest to the moment its closing byte was read
   // (laps are ~100 ms apart, the read follows the write by microseconds), whatever the indexes.
@@ -211,7 +210,7 @@ int main(int argc, char** argv) {
               latency_us.empty() ? 0.0 : *std::min_element(latency_us.begin(), latency_us.end()), "");
   std::printf("unmatched laps %zu, checksum errors %llu, queue drops %llu, reconnects %llu, state %s\n", unmatched,
               static_cast<unsigned long long>(end.counters.checksum_errors),
-              static_cast<unsigned long long>(end.counters.queue_drops),
+              static_cast<unsigned long long>(end.queue_dropped),
               static_cast<unsigned long long>(end.counters.reconnects), describe_snapshot(end).c_str());
   if (!args.cli.empty()) {
     const long rss = cli_scan_max_rss_kib(args.cli, port, std::string(profile->name), 100);

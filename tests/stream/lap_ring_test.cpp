@@ -1,4 +1,4 @@
-#include "core/protocol/lap_queue.h"
+#include "core/stream/lap_ring.h"
 
 #include <gtest/gtest.h>
 
@@ -23,8 +23,8 @@ bool lap_is_consistent(const Lap& lap) {
   return lap.points.size() == lap.index % 300 + 1;
 }
 
-TEST(LapQueue, PopsInOrderAndReportsEmpty) {
-  LapQueue queue(4);
+TEST(LapRing, PopsInOrderAndReportsEmpty) {
+  LapRing queue(4);
   Lap out;
   EXPECT_FALSE(queue.try_pop(out));
   ASSERT_TRUE(queue.try_push(make_lap(1, 3)));
@@ -37,8 +37,8 @@ TEST(LapQueue, PopsInOrderAndReportsEmpty) {
   EXPECT_FALSE(queue.try_pop(out));
 }
 
-TEST(LapQueue, FullQueueDropsTheNewestAndCountsIt) {
-  LapQueue queue(2);
+TEST(LapRing, FullQueueDropsTheNewestAndCountsIt) {
+  LapRing queue(2);
   EXPECT_TRUE(queue.try_push(make_lap(1, 1)));
   EXPECT_TRUE(queue.try_push(make_lap(2, 1)));
   EXPECT_FALSE(queue.try_push(make_lap(3, 1)));
@@ -49,8 +49,8 @@ TEST(LapQueue, FullQueueDropsTheNewestAndCountsIt) {
   EXPECT_TRUE(queue.try_push(make_lap(4, 1)));
 }
 
-TEST(LapQueue, DrainNewestKeepsTheLastAndCountsTheSkipped) {
-  LapQueue queue(8);
+TEST(LapRing, DrainNewestKeepsTheLastAndCountsTheSkipped) {
+  LapRing queue(8);
   for (std::uint64_t i = 1; i <= 5; ++i) ASSERT_TRUE(queue.try_push(make_lap(i, 2)));
   Lap out;
   EXPECT_EQ(queue.drain_newest(out), 5u);
@@ -60,8 +60,8 @@ TEST(LapQueue, DrainNewestKeepsTheLastAndCountsTheSkipped) {
   EXPECT_EQ(out.index, 5u);
 }
 
-TEST(LapQueue, SlotsKeepTheirCapacitySoPushingDoesNotAllocate) {
-  LapQueue queue(2);
+TEST(LapRing, SlotsKeepTheirCapacitySoPushingDoesNotAllocate) {
+  LapRing queue(2);
   Lap out;
   ASSERT_TRUE(queue.try_push(make_lap(1, 1000)));
   ASSERT_TRUE(queue.try_pop(out));
@@ -74,9 +74,9 @@ TEST(LapQueue, SlotsKeepTheirCapacitySoPushingDoesNotAllocate) {
 
 // Two threads hammer the queue; run under ThreadSanitizer in CI. Every lap the producer got in
 // must come out once, in order, intact; every lap it could not push must be counted as dropped.
-TEST(LapQueue, TwoThreadStressLosesNothingUncounted) {
+TEST(LapRing, TwoThreadStressLosesNothingUncounted) {
   constexpr std::uint64_t kLaps = 20000;
-  LapQueue queue(8);
+  LapRing queue(8);
   std::uint64_t pushed = 0;
   std::atomic<bool> done{false};
   std::thread producer([&] {

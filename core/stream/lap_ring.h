@@ -1,8 +1,10 @@
 #pragma once
-// LapQueue: a fixed-capacity single-producer single-consumer ring of preallocated laps.
+// LapRing: a fixed-capacity single-producer single-consumer ring of preallocated laps; each
+// consumer of a LapStream has one of its own.
 //
-// Contract: exactly one thread (the I/O thread) calls try_push; exactly one other thread (the UI
-// or CLI) calls try_pop / drain_newest. The counters may be read from any thread.
+// Contract: exactly one thread (the I/O thread, through LapStream) calls try_push; exactly one
+// other thread (the consumer) calls try_pop / drain_newest. The counters may be read from any
+// thread.
 // Slots are Laps created up front with their point capacity, and pushing copies into a slot, so
 // the steady state allocates nothing. When the ring is full the newest lap is dropped and counted:
 // the consumer is behind, and the laps already queued are older but were never shown.
@@ -16,11 +18,11 @@
 
 namespace ydscope {
 
-class LapQueue {
+class LapRing {
  public:
-  explicit LapQueue(std::size_t capacity = 8) : slots_(capacity + 1) {}  // one slot stays empty
-  LapQueue(const LapQueue&) = delete;
-  LapQueue& operator=(const LapQueue&) = delete;
+  explicit LapRing(std::size_t capacity = 8) : slots_(capacity + 1) {}  // one slot stays empty
+  LapRing(const LapRing&) = delete;
+  LapRing& operator=(const LapRing&) = delete;
 
   std::size_t capacity() const { return slots_.size() - 1; }
 
@@ -37,6 +39,7 @@ class LapQueue {
     }
     slots_[head] = lap;  // copy-assign keeps the slot's point capacity
     head_.store(next, std::memory_order_release);
+    pushed_.fetch_add(1, std::memory_order_relaxed);
     return true;
   }
 
@@ -73,6 +76,7 @@ class LapQueue {
 
   std::uint64_t dropped_full() const { return dropped_full_.load(std::memory_order_relaxed); }
   std::uint64_t skipped() const { return skipped_.load(std::memory_order_relaxed); }
+  std::uint64_t pushed() const { return pushed_.load(std::memory_order_relaxed); }
 
  private:
   static constexpr std::size_t kCacheLine = 64;
@@ -86,8 +90,9 @@ class LapQueue {
   std::size_t tail_cache_ = 0;
   alignas(kCacheLine) std::atomic<std::size_t> tail_{0};
   std::size_t head_cache_ = 0;
-  alignas(kCacheLine) std::atomic<std::uint64_t> dropped_full_{0};
-  std::atomic<std::uint64_t> skipped_{0};
+  alignas(kCacheLine) std::atomic<std::uint64_t> dropped_full_{0};  // the producer's counters
+  std::atomic<std::uint64_t> pushed_{0};
+  alignas(kCacheLine) std::atomic<std::uint64_t> skipped_{0};  // the consumer's
 };
 
 }  // namespace ydscope
