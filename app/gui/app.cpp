@@ -36,7 +36,8 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
     : window_(window),
       options_(options),
       persist_(persist_settings),
-      session_(16, [] { glfwPostEmptyEvent(); }),
+      session_(16, [] { glfwPostEmptyEvent(); }, "view"),
+      measured_laps_(session_.lap_stream().subscribe("statistics", 32)),
       source_(session_),
       view_(std::make_unique<ui::PolarView>()),
       start_(std::chrono::steady_clock::now()),
@@ -129,6 +130,8 @@ std::string App::start(const ui::ConnectRequest& request) {
 }
 
 void App::drain_laps() {
+  while (measured_laps_->try_pop(measured_lap_))
+    if (!model_.paused_view) measure_lap(measured_lap_);
   const std::size_t drained = session_.laps().drain_newest(lap_);
   model_.laps_skipped = session_.laps().skipped();
   if (drained > 0) last_lap_at_ = std::chrono::steady_clock::now();
@@ -136,19 +139,22 @@ void App::drain_laps() {
   history_.push(lap_);
   view_->invalidate();
   ++model_.laps_shown;
-  model_.scan_rate.add_lap_end(lap_.index, lap_.last_rx_ns);
   model_.points_in_lap = lap_.points.size();
-  model_.plots.add_lap({model_.scan_rate.hz(), model_.snap.scan_hz, lap_.points.size()});
-  for (ui::SectorWatch& sector : model_.sectors) sector.add_lap(lap_);
   pending_latency_rx_ns_ = lap_.last_rx_ns;
-  if (lap_.health_bits) {
-    model_.ct_health = lap_.health_bits;
-    model_.ct_health_trusted = lap_.ct_info_trusted();
-    if (lap_.ct_info_trusted()) {
-      model_.timeline.observe("CT health", *lap_.health_bits, model_.now_s, ui::describe_health_bits(Model::G1, *lap_.health_bits));
+}
+
+void App::measure_lap(const Lap& lap) {
+  model_.scan_rate.add_lap_end(lap.index, lap.last_rx_ns);
+  model_.plots.add_lap({model_.scan_rate.hz(), model_.snap.scan_hz, lap.points.size()});
+  for (ui::SectorWatch& sector : model_.sectors) sector.add_lap(lap);
+  if (lap.health_bits) {
+    model_.ct_health = lap.health_bits;
+    model_.ct_health_trusted = lap.ct_info_trusted();
+    if (lap.ct_info_trusted()) {
+      model_.timeline.observe("CT health", *lap.health_bits, model_.now_s, ui::describe_health_bits(Model::G1, *lap.health_bits));
     }
   }
-  if (lap_.crc == CrcVerdict::Mismatch) ++model_.crc_mismatch_laps;
+  if (lap.crc == CrcVerdict::Mismatch) ++model_.crc_mismatch_laps;
 }
 
 void App::start_clean() {
@@ -182,6 +188,8 @@ void App::start_clean() {
   pending_latency_rx_ns_ = 0;
   history_.clear();
   lap_ = {};
+  while (measured_laps_->try_pop(measured_lap_)) {
+  }  // the old source's laps measure nothing of the new one
   view_->invalidate();
 }
 
@@ -190,10 +198,10 @@ void App::handle_keys() {
   if (io.WantTextInput) return;
   if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggle_fullscreen();
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false)) settings_.show_panels = !settings_.show_panels;
-  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model_.reset_view_request = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model_.requests.push_back(ui::ResetView{});
   if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) settings_.auto_range = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) model_.paused_view = !model_.paused_view;
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) model_.screenshot_request = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) model_.requests.push_back(ui::SaveScreenshot{});
   if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) && io.KeyCtrl) quit_ = true;
 }
 
@@ -234,13 +242,14 @@ void App::frame() {
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
   const float fb_scale = win_w > 0 ? static_cast<float>(fb_w) / static_cast<float>(win_w) : 1.0f;
 
-  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_, session_) : 0.0f;
+  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
   view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
   view_->handle_input(settings_);
-  if (model_.reset_view_request) {
-    view_->reset(settings_);
-    model_.reset_view_request = false;
+  if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
+    char spec[48];
+    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
+    model_.requests.push_back(ui::WatchSector{spec});
   }
   view_->auto_range(history_, settings_);
   model_.cloud = view_->update_cloud(history_, settings_);
@@ -266,74 +275,6 @@ void App::after_present() {
     model_.latency_ms.add(latency_ms);
     model_.plots.add_latency_ms(latency_ms);
     pending_latency_rx_ns_ = 0;
-  }
-}
-
-void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
-  ui::UiModel& m = model_;
-  if (m.screenshot_request) {
-    m.screenshot_request = false;
-    const std::string path = timestamped_name("png");
-    const std::string error = save_framebuffer_png(path, framebuffer_width, framebuffer_height);
-    m.status_message = error.empty() ? "saved " + path : error;
-  }
-  if (m.csv_request) {
-    m.csv_request = false;
-    if (history_.empty()) {
-      m.status_message = "no lap to export yet.";
-    } else {
-      const std::string path = timestamped_name("csv");
-      const std::string error = export_lap_csv(path, lap_);
-      m.status_message = error.empty() ? "exported lap " + std::to_string(lap_.index) + " to " + path : error;
-    }
-  }
-  carry_out_sector_requests();
-  if (m.refresh_ports_request) {
-    m.refresh_ports_request = false;
-    m.ports = discover_ports();
-  }
-  if (m.disconnect_request) {
-    m.disconnect_request = false;
-    source_.stop();
-    start_clean();
-    has_source_ = false;
-    m.source_text.clear();
-    m.banner.clear();
-  }
-  if (m.connect_request) {
-    const ui::ConnectRequest request = *m.connect_request;
-    m.connect_request.reset();
-    if (request.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = request.address;
-    source_.stop();
-    start_clean();
-    m.banner.clear();
-    start(request);
-  }
-  if (m.replay.available) {
-    ReplayHandle& replay = source_.replay();
-    if (m.replay.changed) {
-      replay.set_paused(m.replay.paused);
-      replay.set_speed(static_cast<double>(m.replay.speed));
-      replay.set_loop(m.replay.loop);
-      m.replay.changed = false;
-    }
-    if (const auto status = replay.status()) {
-      m.replay.position_s = static_cast<double>(status->position_ns) * 1e-9;
-      m.replay.duration_s = static_cast<double>(status->duration_ns) * 1e-9;
-      m.replay.passes = status->loops;
-    }
-  }
-  if (m.sim_faults_request) {
-    if (SimServer* sim = source_.sim()) sim->set_faults(*m.sim_faults_request);
-    m.sim_faults_request.reset();
-  }
-  if (m.sim_unplug_request) {
-    m.sim_unplug_request = false;
-    if (SimServer* sim = source_.sim()) sim->unplug();
-  }
-  if (m.sim_replug_request) {
-    m.sim_replug_request = false;
-    if (SimServer* sim = source_.sim()) sim->replug();
   }
 }
 

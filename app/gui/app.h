@@ -43,13 +43,20 @@ class App {
   // that went round without one.
   bool no_laps_coming() const { return !model_.start_error.empty() || model_.view_state.give_up; }
   // Saves a timestamped PNG after the next frame, as the S key does (SIGUSR1 asks for it).
-  void request_screenshot() { model_.screenshot_request = true; }
+  void request_screenshot() { model_.requests.push_back(ui::SaveScreenshot{}); }
 
  private:
+  // The view takes the newest lap each frame; the measurements take every lap, in order, from a
+  // ring of their own, so a slow frame skips pictures but never a lap in the statistics.
   void drain_laps();
+  void measure_lap(const Lap& lap);
   void update_model();
   void handle_keys();
+  // The frame's requests from panels, keys and mouse, in order (app_requests.cpp).
   void carry_out_requests(int framebuffer_width, int framebuffer_height);
+  void carry_out(const ui::UiRequest& request, int framebuffer_width, int framebuffer_height);
+  // The replay's position for its panel, while a replay is the source.
+  void follow_replay();
   void toggle_fullscreen();
   // A new source or a Disconnect: everything measured from the old one goes.
   void start_clean();
@@ -61,7 +68,7 @@ class App {
   // The watched sectors (app_sectors.cpp): restored at start, changed by the Sectors panel and
   // Shift+drag on the view, kept in settings.ini.
   void restore_sectors();
-  void carry_out_sector_requests();
+  void unwatch_sector(std::size_t index);
   // Empty, or why `spec` is not watched (a mistake, a duplicate, too many).
   std::string watch_sector(const std::string& spec);
   // settings.ini's list and the view's outlines follow model_.sectors.
@@ -75,6 +82,8 @@ class App {
   ui::ViewSettings settings_;
   ui::UiModel model_;
   Session session_;
+  std::unique_ptr<LapSubscription> measured_laps_;  // every lap, for rates, plots, sectors, health
+  Lap measured_lap_;
   LidarSource source_;
   ui::LapHistory history_;
   Lap lap_;

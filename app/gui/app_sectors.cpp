@@ -30,28 +30,11 @@ void App::restore_sectors() {
   sync_sectors();
 }
 
-void App::carry_out_sector_requests() {
+void App::unwatch_sector(std::size_t index) {
   ui::UiModel& m = model_;
-  std::optional<std::string> added = m.add_sector_request;
-  m.add_sector_request.reset();
-  if (const auto swept = view_->take_swept_sector()) {
-    char spec[48];
-    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
-    added = spec;
-  }
-  bool changed = false;
-  if (added) {
-    m.sector_error = watch_sector(*added);
-    if (m.sector_error.empty()) m.sector_text[0] = '\0';
-    changed = m.sector_error.empty();
-  }
-  if (m.remove_sector_request) {
-    if (*m.remove_sector_request < m.sectors.size())
-      m.sectors.erase(m.sectors.begin() + static_cast<std::ptrdiff_t>(*m.remove_sector_request));
-    m.remove_sector_request.reset();
-    changed = true;
-  }
-  if (changed) sync_sectors();
+  if (index >= m.sectors.size()) return;
+  m.sectors.erase(m.sectors.begin() + static_cast<std::ptrdiff_t>(index));
+  sync_sectors();
 }
 
 void App::sync_sectors() {

@@ -55,7 +55,7 @@ void port_section(UiModel& m) {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  if (ImGui::SmallButton("rescan")) m.refresh_ports_request = true;
+  if (ImGui::SmallButton("rescan")) m.requests.push_back(RefreshPorts{});
   ImGui::InputText("address", m.port_text, sizeof m.port_text);
   model_combo("model", m.port_model_choice, "detect");
   ImGui::Combo("baud", &m.port_baud_choice, kBauds, IM_ARRAYSIZE(kBauds));
@@ -67,11 +67,11 @@ void port_section(UiModel& m) {
     r.address = m.port_text;
     if (m.port_model_choice > 0) r.model = model_label(m.port_model_choice);
     if (m.port_baud_choice > 0) r.baud = kBaudValues[m.port_baud_choice];
-    m.connect_request = r;
+    m.requests.push_back(r);
   }
   if (!can_connect) ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Disconnect")) m.disconnect_request = true;
+  if (ImGui::Button("Disconnect")) m.requests.push_back(Disconnect{});
 }
 
 // For testing other host software against the virtual lidar (README, "The virtual lidar as a
@@ -120,11 +120,11 @@ void sim_section(UiModel& m) {
     m.sim_faults.drop_byte_rate = drop * 1e-3;
     m.sim_faults.lost_packet_rate = lost * 1e-2;
     m.sim_faults.health_bits = static_cast<std::uint8_t>(bits & 0xFF);
-    if (changed && m.sim_active) m.sim_faults_request = m.sim_faults;
+    if (changed && m.sim_active) m.requests.push_back(SetSimFaults{m.sim_faults});
     if (m.sim_active) {
-      if (ImGui::SmallButton("unplug")) m.sim_unplug_request = true;
+      if (ImGui::SmallButton("unplug")) m.requests.push_back(UnplugSim{});
       ImGui::SameLine();
-      if (ImGui::SmallButton("replug")) m.sim_replug_request = true;
+      if (ImGui::SmallButton("replug")) m.requests.push_back(ReplugSim{});
     }
     ImGui::TreePop();
   }
@@ -142,7 +142,7 @@ void sim_section(UiModel& m) {
     r.delivery.burst_bytes = static_cast<std::uint32_t>(m.sim_burst_bytes);
     r.delivery.interval_ns = static_cast<std::int64_t>(m.sim_burst_interval_us) * 1000;
     r.delivery.max_piece = static_cast<std::uint32_t>(m.sim_random_max);
-    m.connect_request = r;
+    m.requests.push_back(r);
   }
 }
 
@@ -155,16 +155,18 @@ void replay_section(UiModel& m) {
     r.kind = ConnectRequest::Kind::Replay;
     r.address = m.replay_text;
     if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
-    m.connect_request = r;
+    m.requests.push_back(r);
   }
   if (m.replay.available) {
     ImGui::SameLine();
+    bool changed = false;
     if (ImGui::Button(m.replay.paused ? "Play" : "Pause")) {
       m.replay.paused = !m.replay.paused;
-      m.replay.changed = true;
+      changed = true;
     }
-    m.replay.changed |= ImGui::SliderFloat("speed", &m.replay.speed, 0.25f, 8.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
-    m.replay.changed |= ImGui::Checkbox("loop", &m.replay.loop);
+    changed |= ImGui::SliderFloat("speed", &m.replay.speed, 0.25f, 8.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::Checkbox("loop", &m.replay.loop);
+    if (changed) m.requests.push_back(ControlReplay{m.replay.paused, static_cast<double>(m.replay.speed), m.replay.loop});
     const float fraction = m.replay.duration_s > 0.0 ? static_cast<float>(m.replay.position_s / m.replay.duration_s) : 0.0f;
     char text[48];
     std::snprintf(text, sizeof text, "%.1f / %.1f s", m.replay.position_s, m.replay.duration_s);
@@ -172,7 +174,7 @@ void replay_section(UiModel& m) {
   }
 }
 
-void record_section(UiModel& m, const SessionSnapshot& s, Session& session) {
+void record_section(UiModel& m, const SessionSnapshot& s) {
   if (s.recording) {
     std::error_code ec;
     const auto bytes = std::filesystem::file_size(s.recording_path, ec);
@@ -180,7 +182,7 @@ void record_section(UiModel& m, const SessionSnapshot& s, Session& session) {
     ImGui::SameLine();
     ImGui::Text("%.1f s, %.2f MB", m.now_s - m.record_started_s, ec ? 0.0 : static_cast<double>(bytes) / 1e6);
     wrapped_text(s.recording_path.c_str());
-    if (ImGui::Button("Stop recording")) session.stop_recording(track_command(m, CommandControl::Recording));
+    if (ImGui::Button("Stop recording")) m.requests.push_back(StopRecording{});
     command_feedback_line(m, CommandControl::Recording);
   } else {
     // Empty means a new timestamped name at each start, so no recording overwrites another.
@@ -195,7 +197,7 @@ void record_section(UiModel& m, const SessionSnapshot& s, Session& session) {
         m.feedback->finished(CommandControl::Recording, ticket, false,
                              path + " already exists; choose another name, or clear the field for a timestamped one.");
       } else {
-        session.start_recording(path, track_command(m, CommandControl::Recording));
+        m.requests.push_back(StartRecording{path});
       }
       m.record_started_s = m.now_s;
     }
@@ -253,7 +255,7 @@ void help_marker(const char* text) {
   }
 }
 
-void draw_connection_panel(UiModel& m, Session& session) {
+void draw_connection_panel(UiModel& m) {
   if (!ImGui::CollapsingHeader("Connection", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const SessionSnapshot& s = m.snap;
   ImGui::TextDisabled("source");
@@ -279,7 +281,7 @@ void draw_connection_panel(UiModel& m, Session& session) {
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Record")) {
-      record_section(m, s, session);
+      record_section(m, s);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();

@@ -33,7 +33,7 @@ void command_feedback_line(UiModel& m, CommandControl control) {
   ImGui::PopStyleColor();
 }
 
-void draw_frequency_panels(UiModel& m, Session& session) {
+void draw_frequency_panels(UiModel& m) {
   const SessionSnapshot& s = m.snap;
   const ModelProfile* profile = s.device ? s.device->profile : nullptr;
   // A replay has no device behind it to command.
@@ -65,7 +65,7 @@ void draw_frequency_panels(UiModel& m, Session& session) {
         double target = std::round((base + step) * 10.0) / 10.0;
         if (profile) target = std::clamp(target, profile->min_scan_hz, profile->max_scan_hz);
         m.scan_target_hz = static_cast<float>(target);
-        session.set_scan_hz(target, track_command(m, CommandControl::ScanFrequency));
+        m.requests.push_back(SetScanHz{target});
       }
       ImGui::SameLine();
     }
@@ -73,7 +73,7 @@ void draw_frequency_panels(UiModel& m, Session& session) {
     ImGui::SetNextItemWidth(110.0f);
     ImGui::InputFloat("Hz##target", &m.scan_target_hz, 0.0f, 0.0f, "%.1f");
     ImGui::SameLine();
-    if (ImGui::Button("Set target")) session.set_scan_hz(static_cast<double>(m.scan_target_hz), track_command(m, CommandControl::ScanFrequency));
+    if (ImGui::Button("Set target")) m.requests.push_back(SetScanHz{static_cast<double>(m.scan_target_hz)});
     if (!can_command) ImGui::EndDisabled();
     command_feedback_line(m, CommandControl::ScanFrequency);
     if (profile) ImGui::TextDisabled("%s allows %.0f to %.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
@@ -87,7 +87,7 @@ void draw_frequency_panels(UiModel& m, Session& session) {
       for (const std::uint16_t khz : profile->ranging_khz) {
         char label[24];
         std::snprintf(label, sizeof label, "%u kHz", static_cast<unsigned>(khz));
-        if (ImGui::RadioButton(label, s.ranging_khz && *s.ranging_khz == khz)) session.set_ranging_khz(khz, track_command(m, CommandControl::RangingFrequency));
+        if (ImGui::RadioButton(label, s.ranging_khz && *s.ranging_khz == khz)) m.requests.push_back(SetRangingKhz{khz});
         ImGui::SameLine();
       }
       ImGui::NewLine();
@@ -135,13 +135,13 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::Checkbox("grid", &v.show_grid);
   ImGui::SameLine();
   ImGui::Checkbox("auto-range", &v.auto_range);
-  if (ImGui::Button("Reset view")) m.reset_view_request = true;
+  if (ImGui::Button("Reset view")) m.requests.push_back(ResetView{});
   ImGui::SameLine();
   if (ImGui::Button(m.paused_view ? "Resume" : "Freeze")) m.paused_view = !m.paused_view;
   ImGui::SameLine();
-  if (ImGui::Button("Screenshot")) m.screenshot_request = true;
+  if (ImGui::Button("Screenshot")) m.requests.push_back(SaveScreenshot{});
   ImGui::SameLine();
-  if (ImGui::Button("Export CSV")) m.csv_request = true;
+  if (ImGui::Button("Export CSV")) m.requests.push_back(ExportLapCsv{});
   if (!m.status_message.empty()) wrapped_text(m.status_message.c_str());
 }
 

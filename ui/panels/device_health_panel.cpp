@@ -62,7 +62,7 @@ void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std
 
 }  // namespace
 
-void draw_device_panel(UiModel& m, Session& session) {
+void draw_device_panel(UiModel& m) {
   if (!ImGui::CollapsingHeader("Device", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const SessionSnapshot& s = m.snap;
   if (!s.device) {
@@ -88,9 +88,9 @@ void draw_device_panel(UiModel& m, Session& session) {
   if (ImGui::Checkbox("override scale", &m.distance_scale_override)) {
     if (m.distance_scale_override) {
       m.distance_scale_value = static_cast<float>(s.distance_scale > 0 ? s.distance_scale : 1.0);
-      session.set_distance_scale(m.distance_scale_value);
+      m.requests.push_back(SetDistanceScale{static_cast<double>(m.distance_scale_value)});
     } else {
-      session.set_distance_scale(std::nullopt);
+      m.requests.push_back(SetDistanceScale{});
     }
   }
   help_marker("The manuals give G6 S/4 and TG S/2 mm per count; some vendor firmware uses S/2 (G6) or S (TG above 1.2). "
@@ -100,12 +100,12 @@ void draw_device_panel(UiModel& m, Session& session) {
     ImGui::SetNextItemWidth(110.0f);
     if (ImGui::InputFloat("##scale", &m.distance_scale_value, 0.0f, 0.0f, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue) &&
         m.distance_scale_value > 0.0f) {
-      session.set_distance_scale(m.distance_scale_value);
+      m.requests.push_back(SetDistanceScale{static_cast<double>(m.distance_scale_value)});
     }
   }
 }
 
-void draw_health_panel(UiModel& m, Session& session) {
+void draw_health_panel(UiModel& m) {
   if (!ImGui::CollapsingHeader("Health", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const SessionSnapshot& s = m.snap;
   const Model model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
@@ -135,7 +135,7 @@ void draw_health_panel(UiModel& m, Session& session) {
   if (s.health && !s.health->summary.empty()) ImGui::TextDisabled("device says: %s", s.health->summary.c_str());
   const bool can_ask = link_state_connected(s.state) && !s.busy && !m.replay.available;
   if (!can_ask) ImGui::BeginDisabled();
-  if (ImGui::Button("Ask health now")) session.refresh_health(track_command(m, CommandControl::Health));
+  if (ImGui::Button("Ask health now")) m.requests.push_back(RefreshHealth{});
   if (!can_ask) ImGui::EndDisabled();
   command_feedback_line(m, CommandControl::Health);
 

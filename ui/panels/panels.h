@@ -2,16 +2,12 @@
 // The ImGui panels of the sidebar. Each draws one collapsing section; draw_sidebar lays them out.
 #include "ui/panels/ui_model.h"
 
-namespace ydscope {
-class Session;
-}
-
 namespace ydscope::ui {
 
-void draw_connection_panel(UiModel& model, Session& session);
-void draw_device_panel(UiModel& model, Session& session);
-void draw_health_panel(UiModel& model, Session& session);
-void draw_frequency_panels(UiModel& model, Session& session);
+void draw_connection_panel(UiModel& model);
+void draw_device_panel(UiModel& model);
+void draw_health_panel(UiModel& model);
+void draw_frequency_panels(UiModel& model);
 void draw_view_panel(UiModel& model, ViewSettings& settings);
 void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
@@ -20,7 +16,7 @@ void draw_sectors_panel(UiModel& model);
 
 // The whole left sidebar (full window height). Returns its width in pixels so the polar view can
 // use the rest of the window.
-float draw_sidebar(UiModel& model, ViewSettings& settings, Session& session);
+float draw_sidebar(UiModel& model, ViewSettings& settings);
 
 // Status line over the polar view: model, state, measured rate, health alert, badges, banner.
 void draw_view_header(const UiModel& model, float view_left, float view_width);
@@ -34,8 +30,9 @@ void wrapped_text(const char* text);
 // A dim title over a thin rule (ImGui 1.86 has no SeparatorText).
 void section(const char* title);
 void link_state_text(LinkState state, const char* message);
-// A session callback that files the command's outcome under `control`, and the line beside that
-// control which shows it (a spinner while it runs, then the outcome for a few seconds).
+// A session callback that files the command's outcome under `control` (the app passes it with the
+// request), and the line beside that control which shows it (a spinner while it runs, then the
+// outcome for a few seconds).
 CommandCallback track_command(UiModel& model, CommandControl control);
 void command_feedback_line(UiModel& model, CommandControl control);
 

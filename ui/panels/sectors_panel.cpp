@@ -61,7 +61,7 @@ void draw_sectors_panel(UiModel& m) {
   help_marker("FROM:TO in degrees, clockwise from straight ahead (may cross 0, e.g. 350:10); optionally a range "
               "band MIN:MAX in mm so only a target's returns count, not the wall behind it.");
   ImGui::SameLine();
-  if ((ImGui::Button("Add") || entered) && m.sector_text[0]) m.add_sector_request = std::string(m.sector_text);
+  if ((ImGui::Button("Add") || entered) && m.sector_text[0]) m.requests.push_back(WatchSector{m.sector_text});
   if (!m.sector_error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
     wrapped_text(m.sector_error.c_str());
@@ -74,7 +74,7 @@ void draw_sectors_panel(UiModel& m) {
     std::snprintf(title, sizeof title, "S%zu  %s deg", i + 1, w.sector().name.c_str());
     const bool open = ImGui::TreeNodeEx("sector", ImGuiTreeNodeFlags_DefaultOpen, "%s", title);
     ImGui::SameLine(ImGui::GetContentRegionMax().x - 60.0f);
-    if (ImGui::SmallButton("remove")) m.remove_sector_request = i;
+    if (ImGui::SmallButton("remove")) m.requests.push_back(UnwatchSector{i});
     if (open) {
       sector_details(w);
       ImGui::TreePop();

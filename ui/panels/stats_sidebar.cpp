@@ -38,9 +38,18 @@ void draw_stats_panel(const UiModel& m) {
   pair("points drawn", "%.0f", static_cast<double>(m.points_drawn_total), false);
   pair("laps shown", "%.0f", static_cast<double>(m.laps_shown), false);
   ImGui::EndTable();
+  // Every consumer of the lap stream has its own ring; one that falls behind drops only its own.
+  if (m.snap.consumers.size() > 1) {
+    ImGui::TextDisabled("lap consumers (ring, delivered, dropped)");
+    for (const LapConsumerStats& consumer : m.snap.consumers) {
+      const ImVec4 colour = consumer.dropped > 0 ? ImVec4{1.0f, 0.6f, 0.35f, 1.0f} : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+      ImGui::TextColored(colour, "  %s: %zu, %llu, %llu", consumer.name.c_str(), consumer.capacity,
+                         static_cast<unsigned long long>(consumer.delivered), static_cast<unsigned long long>(consumer.dropped));
+    }
+  }
 }
 
-float draw_sidebar(UiModel& m, ViewSettings& v, Session& session) {
+float draw_sidebar(UiModel& m, ViewSettings& v) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   // Docked to the left edge at full height; the width is the user's (remembered in imgui.ini).
   ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
@@ -54,10 +63,10 @@ float draw_sidebar(UiModel& m, ViewSettings& v, Session& session) {
     ImGui::SameLine();
     ImGui::TextDisabled("Tab: panels   F11: full-screen");
     ImGui::Separator();
-    draw_connection_panel(m, session);
-    draw_device_panel(m, session);
-    draw_health_panel(m, session);
-    draw_frequency_panels(m, session);
+    draw_connection_panel(m);
+    draw_device_panel(m);
+    draw_health_panel(m);
+    draw_frequency_panels(m);
     draw_view_panel(m, v);
     draw_filter_panel(m, v);
     draw_stats_panel(m);

@@ -1,18 +1,16 @@
 #pragma once
 // What the panels read and write each frame. The app fills the measured part from the session and
-// the laps; the panels turn clicks into requests the app carries out after the frame (connecting,
-// starting the virtual lidar, saving files), or call the session's intents directly (frequency,
-// health, recording), whose outcome comes back in the snapshot.
+// the laps; the panels turn clicks into typed requests (ui_request.h) that the app carries out
+// after the frame, device commands included, whose outcome comes back in the snapshot.
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "core/link/session.h"
-#include "core/sim/delivery.h"
+#include "core/link/session_snapshot.h"
 #include "core/sim/faults.h"
-#include "core/sim/host_compat.h"
+#include "ui/panels/ui_request.h"
 #include "ui/view/command_feedback.h"
 #include "ui/view/health_alerts.h"
 #include "ui/view/health_timeline.h"
@@ -30,20 +28,6 @@ struct PortEntry {
   std::string label;  // "/dev/ttyUSB0 — Silicon Labs CP2102 (0001)"
 };
 
-struct ConnectRequest {
-  enum class Kind { Port, Sim, Replay } kind = Kind::Port;
-  std::string address;                // port path / tcp URL, or the recording for Replay
-  std::optional<std::string> model;   // Port: fixed model (empty = detect); Sim: the model;
-                                      // Replay: decode as this one (empty = the recording's)
-  std::optional<std::uint32_t> baud;  // Port only
-  std::string scene = "demo";         // Sim only
-  FaultConfig faults;                 // Sim only
-  HostCompat host_compat = HostCompat::Manual;  // Sim only: what it answers beyond the manual
-  std::uint8_t firmware_major = 1;    // Sim only: what its device info reports
-  std::uint8_t firmware_minor = 2;
-  DeliveryModel delivery;             // Sim only: how its bytes reach the host
-};
-
 struct ReplayControl {
   bool available = false;  // a replay is the current source
   bool paused = false;
@@ -52,7 +36,6 @@ struct ReplayControl {
   double position_s = 0.0;  // filled by the app from the replay's status
   double duration_s = 0.0;
   std::uint64_t passes = 0;  // times it went round to its start
-  bool changed = false;    // set by the panel when the user touched a control
 };
 
 struct UiModel {
@@ -70,7 +53,7 @@ struct UiModel {
   RunningMean frame_ms;
   RunningMean latency_ms;   // lap's last byte -> the frame that first shows it
   std::uint64_t laps_shown = 0;
-  std::uint64_t laps_skipped = 0;  // drained but never shown (LapQueue::skipped)
+  std::uint64_t laps_skipped = 0;  // drained but never shown (its LapRing::skipped)
   std::size_t points_in_lap = 0;
   PointCloudStats cloud;
   std::size_t points_drawn_total = 0;
@@ -91,18 +74,8 @@ struct UiModel {
   // Opens the Connection tab of the current source once: 0 port, 1 virtual, 2 replay; -1 none.
   int show_source_tab = -1;
 
-  // ---- requests from the panels, carried out and cleared by the app -----------------------------
-  std::optional<ConnectRequest> connect_request;
-  bool disconnect_request = false;
-  bool refresh_ports_request = false;
-  std::optional<FaultConfig> sim_faults_request;
-  bool sim_unplug_request = false;
-  bool sim_replug_request = false;
-  bool screenshot_request = false;
-  bool csv_request = false;
-  bool reset_view_request = false;
-  std::optional<std::string> add_sector_request;    // a spec, "260:280 [1500:2500]"
-  std::optional<std::size_t> remove_sector_request;
+  // ---- requests from the panels, keys and mouse, carried out in order and cleared by the app -----
+  std::vector<UiRequest> requests;
   std::string status_message;  // outcome of the last local action (file saved, ...)
 
   // ---- panel edit state (kept between frames) ---------------------------------------------------

@@ -1,0 +1,106 @@
+// App, carrying out what the user asked for this frame: each typed request from the panels, keys
+// and mouse, in the order they came. Device commands go to the session with a callback that shows
+// their outcome beside the control that asked; source, replay and virtual-lidar requests go to the
+// LidarSource; view and file requests are done here.
+#include <cstdio>
+#include <type_traits>
+#include <variant>
+
+#include "app/gui/app.h"
+#include "app/gui/screenshot.h"
+#include "ui/panels/panels.h"
+#include "ui/view/file_names.h"
+
+namespace ydscope::gui {
+
+void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
+  // Taken first: carrying one out may not add to the list being walked.
+  std::vector<ui::UiRequest> requests;
+  requests.swap(model_.requests);
+  for (const ui::UiRequest& request : requests) carry_out(request, framebuffer_width, framebuffer_height);
+  follow_replay();
+}
+
+void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int framebuffer_height) {
+  ui::UiModel& m = model_;
+  using ui::CommandControl;
+  std::visit(
+      [&](const auto& r) {
+        using R = std::decay_t<decltype(r)>;
+        if constexpr (std::is_same_v<R, ui::ConnectRequest>) {
+          if (r.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = r.address;
+          source_.stop();
+          start_clean();
+          m.banner.clear();
+          start(r);
+        } else if constexpr (std::is_same_v<R, ui::Disconnect>) {
+          source_.stop();
+          start_clean();
+          has_source_ = false;
+          m.source_text.clear();
+          m.banner.clear();
+        } else if constexpr (std::is_same_v<R, ui::RefreshPorts>) {
+          m.ports = discover_ports();
+        } else if constexpr (std::is_same_v<R, ui::ControlReplay>) {
+          if (!m.replay.available) return;
+          ReplayHandle& replay = source_.replay();
+          replay.set_paused(r.paused);
+          replay.set_speed(r.speed);
+          replay.set_loop(r.loop);
+        } else if constexpr (std::is_same_v<R, ui::SetSimFaults>) {
+          if (SimServer* sim = source_.sim()) sim->set_faults(r.faults);
+        } else if constexpr (std::is_same_v<R, ui::UnplugSim>) {
+          if (SimServer* sim = source_.sim()) sim->unplug();
+        } else if constexpr (std::is_same_v<R, ui::ReplugSim>) {
+          if (SimServer* sim = source_.sim()) sim->replug();
+        } else if constexpr (std::is_same_v<R, ui::SetScanHz>) {
+          session_.set_scan_hz(r.hz, ui::track_command(m, CommandControl::ScanFrequency));
+        } else if constexpr (std::is_same_v<R, ui::SetRangingKhz>) {
+          session_.set_ranging_khz(r.khz, ui::track_command(m, CommandControl::RangingFrequency));
+        } else if constexpr (std::is_same_v<R, ui::RefreshHealth>) {
+          session_.refresh_health(ui::track_command(m, CommandControl::Health));
+        } else if constexpr (std::is_same_v<R, ui::StartRecording>) {
+          session_.start_recording(r.path, ui::track_command(m, CommandControl::Recording));
+        } else if constexpr (std::is_same_v<R, ui::StopRecording>) {
+          session_.stop_recording(ui::track_command(m, CommandControl::Recording));
+        } else if constexpr (std::is_same_v<R, ui::SetDistanceScale>) {
+          session_.set_distance_scale(r.mm_per_count);
+        } else if constexpr (std::is_same_v<R, ui::ResetView>) {
+          view_->reset(settings_);
+        } else if constexpr (std::is_same_v<R, ui::SaveScreenshot>) {
+          const std::string path = timestamped_name("png");
+          const std::string error = save_framebuffer_png(path, framebuffer_width, framebuffer_height);
+          m.status_message = error.empty() ? "saved " + path : error;
+        } else if constexpr (std::is_same_v<R, ui::ExportLapCsv>) {
+          if (history_.empty()) {
+            m.status_message = "no lap to export yet.";
+            return;
+          }
+          const std::string path = timestamped_name("csv");
+          const std::string error = export_lap_csv(path, lap_);
+          m.status_message = error.empty() ? "exported lap " + std::to_string(lap_.index) + " to " + path : error;
+        } else if constexpr (std::is_same_v<R, ui::WatchSector>) {
+          m.sector_error = watch_sector(r.spec);
+          if (!m.sector_error.empty()) return;
+          m.sector_text[0] = '\0';
+          sync_sectors();
+        } else if constexpr (std::is_same_v<R, ui::UnwatchSector>) {
+          unwatch_sector(r.index);
+        } else {
+          static_assert(!sizeof(R), "a request the app does not carry out");
+        }
+      },
+      request);
+}
+
+void App::follow_replay() {
+  ui::UiModel& m = model_;
+  if (!m.replay.available) return;
+  if (const auto status = source_.replay().status()) {
+    m.replay.position_s = static_cast<double>(status->position_ns) * 1e-9;
+    m.replay.duration_s = static_cast<double>(status->duration_ns) * 1e-9;
+    m.replay.passes = status->loops;
+  }
+}
+
+}  // namespace ydscope::gui

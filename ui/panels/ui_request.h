@@ -1,0 +1,78 @@
+#pragma once
+// What the user asks for through a panel, a key or the mouse, as typed values. Panels never act
+// themselves: they append a request to UiModel::requests, and after the frame the app carries each
+// out in order, sending device commands to the session behind the current source. One path for
+// every intent (the device's, the replay's and the virtual lidar's), and no session in ui/.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "core/sim/delivery.h"
+#include "core/sim/faults.h"
+#include "core/sim/host_compat.h"
+
+namespace ydscope::ui {
+
+// A source to start in place of the current one.
+struct ConnectRequest {
+  enum class Kind { Port, Sim, Replay } kind = Kind::Port;
+  std::string address;                // port path / tcp URL, or the recording for Replay
+  std::optional<std::string> model;   // Port: fixed model (empty = detect); Sim: the model;
+                                      // Replay: decode as this one (empty = the recording's)
+  std::optional<std::uint32_t> baud;  // Port only
+  std::string scene = "demo";         // Sim only
+  FaultConfig faults;                 // Sim only
+  HostCompat host_compat = HostCompat::Manual;  // Sim only: what it answers beyond the manual
+  std::uint8_t firmware_major = 1;    // Sim only: what its device info reports
+  std::uint8_t firmware_minor = 2;
+  DeliveryModel delivery;             // Sim only: how its bytes reach the host
+};
+
+// ---- the source -------------------------------------------------------------------------------
+struct Disconnect {};
+struct RefreshPorts {};
+struct ControlReplay {
+  bool paused = false;
+  double speed = 1.0;
+  bool loop = true;
+};
+struct SetSimFaults {
+  FaultConfig faults;
+};
+struct UnplugSim {};
+struct ReplugSim {};
+
+// ---- the device (each outcome is shown beside the control that asked) -------------------------
+struct SetScanHz {
+  double hz = 0;
+};
+struct SetRangingKhz {
+  std::uint16_t khz = 0;
+};
+struct RefreshHealth {};
+struct StartRecording {
+  std::string path;
+};
+struct StopRecording {};
+struct SetDistanceScale {
+  std::optional<double> mm_per_count;  // empty: back to the model's own
+};
+
+// ---- the view and files -----------------------------------------------------------------------
+struct ResetView {};
+struct SaveScreenshot {};
+struct ExportLapCsv {};
+struct WatchSector {
+  std::string spec;  // "260:280 [1500:2500]"
+};
+struct UnwatchSector {
+  std::size_t index = 0;
+};
+
+using UiRequest = std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim,
+                               ReplugSim, SetScanHz, SetRangingKhz, RefreshHealth, StartRecording, StopRecording,
+                               SetDistanceScale, ResetView, SaveScreenshot, ExportLapCsv, WatchSector, UnwatchSector>;
+
+}  // namespace ydscope::ui
