@@ -191,7 +191,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   }
 
   void publish() {
-    status_position_.store(std::max<std::int64_t>(0, position_now()), std::memory_order_relaxed);
+    // Within the recording: an I/O thread that runs late must not show a point past its end.
+    status_position_.store(std::clamp<std::int64_t>(position_now(), 0, status_duration_.load(std::memory_order_relaxed)),
+                           std::memory_order_relaxed);
     status_speed_.store(speed_, std::memory_order_relaxed);
     status_paused_.store(paused_, std::memory_order_relaxed);
     status_loop_.store(loop_, std::memory_order_relaxed);
