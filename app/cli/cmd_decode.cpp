@@ -14,6 +14,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
+#include "app/cli/lap_output.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "core/protocol/function_ref.h"
@@ -25,7 +26,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli decode --model MODEL [--format jsonl|summary] [--filter LIST]
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli decode --model MODEL [--format jsonl|csv|summary] [--filter LIST]
                           [--distance-scale X] [--mcap OUT.mcap [MCAP options]] FILE|-
 
 Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete laps.
@@ -41,7 +42,8 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
                        (G1: S>>2 mm with the interference flag in S&3; G6: S/4 mm; TG: S/2 mm, as
                        the manuals give them) and, on G1, the CT information and LastCRC byte.
   --format FORMAT      jsonl (default): one JSON object per complete lap, then a summary line.
-                       summary: only the summary line.
+                       csv: the header lap,t,angle_deg,range_mm,flag, then one row per point of
+                       every lap (the fields as in jsonl; no summary). summary: only the summary.
   --filter LIST        drop G1 points flagged as interference: specular (flag 2), ambient
                        (flag 3), or both as specular,ambient. Only the lap points change.
   --distance-scale X   millimetres per raw distance unit (after the flag bits), overriding the
@@ -59,9 +61,12 @@ A lap runs from a zero packet (CT bit 0 set), inclusive, to the next one, exclus
 the first zero packet and a cut-off packet at the end are not part of any lap.
 
 jsonl schema, one object per line:
-  {"type":"lap","index":I,"points":[[angle_deg,range_mm,flag],...],"scan_hz":F|null,
+  {"type":"lap","index":I,"t":T,"points":[[angle_deg,range_mm,flag],...],"scan_hz":F|null,
    "health":H|null,"crc_ok":true|false|null,"packets":N,"checksum_errors":E[,"cut_points":C]}
     index            0 for the first complete lap
+    t                seconds (6 decimals) from the first byte of the first lap to the byte that
+                     closed this one: a recording's recorded receive times; for raw bytes, the
+                     times the model's baud rate would deliver them at (ten bits a byte)
     points           in received order; angle corrected (both levels of the manuals) in [0,360)
                      with 4 decimals, range in mm with up to 2 decimals (0 = no return), flag S&3 on
                      G1 and 0 otherwise
@@ -76,10 +81,12 @@ jsonl schema, one object per line:
     checksum_errors  packets of this lap dropped for a bad checksum
     cut_points       only present when the lap held more than 24000 points (a stream whose zero
                      packets were lost): how many points beyond that were dropped
-  {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L[,"cut_points":C]}
+  {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L[,"cut_points":C]
+   [,"start":S]}
     bytes            bytes read; packets: packets with a valid checksum; zero_packets: those with
                      CT bit 0 set; laps: complete laps; cut_points (only when not 0): points
-                     dropped from over-long laps, the partial lap included
+                     dropped from over-long laps, the partial lap included; start (a recording
+                     that names it): the wall-clock time it began, ISO 8601 UTC
 
 exit status: 0 the input was read to the end; 1 reading failed; 2 usage error (unknown model,
 missing file, bad option, a recording of a version or header this ydscope cannot read).
@@ -124,6 +131,28 @@ void read_input(std::FILE* file, const std::string& path, FunctionRef<void(std::
   }
 }
 
+// Raw bytes carry no times: each gets the time the model's baud rate would deliver it at (8N1,
+// ten bits a byte, from t=0), in pieces of 64 bytes (1.25 ms at 512000 baud), so laps get
+// distinct, plausible times. The laps' t and --mcap's log times both come from here.
+class LineRateClock {
+ public:
+  explicit LineRateClock(std::uint32_t baud) : ns_per_byte_(10e9 / baud) {}
+  // Calls piece_at(piece, time of its last byte) for `chunk` in pieces, in order.
+  void split(std::span<const std::uint8_t> chunk,
+             FunctionRef<void(std::span<const std::uint8_t>, std::int64_t)> piece_at) {
+    constexpr std::size_t kPiece = 64;
+    for (std::size_t at = 0; at < chunk.size(); at += kPiece) {
+      const auto piece = chunk.subspan(at, std::min(kPiece, chunk.size() - at));
+      bytes_ += piece.size();
+      piece_at(piece, static_cast<std::int64_t>(static_cast<double>(bytes_) * ns_per_byte_));
+    }
+  }
+
+ private:
+  double ns_per_byte_;
+  std::uint64_t bytes_ = 0;
+};
+
 InterferenceFilter parse_filter(const std::string& list) {
   InterferenceFilter filter;
   std::size_t start = 0;
@@ -155,16 +184,12 @@ void write_mcap(const Arguments& args, const std::string& path, bool recording, 
     RecordView record;
     while (reader->next(record) && !exporter->failed()) exporter->record(record.type, record.payload, record.t_ns);
   } else {
-    constexpr std::size_t kPiece = 512;
-    const double ns_per_byte = 10e9 / profile.default_baud;  // 8N1: ten bits a byte
-    std::uint64_t bytes = 0;
+    LineRateClock clock(profile.default_baud);
     const InputFile again = open_input(path);  // the first pass read it to the end
     read_input(again.get(), path, [&](std::span<const std::uint8_t> chunk) {
-      for (std::size_t at = 0; at < chunk.size(); at += kPiece) {
-        const auto piece = chunk.subspan(at, std::min(kPiece, chunk.size() - at));
-        bytes += piece.size();
-        exporter->record(RecordType::DeviceToHost, piece, static_cast<std::int64_t>(static_cast<double>(bytes) * ns_per_byte));
-      }
+      clock.split(chunk, [&](std::span<const std::uint8_t> piece, std::int64_t t_ns) {
+        exporter->record(RecordType::DeviceToHost, piece, t_ns);
+      });
     });
   }
   if (!exporter->finish()) throw std::runtime_error("writing " + out + " failed: " + exporter->error());
@@ -188,9 +213,7 @@ int run_decode(std::span<const std::string> raw) {
   if (!mcap && (args.value("compression") || args.value("frame-id") || args.has("no-link-bytes") || args.has("force")))
     throw UsageError("--compression, --frame-id, --no-link-bytes and --force go with --mcap OUT.mcap");
   if (mcap && path == "-") throw UsageError("--mcap needs a FILE, not standard input");
-  const std::string format = args.value("format").value_or(mcap ? "summary" : "jsonl");
-  if (format != "jsonl" && format != "summary")
-    throw UsageError("--format must be jsonl or summary, not '" + format + "'");
+  const LapFormat format = parse_lap_format(args.value("format"), mcap ? LapFormat::Summary : LapFormat::Jsonl);
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
   const auto scale = recording ? recording_distance_scale(scale_option, args.value("model").has_value(),
@@ -199,23 +222,25 @@ int run_decode(std::span<const std::string> raw) {
 
   ScanDecoder decoder(*profile, scale);
   JsonOut out(stdout);
-  const bool jsonl = format == "jsonl";
+  LapPrinter printer(out, format, profile->ct_carries_info);
   Lap filtered;
   const auto on_lap = [&](const Lap& lap) {
-    if (!jsonl) return;
-    if (!filter.any()) return write_lap(out, lap, profile->ct_carries_info);
+    if (!filter.any()) return printer.print(lap);
     filtered = lap;
     filter_interference(filtered, filter);
-    write_lap(out, filtered, profile->ct_carries_info);
+    printer.print(filtered);
   };
-  const auto feed = [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, on_lap); };
+  const auto feed = [&](std::span<const std::uint8_t> chunk, std::int64_t t_ns) { decoder.feed(chunk, t_ns, on_lap); };
   if (recording) {
     print_recording_warnings("ydscope-cli decode", recording->warnings());
     read_recording_device_bytes(path, feed);
+  } else {
+    LineRateClock clock(profile->default_baud);
+    read_input(input.get(), path, [&](std::span<const std::uint8_t> chunk) { clock.split(chunk, feed); });
   }
-  else read_input(input.get(), path, feed);
   decoder.finish(on_lap);
-  write_summary(out, decoder.counters());
+  if (printer.wants_summary())
+    write_summary(out, decoder.counters(), recording ? recording->summary.metadata.start_wall_time : std::nullopt);
   out.flush();
   if (mcap) write_mcap(args, path, recording.has_value(), *profile, scale);
   if (std::fflush(stdout) != 0) throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));

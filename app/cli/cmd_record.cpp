@@ -156,7 +156,9 @@ std::string laps_in(const std::string& path, const RecordingMetadata& metadata) 
   const ModelProfile* profile = metadata.model ? find_profile(*metadata.model) : nullptr;
   if (!profile) return "";
   ScanDecoder decoder(*profile, metadata.distance_scale);
-  read_recording_device_bytes(path, [&](std::span<const std::uint8_t> chunk) { decoder.feed(chunk, 0, [](const Lap&) {}); });
+  read_recording_device_bytes(path, [&](std::span<const std::uint8_t> chunk, std::int64_t t_ns) {
+    decoder.feed(chunk, t_ns, [](const Lap&) {});
+  });
   decoder.finish([](const Lap&) {});
   return ", " + std::to_string(decoder.counters().laps) + " laps";
 }

@@ -13,6 +13,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
+#include "app/cli/lap_output.h"
 #include "app/cli/recording_input.h"
 #include "core/link/replay_link.h"
 #include "core/protocol/scan_decoder.h"
@@ -20,7 +21,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli replay FILE [--speed X] [--format jsonl|summary] [--model MODEL]
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli replay FILE [--speed X] [--format jsonl|csv|summary] [--model MODEL]
                           [--distance-scale X]
 
 Plays back the bytes the lidar sent in a recording made by `ydscope-cli record` (or the app),
@@ -29,8 +30,10 @@ with their original timing, and decodes them into laps exactly as `ydscope-cli d
   FILE                 a .ydrec recording
   --speed X            1 (default) as recorded, 2 twice as fast, 0.5 half speed, 0 as fast as
                        possible; otherwise from 0.001 to 1000000
-  --format FORMAT      jsonl (default): one JSON object per lap, then the summary line;
-                       summary: only the summary line (schema: `ydscope-cli decode --help`)
+  --format FORMAT      jsonl (default): one JSON object per lap, then the summary line; csv: one
+                       row per point; summary: only the summary line (schemas: `ydscope-cli
+                       decode --help`). A lap's t is its recorded time, so every speed prints
+                       the same lines, and the same as decode of FILE.
   --model MODEL        decode as this model instead of the one the recording names
   --distance-scale X   mm per raw distance unit, instead of the one used while recording
 
@@ -57,9 +60,7 @@ int run_replay(std::span<const std::string> raw) {
   if (speed > 0 && speed < kMinReplaySpeed)  // slower would wait for days between two records
     throw UsageError("--speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '" +
                      *args.value("speed") + "'");
-  const std::string format = args.value("format").value_or("jsonl");
-  if (format != "jsonl" && format != "summary")
-    throw UsageError("--format must be jsonl or summary, not '" + format + "'");
+  const LapFormat format = parse_lap_format(args.value("format"), LapFormat::Jsonl);
 
   const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"));
   print_recording_warnings("ydscope-cli replay", plan.warnings());
@@ -74,10 +75,9 @@ int run_replay(std::span<const std::string> raw) {
 
   ScanDecoder decoder(profile, scale);
   JsonOut out(stdout);
-  const bool jsonl = format == "jsonl";
+  LapPrinter printer(out, format, profile.ct_carries_info);
   const auto on_lap = [&](const Lap& lap) {
-    if (!jsonl) return;
-    write_lap(out, lap, profile.ct_carries_info);
+    printer.print(lap);
     out.flush();  // a program reading the pipe gets each lap as it is played
   };
 
@@ -88,10 +88,8 @@ int run_replay(std::span<const std::string> raw) {
   std::vector<std::uint8_t> buffer(kReadBuffer);
   std::function<void()> read_next = [&] {
     link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
-      if (n > 0) {
-        const auto now = std::chrono::steady_clock::now().time_since_epoch();
-        decoder.feed({buffer.data(), n}, std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(), on_lap);
-      }
+      // Stamped with the recorded time, not the playback's: t is the same at any speed.
+      if (n > 0) decoder.feed({buffer.data(), n}, link->recorded_time_of_last_read(), on_lap);
       if (ec) {
         signals.cancel();
         return;  // end of the recording, or Ctrl-C
@@ -103,7 +101,7 @@ int run_replay(std::span<const std::string> raw) {
   io.run();
 
   decoder.finish(on_lap);
-  write_summary(out, decoder.counters());
+  if (printer.wants_summary()) write_summary(out, decoder.counters(), plan.summary.metadata.start_wall_time);
   out.flush();
   return kExitOk;
 }

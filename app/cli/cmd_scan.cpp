@@ -11,12 +11,15 @@
 #include "app/cli/health_watch.h"
 #include "app/cli/lap_bell.h"
 #include "app/cli/lap_json.h"
+#include "app/cli/lap_output.h"
 #include "app/cli/session_cli.h"
+#include "core/link/session_io.h"
+#include "core/record/recording_metadata.h"
 
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli scan --port PATH [--model auto|MODEL] [--baud B|auto] --laps N [--format jsonl|summary]
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli scan --port PATH [--model auto|MODEL] [--baud B|auto] --laps N [--format jsonl|csv|summary]
 
 Starts the lidar scanning, prints N complete laps and a summary, then stops the lidar.
 Ctrl-C stops early (the lidar is stopped and the summary printed).
@@ -26,7 +29,8 @@ options:
   --model MODEL         auto (default), G1, G6, TG15, TG30, TG50
   --baud B              line rate, or auto to probe (see `ydscope-cli info --help`)
   --laps N              laps to print (1 to 1000000)
-  --format FORMAT       jsonl (default): one JSON object per lap, then the summary; summary: only it
+  --format FORMAT       jsonl (default): one JSON object per lap, then the summary; csv: a header,
+                        then one row per point (see `decode --help`); summary: only the summary
   --distance-scale MM   mm per distance count, overriding the model's (see `decode --help`)
 
 output: the schema of `ydscope-cli decode --help` (lap objects, then one summary object, whose
@@ -36,6 +40,8 @@ bytes count everything the lidar sent, replies included), with the health the se
   the bits of A5 92 on a unit that answers only that);
   the summary adds "health":{"level":"ok|warning|error","source":"A5 91|A5 92|CT","summary":S}
   for the worst health seen during the run (S in words, as info prints it), or null.
+  A lap's "t" uses this computer's receive times, and the summary's "start" is the wall-clock
+  time of the first printed lap's first byte.
 
 health: a warning or an error the lidar reports (its A5 91/92 answer, or G1's CT health bits) is
 one line on stderr when it first shows and again whenever it changes, back to ok included.
@@ -55,9 +61,7 @@ int run_scan(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {});
   const auto laps_wanted = args.integer("laps", 1, 1'000'000);
   if (!laps_wanted) throw UsageError("--laps N is required (how many laps to print)");
-  const std::string format = args.value("format").value_or("jsonl");
-  if (format != "jsonl" && format != "summary")
-    throw UsageError("--format must be jsonl or summary, not '" + format + "'");
+  const LapFormat format = parse_lap_format(args.value("format"), LapFormat::Jsonl);
   SessionConfig config = session_config_from(args, /*scan=*/true);
   config.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
 
@@ -68,21 +72,25 @@ int run_scan(std::span<const std::string> raw) {
   const SessionSnapshot started = connect_or_throw(session, config);
   if (config.distance_scale) session.set_distance_scale(config.distance_scale);
   const bool g1_info = started.device && started.device->profile && started.device->profile->ct_carries_info;
-  const bool jsonl = format == "jsonl";
 
   HealthWatch health("ydscope-cli scan");
   health.observe_answer(started.health);
   JsonOut out(stdout);
+  LapPrinter printer(out, format, g1_info);
+  std::optional<std::string> start;  // wall-clock time of the first printed lap's first byte
   Lap lap;
   std::int64_t printed = 0;
   std::string failure;
   while (printed < *laps_wanted && !interrupted.load()) {
     if (session.laps().try_pop(lap)) {
       health.observe_lap(lap);
-      if (jsonl) {
-        write_lap(out, lap, g1_info, health.lap_health(lap, g1_info));
-        out.flush();  // a program reading the pipe gets each lap as it arrives
+      if (!start) {
+        const auto since_first_byte = std::chrono::nanoseconds(link_clock_ns() - lap.first_rx_ns);
+        start = iso8601_utc(std::chrono::system_clock::now() -
+                            std::chrono::duration_cast<std::chrono::system_clock::duration>(since_first_byte));
       }
+      printer.print(lap, health.lap_health(lap, g1_info));
+      out.flush();  // a program reading the pipe gets each lap as it arrives
       ++printed;
       continue;
     }
@@ -106,9 +114,11 @@ int run_scan(std::span<const std::string> raw) {
   summary.zero_packets = end.counters.zero_packets;
   summary.laps = end.counters.laps;
   summary.overflow_points = end.counters.cut_points;  // "cut_points", as decode prints it
-  write_summary_fields(out, summary);
-  health.write_summary_field(out);
-  out.raw("}\n");
+  if (printer.wants_summary()) {
+    write_summary_fields(out, summary, start);
+    health.write_summary_field(out);
+    out.raw("}\n");
+  }
   out.flush();
   std::fflush(stdout);
   if (!failure.empty()) throw std::runtime_error(failure);

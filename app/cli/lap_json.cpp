@@ -68,21 +68,23 @@ void JsonOut::flush() {
   text_.clear();
 }
 
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info) {
-  write_lap(out, lap, g1_info, g1_info && lap.ct_info_trusted() ? lap.health_bits : std::nullopt);
+void write_angle(JsonOut& out, float degrees) {
+  // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
+  const auto value = static_cast<double>(degrees);
+  out.fixed(value >= 359.99995 ? 0.0 : value, 4);
 }
 
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health) {
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s) {
   out.raw(R"({"type":"lap","index":)");
   out.integer(lap.index);
+  out.raw(R"(,"t":)");
+  out.fixed(t_s, 6);
   out.raw(R"(,"points":[)");
   bool first = true;
   for (const LapPoint& point : lap.points) {
     out.raw(first ? "[" : ",[");
     first = false;
-    // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
-    const auto degrees = static_cast<double>(point.angle_deg);
-    out.fixed(degrees >= 359.99995 ? 0.0 : degrees, 4);
+    write_angle(out, point.angle_deg);
     out.raw(",");
     out.fixed(point.range_mm, 2);
     out.raw(",");
@@ -108,12 +110,12 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::ui
   out.maybe_flush();
 }
 
-void write_summary(JsonOut& out, const DecoderCounters& counters) {
-  write_summary_fields(out, counters);
+void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start) {
+  write_summary_fields(out, counters, start);
   out.raw("}\n");
 }
 
-void write_summary_fields(JsonOut& out, const DecoderCounters& c) {
+void write_summary_fields(JsonOut& out, const DecoderCounters& c, const std::optional<std::string>& start) {
   out.raw(R"({"type":"summary","bytes":)");
   out.integer(c.bytes);
   out.raw(R"(,"packets":)");
@@ -127,6 +129,10 @@ void write_summary_fields(JsonOut& out, const DecoderCounters& c) {
   if (c.overflow_points > 0) {
     out.raw(R"(,"cut_points":)");
     out.integer(c.overflow_points);
+  }
+  if (start) {
+    out.raw(R"(,"start":)");
+    out.string(*start);
   }
 }
 

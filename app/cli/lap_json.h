@@ -48,13 +48,17 @@ class JsonOut {
   std::string text_;
 };
 
-// {"type":"lap",...} and a newline; g1_info: the model carries CT information (scan_hz, health).
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info);
-// The same with the "health" a live session knows for it (see HealthWatch::lap_health).
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health);
-// {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L} and a newline.
-void write_summary(JsonOut& out, const DecoderCounters& counters);
+// {"type":"lap",...} and a newline; g1_info: the model carries CT information (scan_hz, health),
+// `health` what is known of it (the lap's own CT, or a live session's answer), t_s the lap's time
+// (LapPrinter says which). Commands print laps through LapPrinter (lap_output.h).
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s);
+// An angle as every format prints it: 4 decimals, in [0, 360).
+void write_angle(JsonOut& out, float degrees);
+// {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L
+//  [,"cut_points":C][,"start":"ISO 8601 UTC"]} and a newline; start: the wall-clock time of the
+// stream's start, when it is known.
+void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start);
 // The same without the closing brace and newline, for a summary with more fields.
-void write_summary_fields(JsonOut& out, const DecoderCounters& counters);
+void write_summary_fields(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start);
 
 }  // namespace ydscope::cli

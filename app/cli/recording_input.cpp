@@ -25,13 +25,14 @@ void print_recording_warnings(const char* program, const std::vector<std::string
   for (const std::string& warning : warnings) std::fprintf(stderr, "%s: warning: %s\n", program, warning.c_str());
 }
 
-void read_recording_device_bytes(const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
+void read_recording_device_bytes(const std::string& path,
+                                 FunctionRef<void(std::span<const std::uint8_t>, std::int64_t t_ns)> on_chunk) {
   std::string error;
   auto reader = RecordingReader::open(path, error);
   if (!reader) throw std::runtime_error(error);
   RecordView record;
   while (reader->next(record))
-    if (record.type == RecordType::DeviceToHost) on_chunk(record.payload);
+    if (record.type == RecordType::DeviceToHost) on_chunk(record.payload, record.t_ns);
 }
 
 }  // namespace ydscope::cli

@@ -21,8 +21,9 @@ RecordingPlan recording_plan_or_throw(const std::string& path, RecordingUse use,
 // Each of `warnings` on stderr: "PROGRAM: warning: SENTENCE".
 void print_recording_warnings(const char* program, const std::vector<std::string>& warnings);
 
-// Calls on_chunk with every device->host record's bytes, in order (damage is the plan's to tell).
-// Throws std::runtime_error when the file cannot be read.
-void read_recording_device_bytes(const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk);
+// Calls on_chunk with every device->host record's bytes and recorded time, in order (damage is
+// the plan's to tell). Throws std::runtime_error when the file cannot be read.
+void read_recording_device_bytes(const std::string& path,
+                                 FunctionRef<void(std::span<const std::uint8_t>, std::int64_t t_ns)> on_chunk);
 
 }  // namespace ydscope::cli

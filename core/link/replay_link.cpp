@@ -92,6 +92,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     reschedule();
   }
 
+  // I/O thread: the recorded time of the bytes the last read delivered.
+  std::int64_t delivered_t() const { return delivered_t_; }
+
   // Status, any thread.
   ReplayStatus status() const {
     ReplayStatus status;
@@ -179,6 +182,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     chunk_offset_ += n;
     if (chunk_offset_ == chunk_.size()) have_chunk_ = false;
     if (speed_ == 0.0) anchor_position_ = chunk_t_;
+    delivered_t_ = chunk_t_;
     pass_bytes_ += n;
     status_bytes_.fetch_add(n, std::memory_order_relaxed);
     publish();
@@ -206,6 +210,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   std::vector<std::uint8_t> chunk_;
   std::size_t chunk_offset_ = 0;
   std::int64_t chunk_t_ = 0;
+  std::int64_t delivered_t_ = 0;  // recorded time of the bytes the last read delivered
   bool have_chunk_ = false;
   std::span<std::uint8_t> read_buffer_;
   IoHandler read_handler_;
@@ -289,5 +294,6 @@ void ReplayLink::restart() {
 }
 
 ReplayStatus ReplayLink::status() const { return core_->status(); }
+std::int64_t ReplayLink::recorded_time_of_last_read() const { return core_->delivered_t(); }
 
 }  // namespace ydscope

@@ -74,6 +74,9 @@ class ReplayLink final : public ByteLink {
   void restart();  // back to the start of the recording, keeping speed/pause/loop
 
   ReplayStatus status() const;
+  // I/O thread, in a read's completion handler: the recorded time of the bytes it delivered (a
+  // read never spans two records), so a decoder stamps them as decode of the file would.
+  std::int64_t recorded_time_of_last_read() const;
   // The recording's metadata, every metadata record merged (model, baud, device info...).
   const RecordingMetadata& metadata() const { return metadata_; }
   const RecordingMetadata* recording_metadata() const override { return &metadata_; }

@@ -156,8 +156,9 @@ void RecordingMetadata::merge(const RecordingMetadata& later) {
   for (const auto& [key, value] : later.extra) extra[key] = value;
 }
 
-std::string iso8601_utc_now() {
-  const auto now = std::chrono::system_clock::now();
+std::string iso8601_utc_now() { return iso8601_utc(std::chrono::system_clock::now()); }
+
+std::string iso8601_utc(std::chrono::system_clock::time_point now) {
   const auto seconds = std::chrono::system_clock::to_time_t(now);
   const auto millis = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
   std::tm utc{};

@@ -3,6 +3,7 @@
 // Every field is optional: a recording started before the device answered has no device info
 // yet, and a later metadata record fills it in.
 #include <cstdint>
+#include <chrono>
 #include <map>
 #include <optional>
 #include <string>
@@ -37,5 +38,7 @@ struct RecordingMetadata {
 
 // "2026-11-22T02:20:00.123Z" for the current wall-clock time.
 std::string iso8601_utc_now();
+// The same for any moment: "2026-12-02T05:21:16.123Z".
+std::string iso8601_utc(std::chrono::system_clock::time_point when);
 
 }  // namespace ydscope

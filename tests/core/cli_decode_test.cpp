@@ -82,7 +82,8 @@ TEST(CliDecode, JsonlLapsThenSummary) {
   const auto all = lines(run.out);
   ASSERT_EQ(all.size(), 28u);  // 27 laps + summary
   for (std::size_t i = 0; i < 27; ++i) {
-    EXPECT_EQ(all[i].rfind(R"({"type":"lap","index":)" + std::to_string(i) + R"(,"points":[[)", 0), 0u) << all[i].substr(0, 60);
+    EXPECT_EQ(all[i].rfind(R"({"type":"lap","index":)" + std::to_string(i) + R"(,"t":)", 0), 0u) << all[i].substr(0, 60);
+    EXPECT_NE(all[i].find(R"(,"points":[[)"), std::string::npos) << all[i].substr(0, 60);
     EXPECT_NE(all[i].find(R"(],"scan_hz":null,"health":null,"crc_ok":null,"packets":)"), std::string::npos);
     EXPECT_EQ(all[i].back(), '}');
   }

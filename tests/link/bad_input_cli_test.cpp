@@ -130,7 +130,9 @@ TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
   auto demo = RecordingReader::open(demo_recording(), error);
   ASSERT_TRUE(demo) << error;
   const auto with_scale = [&](const std::string& name, const std::string& scale) {
-    RawRecording recording(1, 16, "model=G6\ndistance_scale=" + scale + "\n");
+    // The demo's start too, so the summaries agree on it as they must on the laps.
+    RawRecording recording(1, 16, "model=G6\ndistance_scale=" + scale + "\nstart_wall_time=" +
+                                      demo->metadata().start_wall_time.value_or("") + "\n");
     demo->rewind();
     RecordView record;
     while (demo->next(record))

@@ -1,0 +1,46 @@
+#pragma once
+// How decode, scan and replay print laps: JSON lines (the schema in `decode --help`), CSV (a header,
+// then one row per point), or only the summary. One place for --format, so the three commands
+// accept the same words and print the same lines.
+//
+// Every lap carries `t`: seconds from the first byte of the first lap printed to the byte that
+// closed this lap, from the receive times the decoder was given: live ones in scan, the recorded
+// ones in decode and replay of a .ydrec (so both print the same t, at any replay speed), and for a
+// raw capture the times the model's baud rate would deliver its bytes at.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/cli/lap_json.h"
+#include "core/protocol/lap.h"
+
+namespace ydscope::cli {
+
+enum class LapFormat { Jsonl, Csv, Summary };
+
+// The --format value (empty: `fallback`); anything else is a UsageError naming the three.
+LapFormat parse_lap_format(const std::optional<std::string>& value, LapFormat fallback);
+
+class LapPrinter {
+ public:
+  // g1_info: the model carries CT information (scan_hz, health).
+  LapPrinter(JsonOut& out, LapFormat format, bool g1_info);
+
+  // With the health the lap's own CT reports (decode, replay), or the one a live session knows.
+  void print(const Lap& lap);
+  void print(const Lap& lap, std::optional<std::uint8_t> health);
+
+  // The summary line follows the laps in jsonl and summary; a CSV holds only its rows.
+  bool wants_summary() const { return format_ != LapFormat::Csv; }
+  // Receive time of the first printed lap's first byte, once a lap was printed.
+  std::optional<std::int64_t> origin_ns() const { return origin_ns_; }
+
+ private:
+  JsonOut& out_;
+  LapFormat format_;
+  bool g1_info_;
+  bool header_written_ = false;
+  std::optional<std::int64_t> origin_ns_;
+};
+
+}  // namespace ydscope::cli
