@@ -68,10 +68,14 @@ void JsonOut::flush() {
   text_.clear();
 }
 
-void write_angle(JsonOut& out, float degrees) {
+void write_point_fields(JsonOut& out, const LapPoint& point) {
   // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
-  const auto value = static_cast<double>(degrees);
-  out.fixed(value >= 359.99995 ? 0.0 : value, 4);
+  const auto degrees = static_cast<double>(point.angle_deg);
+  out.fixed(degrees >= 359.99995 ? 0.0 : degrees, 4);
+  out.raw(",");
+  out.fixed(point.range_mm, 2);
+  out.raw(",");
+  out.integer(static_cast<std::uint64_t>(point.flag));
 }
 
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s) {
@@ -84,11 +88,7 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::ui
   for (const LapPoint& point : lap.points) {
     out.raw(first ? "[" : ",[");
     first = false;
-    write_angle(out, point.angle_deg);
-    out.raw(",");
-    out.fixed(point.range_mm, 2);
-    out.raw(",");
-    out.integer(static_cast<std::uint64_t>(point.flag));
+    write_point_fields(out, point);
     out.raw("]");
   }
   const bool trusted = lap.ct_info_trusted();

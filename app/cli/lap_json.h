@@ -52,8 +52,9 @@ class JsonOut {
 // `health` what is known of it (the lap's own CT, or a live session's answer), t_s the lap's time
 // (LapPrinter says which). Commands print laps through LapPrinter (lap_output.h).
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s);
-// An angle as every format prints it: 4 decimals, in [0, 360).
-void write_angle(JsonOut& out, float degrees);
+// A point's angle,range,flag as every format prints them: the angle with 4 decimals in [0, 360),
+// the range in mm with up to 2.
+void write_point_fields(JsonOut& out, const LapPoint& point);
 // {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L
 //  [,"cut_points":C][,"start":"ISO 8601 UTC"]} and a newline; start: the wall-clock time of the
 // stream's start, when it is known.

@@ -35,11 +35,7 @@ void LapPrinter::print(const Lap& lap, std::optional<std::uint8_t> health) {
     out_.raw(",");
     out_.fixed(t_s, 6);
     out_.raw(",");
-    write_angle(out_, point.angle_deg);
-    out_.raw(",");
-    out_.fixed(point.range_mm, 2);
-    out_.raw(",");
-    out_.integer(static_cast<std::uint64_t>(point.flag));
+    write_point_fields(out_, point);
     out_.raw("\n");
   }
   out_.maybe_flush();

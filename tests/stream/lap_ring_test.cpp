@@ -5,23 +5,13 @@
 #include <atomic>
 #include <thread>
 
+#include "stream/stream_test_support.h"
+
 namespace ydscope {
 namespace {
 
-Lap make_lap(std::uint64_t index, std::size_t points) {
-  Lap lap;
-  lap.index = index;
-  for (std::size_t i = 0; i < points; ++i)
-    lap.points.push_back({static_cast<float>(i), static_cast<float>(index), PointFlag::None});
-  return lap;
-}
-
-// A lap whose every point carries its index, so a torn copy shows up as a mismatch.
-bool lap_is_consistent(const Lap& lap) {
-  for (const auto& point : lap.points)
-    if (point.range_mm != static_cast<float>(lap.index)) return false;
-  return lap.points.size() == lap.index % 300 + 1;
-}
+using test::lap_is_consistent;
+Lap make_lap(std::uint64_t index, std::size_t points) { return test::indexed_lap(index, points); }
 
 TEST(LapRing, PopsInOrderAndReportsEmpty) {
   LapRing queue(4);

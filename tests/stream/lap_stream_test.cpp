@@ -12,25 +12,13 @@
 #include <vector>
 
 #include "core/allocation_counter.h"
+#include "stream/stream_test_support.h"
 
 namespace ydscope {
 namespace {
 
-// A lap whose every point carries its index, so a torn copy shows up as a mismatch.
-Lap make_lap(std::uint64_t index) {
-  Lap lap;
-  lap.index = index;
-  const std::size_t points = index % 300 + 1;
-  for (std::size_t i = 0; i < points; ++i)
-    lap.points.push_back({static_cast<float>(i), static_cast<float>(index), PointFlag::None});
-  return lap;
-}
-
-bool lap_is_consistent(const Lap& lap) {
-  for (const auto& point : lap.points)
-    if (point.range_mm != static_cast<float>(lap.index)) return false;
-  return lap.points.size() == lap.index % 300 + 1;
-}
+using test::lap_is_consistent;
+Lap make_lap(std::uint64_t index) { return test::indexed_lap(index); }
 
 TEST(LapStream, EveryConsumerGetsEveryLapInItsOwnRing) {
   LapStream stream;
