@@ -109,7 +109,7 @@ void Session::Impl::shutdown() {
   stopping_ = true;
   disconnect_requested_ = true;
   pending_config_.reset();
-  recorder_.stop();
+  recording_.stop_file();
   link_.detach();
   notify();
   tick_.cancel();
@@ -163,75 +163,42 @@ RecordingMetadata Session::Impl::capture_start_metadata() const {
   return metadata;
 }
 
-void Session::Impl::update_wire_hook() {
-  if (!recorder_.capturing()) return link_.on_wire({});
-  link_.on_wire([this](bool outgoing, std::span<const std::uint8_t> bytes, std::int64_t ns) {
-    recorder_.bytes(outgoing, bytes, ns);
+void Session::Impl::publish_recording() {
+  const bool active = recording_.file_active();
+  const std::string path = active ? recording_.file_path() : std::string();
+  publish([&](SessionSnapshot& s) {
+    s.recording = active;
+    s.recording_path = path;
   });
 }
 
 void Session::Impl::post_start_recording(std::string path, CommandCallback done) {
   asio::post(io_, [this, path = std::move(path), done = std::move(done)] {
-    CommandResult result;
-    result.what = "record to " + path;
-    recorder_.stop();
-    std::string error;
-    if (recorder_.start(path, capture_start_metadata(), error)) {
-      update_wire_hook();
-      record_metadata();
-      result.ok = true;
-      result.message = "recording every byte to " + path;
-    } else {
-      update_wire_hook();
-      result.message = error;
-    }
-    publish([&](SessionSnapshot& s) {
-      s.recording = recorder_.active();
-      s.recording_path = recorder_.active() ? path : std::string();
-    });
+    const CommandResult result = recording_.start_file(path, capture_start_metadata());
+    if (result.ok) record_metadata();
+    publish_recording();
     finish(result, done);
   });
 }
 
 void Session::Impl::post_stop_recording(CommandCallback done) {
   asio::post(io_, [this, done = std::move(done)] {
-    CommandResult result;
-    result.what = "stop recording";
-    result.ok = true;
-    result.message = recorder_.active() ? "recording saved to " + recorder_.path() : "was not recording";
-    recorder_.stop();
-    update_wire_hook();
-    publish([](SessionSnapshot& s) {
-      s.recording = false;
-      s.recording_path.clear();
-    });
+    const CommandResult result = recording_.stop_file();
+    publish_recording();
     finish(result, done);
   });
 }
 
 void Session::Impl::post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
   asio::post(io_, [this, tap = std::move(tap), done = std::move(done)]() mutable {
-    CommandResult result;
-    result.what = "tap the session's records";
-    recorder_.start_tap(std::move(tap), capture_start_metadata());
-    update_wire_hook();
+    const CommandResult result = recording_.start_tap(std::move(tap), capture_start_metadata());
     record_metadata();
-    result.ok = true;
-    result.message = "every record goes to the tap";
     finish(result, done);
   });
 }
 
 void Session::Impl::post_stop_tap(CommandCallback done) {
-  asio::post(io_, [this, done = std::move(done)] {
-    CommandResult result;
-    result.what = "stop the record tap";
-    result.ok = true;
-    result.message = recorder_.tapping() ? "tap closed" : "no tap was open";
-    recorder_.stop_tap();
-    update_wire_hook();
-    finish(result, done);
-  });
+  asio::post(io_, [this, done = std::move(done)] { finish(recording_.stop_tap(), done); });
 }
 
 void Session::Impl::post_distance_scale(std::optional<double> scale) {
@@ -334,13 +301,12 @@ void Session::Impl::on_tick() {
   if (now - last_rate_tick_ns_ >= kRatePeriodNs) {
     counters_.tick(now);
     last_rate_tick_ns_ = now;
-    if (recorder_.active()) {
-      recorder_.flush();
-      const bool recording = recorder_.active();
-      const std::string error = recorder_.error();
+    if (recording_.file_active()) {
+      const std::optional<std::string> stopped = recording_.flush_file();
+      const bool recording = recording_.file_active();
       publish([&](SessionSnapshot& s) {
         s.recording = recording;
-        if (!recording && !error.empty()) s.message = "recording stopped: " + error;
+        if (stopped) s.message = "recording stopped: " + *stopped;
       });
     }
   }

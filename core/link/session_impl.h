@@ -20,7 +20,7 @@
 #include "core/link/port_watch.h"
 #include "core/link/session.h"
 #include "core/link/session_io.h"
-#include "core/link/session_recorder.h"
+#include "core/link/recording_control.h"
 #include "core/protocol/scan_decoder.h"
 
 namespace ydscope {
@@ -71,9 +71,9 @@ class Session::Impl {
   boost::asio::awaitable<void> serve();
   boost::asio::awaitable<void> run_intent(Intent intent);
   boost::asio::awaitable<void> backoff(std::chrono::milliseconds duration);
+  // A metadata record of what the session knows now, to whatever captures.
   void record_metadata();
-  // Points the link's wire hook at the recorder while anything captures, else clears it.
-  void update_wire_hook();
+  void publish_recording();  // the file's state, for the snapshot
   RecordingMetadata capture_start_metadata() const;
 
   LapStream& stream_;
@@ -103,7 +103,7 @@ class Session::Impl {
   std::int64_t scan_started_ns_ = 0;
   std::int64_t last_rate_tick_ns_ = 0;
   LinkState state_ = LinkState::Idle;
-  SessionRecorder recorder_;
+  RecordingControl recording_{link_};
 
   // Shared with readers.
   mutable std::mutex mutex_;

@@ -272,31 +272,9 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
 }
 
 void Session::Impl::record_metadata() {
-  if (!recorder_.capturing()) return;
-  RecordingMetadata metadata;
-  if (config_) metadata.port = config_->address;
-  const SessionSnapshot s = snapshot();
-  if (s.baud) metadata.baud = s.baud;
-  if (decoder_) metadata.distance_scale = decoder_->distance_scale();
-  if (s.device && s.device->profile) {
-    metadata.model = std::string(s.device->profile->name);
-    if (s.device->model_code) {
-      metadata.model_code = s.device->model_code;
-      metadata.firmware = std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor);
-      metadata.hardware = s.device->hardware;
-      metadata.serial = s.device->serial;
-    }
-  }
-  // The device's settings as last read back, so a recording (and its MCAP) can say them.
-  if (s.scan_hz) {
-    char hz[32];
-    std::snprintf(hz, sizeof hz, "%.2f", *s.scan_hz);
-    metadata.extra["scan_hz"] = hz;
-  }
-  if (s.ranging_khz) metadata.extra["ranging_khz"] = std::to_string(*s.ranging_khz);
-  if (s.health) metadata.extra["health"] = s.health->summary;
-  if (s.power_down_protection) metadata.extra["power_down_protection"] = *s.power_down_protection ? "on" : "off";
-  recorder_.metadata(metadata);
+  if (!recording_.capturing()) return;
+  recording_.record_metadata(recording_metadata_of(snapshot(), config_ ? std::optional(config_->address) : std::nullopt,
+                                                   decoder_ ? std::optional(decoder_->distance_scale()) : std::nullopt));
 }
 
 }  // namespace ydscope
