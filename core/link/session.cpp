@@ -19,7 +19,6 @@ using namespace std::chrono_literals;
 namespace {
 constexpr auto kTickPeriod = 250ms;
 constexpr std::int64_t kRatePeriodNs = 1'000'000'000;
-constexpr std::int64_t kKeepalivePeriodNs = 1'000'000'000;  // the manuals allow up to 3 s
 }  // namespace
 
 // ---- Session: thin forwarding ---------------------------------------------------------------
@@ -79,7 +78,7 @@ Session::Impl::Impl(LapStream& stream, const LapSubscription& main_consumer)
       tick_(io_),
       port_watch_(io_) {
   link_.on_fault([this] { notify(); });
-  link_.on_stream([this](std::span<const std::uint8_t> bytes, std::int64_t rx_ns) { return on_stream(bytes, rx_ns); });
+  link_.on_stream([this](std::span<const std::uint8_t> bytes, std::int64_t rx_ns) { return scan_.feed(bytes, rx_ns); });
   thread_ = std::thread([this] { run_thread(); });
 }
 
@@ -203,7 +202,7 @@ void Session::Impl::post_stop_tap(CommandCallback done) {
 
 void Session::Impl::post_distance_scale(std::optional<double> scale) {
   asio::post(io_, [this, scale] {
-    scale_override_ = scale;
+    scan_.set_scale_override(scale);
     if (profile_) new_decoder();
   });
 }
@@ -269,19 +268,8 @@ SessionSnapshot Session::Impl::wait_until(const std::function<bool(const Session
 // ---- the byte path --------------------------------------------------------------------------
 
 void Session::Impl::new_decoder() {
-  if (decoder_) counters_.close_decoder_epoch();
-  decoder_ = std::make_unique<ScanDecoder>(*profile_, scale_override_);
-  const double scale = decoder_->distance_scale();
+  const double scale = scan_.restart(*profile_);
   publish([scale](SessionSnapshot& s) { s.distance_scale = scale; });
-}
-
-LapEndOutlook Session::Impl::on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns) {
-  if (!decoder_) return {};
-  decoder_->feed(bytes, rx_ns, [this](const Lap& lap) { stream_.publish(lap); });
-  const DecoderCounters c = decoder_->counters();
-  counters_.set_decoder_totals(
-      {c.packets, c.zero_packets, c.laps, c.checksum_errors, c.resync_bytes, c.crc_mismatches, c.overflow_points});
-  return decoder_->lap_end_outlook();
 }
 
 // ---- the tick: rates, stall watchdog, power-down keepalive ----------------------------------
@@ -311,15 +299,11 @@ void Session::Impl::on_tick() {
     }
   }
   if (state_ != LinkState::Scanning || !link_.device_scanning() || !config_) return;
-  if (power_down_wanted_ && now - last_keepalive_ns_ >= kKeepalivePeriodNs) {
+  if (power_down_wanted_ && scan_.keepalive_due(now))
     link_.send(Command::Scan);  // the keepalive the power-down mode needs; SessionIo allows only this
-    last_keepalive_ns_ = now;
-  }
-  const std::int64_t quiet_since = std::max(counters_.last_byte_ns(), scan_started_ns_);
-  const std::int64_t stall_ns = std::chrono::nanoseconds(config_->stall_timeout).count();
-  if (now - quiet_since > stall_ns) {
+  if (const auto quiet_ns = scan_.stalled_for(now, config_->stall_timeout)) {
     char seconds[16];
-    std::snprintf(seconds, sizeof seconds, "%.1f", static_cast<double>(now - quiet_since) * 1e-9);
+    std::snprintf(seconds, sizeof seconds, "%.1f", static_cast<double>(*quiet_ns) * 1e-9);
     const std::string why = std::string("no data for ") + seconds + " s from " +
                             (link_.link() ? link_.link()->describe() : std::string("the port")) +
                             " while scanning: is the lidar powered and its cable seated?";

@@ -21,6 +21,7 @@
 #include "core/link/session.h"
 #include "core/link/session_io.h"
 #include "core/link/recording_control.h"
+#include "core/link/running_scan.h"
 #include "core/protocol/scan_decoder.h"
 
 namespace ydscope {
@@ -57,8 +58,7 @@ class Session::Impl {
   void notify() { signal_.cancel(); }
   void start_tick();
   void on_tick();
-  // Feeds the decoder; returns how many bytes can arrive before a lap could close.
-  LapEndOutlook on_stream(std::span<const std::uint8_t> bytes, std::int64_t rx_ns);
+  // A fresh decoder for profile_ (RunningScan::restart), its scale published.
   void new_decoder();
   void set_state(LinkState state, std::string message);
   void publish(const std::function<void(SessionSnapshot&)>& change);
@@ -96,11 +96,8 @@ class Session::Impl {
   std::optional<SessionConfig> config_;
   std::deque<Intent> intents_;
   const ModelProfile* profile_ = nullptr;
-  std::unique_ptr<ScanDecoder> decoder_;
-  std::optional<double> scale_override_;
+  RunningScan scan_{stream_, counters_};  // decoding, publishing, stall and keep-alive watch
   bool power_down_wanted_ = false;
-  std::int64_t last_keepalive_ns_ = 0;
-  std::int64_t scan_started_ns_ = 0;
   std::int64_t last_rate_tick_ns_ = 0;
   LinkState state_ = LinkState::Idle;
   RecordingControl recording_{link_};

@@ -103,7 +103,7 @@ asio::awaitable<void> Session::Impl::run_intent(Intent intent) {
   }
   if (was_scanning) {
     new_decoder();  // the lap cut by the stop is not a lap
-    scan_started_ns_ = last_keepalive_ns_ = link_clock_ns();
+    scan_.scanning_from(link_clock_ns());
     if (!sequencer_.resume_scan(true)) {
       result.ok = false;
       result.message += "; and A5 60 could not be sent to resume the scan";

@@ -191,7 +191,7 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
       device = recorded_device(*recorded, *profile_);
     publish([&device](SessionSnapshot& s) { s.device = device; });
     link_.listen_stream();
-    scan_started_ns_ = link_clock_ns();
+    scan_.scanning_from(link_clock_ns());
     set_state(LinkState::Scanning, "");
     co_return true;
   }
@@ -262,7 +262,7 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
     set_state(LinkState::Ready, note);
     co_return true;
   }
-  scan_started_ns_ = last_keepalive_ns_ = link_clock_ns();
+  scan_.scanning_from(link_clock_ns());
   if (!link_.start_stream()) {
     error = "could not send A5 60 to " + config.address;
     co_return false;
@@ -274,7 +274,7 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
 void Session::Impl::record_metadata() {
   if (!recording_.capturing()) return;
   recording_.record_metadata(recording_metadata_of(snapshot(), config_ ? std::optional(config_->address) : std::nullopt,
-                                                   decoder_ ? std::optional(decoder_->distance_scale()) : std::nullopt));
+                                                   scan_.distance_scale()));
 }
 
 }  // namespace ydscope
