@@ -39,7 +39,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
       session_(16, [] { glfwPostEmptyEvent(); }, "view"),
       measured_laps_(session_.lap_stream().subscribe("statistics", 32)),
       source_(session_),
-      view_(std::make_unique<ui::PolarView>()),
+      view_(std::make_unique<ui::PolarView>(options.screenshot_path.empty())),
       start_(std::chrono::steady_clock::now()),
       last_frame_(start_) {
   const auto dir = ui::config_directory();
@@ -63,9 +63,11 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", settings_.last_replay_file.c_str());
   model_.ports = discover_ports();
   restore_sectors();
+  install_key_callback();
 }
 
 App::~App() {
+  remove_key_callback();
   if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
   source_.stop();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
@@ -106,6 +108,8 @@ std::string App::start_source() {
       request.kind = ui::ConnectRequest::Kind::Replay;
       request.address = options_.replay_file;
       request.model = options_.model;
+      request.replay_speed = options_.replay_speed;
+      request.replay_loop = !options_.replay_once;
       settings_.last_replay_file = options_.replay_file;
       std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", options_.replay_file.c_str());
       model_.replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
@@ -124,6 +128,9 @@ std::string App::start(const ui::ConnectRequest& request) {
   model_.source_text = source_.description();
   model_.sim_active = source_.sim_active();
   model_.replay.available = source_.replay_active();
+  // The Replay tab shows what the new link plays from its first frame, not the defaults.
+  model_.replay.speed = static_cast<float>(request.replay_speed);
+  model_.replay.loop = request.replay_loop;
   model_.source_warnings = source_.warnings();
   for (const std::string& warning : model_.source_warnings) std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
   return error;
@@ -184,6 +191,7 @@ void App::start_clean() {
     session_.set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
   }
   last_set_scan_hz_.reset();
+  last_replay_status_.reset();
   last_lap_at_.reset();
   pending_latency_rx_ns_ = 0;
   history_.clear();
@@ -191,18 +199,6 @@ void App::start_clean() {
   while (measured_laps_->try_pop(measured_lap_)) {
   }  // the old source's laps measure nothing of the new one
   view_->invalidate();
-}
-
-void App::handle_keys() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggle_fullscreen();
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false)) settings_.show_panels = !settings_.show_panels;
-  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model_.requests.push_back(ui::ResetView{});
-  if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) settings_.auto_range = true;
-  if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) model_.paused_view = !model_.paused_view;
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) model_.requests.push_back(ui::SaveScreenshot{});
-  if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) && io.KeyCtrl) quit_ = true;
 }
 
 void App::toggle_fullscreen() {
@@ -245,7 +241,8 @@ void App::frame() {
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
   view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
-  view_->handle_input(settings_);
+  view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
+                       std::chrono::duration<double>(last_frame_ - start_).count());
   if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
     char spec[48];
     std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
@@ -253,6 +250,7 @@ void App::frame() {
   }
   view_->auto_range(history_, settings_);
   model_.cloud = view_->update_cloud(history_, settings_);
+  model_.laps_on_screen = history_.size();
   model_.points_drawn_total = view_->vertex_count();
   ui::draw_view_header(model_, sidebar, view_w);
 

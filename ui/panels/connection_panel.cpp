@@ -146,25 +146,35 @@ void sim_section(UiModel& m) {
   }
 }
 
+// The recording in the field, decoded as chosen, at the speed and loop the tab shows.
+ConnectRequest replay_request(const UiModel& m) {
+  ConnectRequest r;
+  r.kind = ConnectRequest::Kind::Replay;
+  r.address = m.replay_text;
+  if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
+  r.replay_speed = m.replay.speed;
+  r.replay_loop = m.replay.loop;
+  return r;
+}
+
 void replay_section(UiModel& m) {
   ImGui::InputText("recording", m.replay_text, sizeof m.replay_text);
   // For a recording that names no model (or one this ydscope does not know), as --model does.
   model_combo("decode as", m.replay_model_choice, "as recorded");
-  if (ImGui::Button("Open recording") && m.replay_text[0]) {
-    ConnectRequest r;
-    r.kind = ConnectRequest::Kind::Replay;
-    r.address = m.replay_text;
-    if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
-    m.requests.push_back(r);
-  }
-  if (m.replay.available) {
+  if (ImGui::Button("Open recording") && m.replay_text[0]) m.requests.push_back(replay_request(m));
+  if (m.replay.available && m.replay.ended) {
+    // The link is closed at its end: playing again opens the recording anew, as it was set.
+    ImGui::SameLine();
+    if (ImGui::Button("Play again") && m.replay_text[0]) m.requests.push_back(replay_request(m));
+    ImGui::TextDisabled("played to the end at %.2fx (loop off)", static_cast<double>(m.replay.speed));
+  } else if (m.replay.available) {
     ImGui::SameLine();
     bool changed = false;
     if (ImGui::Button(m.replay.paused ? "Play" : "Pause")) {
       m.replay.paused = !m.replay.paused;
       changed = true;
     }
-    changed |= ImGui::SliderFloat("speed", &m.replay.speed, 0.25f, 8.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("speed", &m.replay.speed, kMinReplaySpeedShown, kMaxReplaySpeedShown, "%.2fx", ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::Checkbox("loop", &m.replay.loop);
     if (changed) m.requests.push_back(ControlReplay{m.replay.paused, static_cast<double>(m.replay.speed), m.replay.loop});
     const float fraction = m.replay.duration_s > 0.0 ? static_cast<float>(m.replay.position_s / m.replay.duration_s) : 0.0f;

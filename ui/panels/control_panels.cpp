@@ -140,8 +140,14 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   if (ImGui::Button(m.paused_view ? "Resume" : "Freeze")) m.paused_view = !m.paused_view;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) m.requests.push_back(SaveScreenshot{});
+  // The export takes what is on screen: frozen laps while frozen.
+  ImGui::TextDisabled("CSV");
   ImGui::SameLine();
-  if (ImGui::Button("Export CSV")) m.requests.push_back(ExportLapCsv{});
+  if (ImGui::Button("Newest lap")) m.requests.push_back(ExportLapCsv{false});
+  ImGui::SameLine();
+  char every[48];
+  std::snprintf(every, sizeof every, "All %zu shown laps", m.laps_on_screen);
+  if (ImGui::Button(every)) m.requests.push_back(ExportLapCsv{true});
   if (!m.status_message.empty()) wrapped_text(m.status_message.c_str());
 }
 

@@ -36,7 +36,12 @@ struct ReplayControl {
   double position_s = 0.0;  // filled by the app from the replay's status
   double duration_s = 0.0;
   std::uint64_t passes = 0;  // times it went round to its start
+  bool ended = false;        // played to its end without loop: nothing more comes
 };
+
+// The speeds the Replay tab's slider offers (and --speed accepts).
+inline constexpr float kMinReplaySpeedShown = 0.25f;
+inline constexpr float kMaxReplaySpeedShown = 8.0f;
 
 struct UiModel {
   // ---- filled by the app each frame -------------------------------------------------------------
@@ -55,6 +60,7 @@ struct UiModel {
   std::uint64_t laps_shown = 0;
   std::uint64_t laps_skipped = 0;  // drained but never shown (its LapRing::skipped)
   std::size_t points_in_lap = 0;
+  std::size_t laps_on_screen = 0;  // the persistence's laps the view draws now
   PointCloudStats cloud;
   std::size_t points_drawn_total = 0;
   std::optional<std::uint8_t> ct_health;  // G1 CT health of the newest lap that carried it

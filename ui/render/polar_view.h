@@ -9,7 +9,9 @@
 
 #include "ui/render/polar_overlay.h"
 #include "ui/render/polar_renderer.h"
+#include "ui/view/auto_range_fit.h"
 #include "ui/view/hit_test.h"
+#include "ui/view/hover_gate.h"
 #include "ui/view/lap_history.h"
 #include "ui/view/settings.h"
 
@@ -17,12 +19,14 @@ namespace ydscope::ui {
 
 class PolarView {
  public:
-  PolarView() = default;
+  // `hover`: show the nearest point under a pointer that moves (off for screenshots).
+  explicit PolarView(bool hover = true) : hover_gate_(hover) {}
 
   // The part of the window the view owns (window pixels).
   void set_viewport(Vec2 origin, Vec2 size);
   // Mouse input from ImGui's IO for this frame; ignored when ImGui wants the mouse (over a panel).
-  void handle_input(ViewSettings& settings);
+  // `pointer_in_window` is the window system's word (GLFW_HOVERED); `now_s` any steady clock.
+  void handle_input(ViewSettings& settings, bool pointer_in_window, double now_s);
   void reset(ViewSettings& settings);
   void clear_ruler() { ruler_.clear(); }
   // The watched sectors to outline, in the order the Sectors panel lists them.
@@ -52,10 +56,10 @@ class PolarView {
   float grid_key_[5] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
   bool dirty_ = true;
-  bool fitted_once_ = false;
-  float fitted_range_mm_ = 0.0f;
+  AutoRangeFit fit_;
   ViewSettings last_settings_;
   ColourParams last_colours_;
+  HoverGate hover_gate_;
   std::optional<Vec2> hover_cursor_;
   std::optional<Vec2> cursor_world_;
   std::vector<SectorShape> sectors_;
