@@ -241,6 +241,7 @@ void App::frame() {
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
   view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
+  view_->set_status_band(ui::status_band_height());
   view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
                        std::chrono::duration<double>(last_frame_ - start_).count());
   if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view

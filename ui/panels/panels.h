@@ -20,6 +20,8 @@ float draw_sidebar(UiModel& model, ViewSettings& settings);
 
 // Status line over the polar view: model, state, measured rate, health alert, badges, banner.
 void draw_view_header(const UiModel& model, float view_left, float view_width);
+// The height at the bottom of the view that the status line takes (grid labels keep out).
+float status_band_height();
 // When model.view_state says the picture is not live: dim the view and say why in large type.
 void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 

@@ -63,6 +63,8 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
     ImGui::SameLine();
     ImGui::TextDisabled("Tab: panels   F11: full-screen");
     ImGui::Separator();
+    // Every widget leaves room on its right for its label, so none is cut off at a narrow sidebar.
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
     draw_connection_panel(m);
     draw_device_panel(m);
     draw_health_panel(m);
@@ -72,6 +74,7 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
     draw_stats_panel(m);
     draw_sectors_panel(m);
     draw_plots_panel(m);
+    ImGui::PopItemWidth();
   }
   width = ImGui::GetWindowWidth();
   ImGui::End();

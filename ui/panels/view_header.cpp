@@ -23,6 +23,8 @@ ImU32 severity_colour(Severity s) {
   return IM_COL32(255, 255, 255, 255);
 }
 
+float status_margin() { return ImGui::GetFontSize() * 0.6f; }
+
 ImFont* big_font() { return display_font() ? display_font() : ImGui::GetFont(); }
 
 // A rounded pill with text; returns its width so badges can be laid out right to left.
@@ -39,9 +41,12 @@ float badge(ImDrawList* draw, ImVec2 top_right, const char* text, ImU32 fill, Im
 
 }  // namespace
 
+float status_band_height() { return ImGui::GetTextLineHeight() + 2.0f * status_margin(); }
+
 void draw_view_header(const UiModel& m, float view_left, float view_width) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float pad = 72.0f;  // above the spoke labels that sit in the bottom corners
+  // The status line sits in its own band at the bottom, which grid labels keep out of.
+  const float pad = status_band_height() - status_margin();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bottom = ImGui::GetMainViewport()->WorkSize.y;
   const float wrap = std::max(view_width - 32.0f, 100.0f);

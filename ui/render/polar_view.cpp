@@ -116,11 +116,11 @@ void PolarView::draw(const LapHistory& history, const ViewSettings& settings, fl
   PolarStyle style;
   style.point_size_px = settings.point_size_px;
   style.show_grid = settings.show_grid;
-  const float key[5] = {view_.px_per_mm(), view_.centre_world().x, view_.centre_world().y, view_.viewport_size().x,
-                        view_.viewport_size().y};
+  const float key[6] = {view_.px_per_mm(),        view_.centre_world().x,   view_.centre_world().y,
+                        view_.viewport_size().x, view_.viewport_size().y, status_band_px_};
   if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
     std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
-    grid_ = layout_grid(view_);
+    grid_ = layout_grid(view_, ring_spacing_px(view_.viewport_size()), 30.0f, 45.0f, 18.0f, status_band_px_);
     build_grid_geometry(view_, grid_, style.grid, grid_lines_);
     renderer_.upload_grid(grid_lines_);
   }

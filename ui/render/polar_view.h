@@ -24,6 +24,8 @@ class PolarView {
 
   // The part of the window the view owns (window pixels).
   void set_viewport(Vec2 origin, Vec2 size);
+  // The bottom of the view where the status line is written: grid labels keep out of it.
+  void set_status_band(float px) { status_band_px_ = px; }
   // Mouse input from ImGui's IO for this frame; ignored when ImGui wants the mouse (over a panel).
   // `pointer_in_window` is the window system's word (GLFW_HOVERED); `now_s` any steady clock.
   void handle_input(ViewSettings& settings, bool pointer_in_window, double now_s);
@@ -52,8 +54,9 @@ class PolarView {
   std::vector<PointVertex> vertices_;
   std::vector<LineVertex> grid_lines_;
   GridLayout grid_;
-  // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height).
-  float grid_key_[5] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  float status_band_px_ = 0.0f;
+  // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height, band).
+  float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
   bool dirty_ = true;
   AutoRangeFit fit_;
