@@ -272,7 +272,12 @@ void draw_connection_panel(UiModel& m) {
   ImGui::SameLine();
   wrapped_text(m.source_text.empty() ? "none" : m.source_text.c_str());
   link_state_text(s.state, s.message.c_str());
-  if (!s.link.empty()) ImGui::TextDisabled("%s", s.link.c_str());
+  if (!s.link.empty() && s.message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", s.link.c_str());
+  } else if (!s.link.empty()) {
+    ImGui::TextDisabled("%s", s.link.c_str());
+  }
   if (ImGui::BeginTabBar("sources")) {
     const auto tab_flags = [&m](int tab) {
       return m.show_source_tab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;

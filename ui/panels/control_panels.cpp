@@ -41,17 +41,17 @@ void draw_frequency_panels(UiModel& m) {
 
   if (ImGui::CollapsingHeader("Scan frequency", ImGuiTreeNodeFlags_DefaultOpen)) {
     const auto measured = m.scan_rate.hz();
-    if (ImGui::BeginTable("scanhz", 2, ImGuiTableFlags_SizingStretchSame)) {
+    // Set and measured side by side on one row: the sidebar's Lidar tab must fit 800 px.
+    if (ImGui::BeginTable("scanhz", 4, ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
+      ImGui::TableNextColumn();
       ImGui::TextDisabled("set (A5 0D)");
-      ImGui::TableSetColumnIndex(1);
-      ImGui::TextDisabled("measured");
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
+      ImGui::TableNextColumn();
       if (s.scan_hz) ImGui::Text("%.2f Hz", *s.scan_hz);
       else ImGui::TextDisabled("-");
-      ImGui::TableSetColumnIndex(1);
+      ImGui::TableNextColumn();
+      ImGui::TextDisabled("measured");
+      ImGui::TableNextColumn();
       if (measured) ImGui::Text("%.2f Hz", *measured);
       else ImGui::TextDisabled("-");
       ImGui::EndTable();
@@ -75,8 +75,11 @@ void draw_frequency_panels(UiModel& m) {
     ImGui::SameLine();
     if (ImGui::Button("Set target")) m.requests.push_back(SetScanHz{static_cast<double>(m.scan_target_hz)});
     if (!can_command) ImGui::EndDisabled();
+    if (profile) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("%s: %.0f-%.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
+    }
     command_feedback_line(m, CommandControl::ScanFrequency);
-    if (profile) ImGui::TextDisabled("%s allows %.0f to %.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
   }
 
   if (ImGui::CollapsingHeader("Ranging frequency")) {
@@ -152,7 +155,7 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
 }
 
 void draw_filter_panel(UiModel& m, ViewSettings& v) {
-  if (!ImGui::CollapsingHeader("Interference filter")) return;
+  if (!ImGui::CollapsingHeader("Interference filter", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Checkbox("drop specular (flag 2)", &v.interference.drop_specular);
   ImGui::SameLine();
   ImGui::TextDisabled("%d / lap", static_cast<int>(m.cloud.newest_specular_removed));

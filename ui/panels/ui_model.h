@@ -43,6 +43,8 @@ struct ReplayControl {
 inline constexpr float kMinReplaySpeedShown = 0.25f;
 inline constexpr float kMaxReplaySpeedShown = 8.0f;
 
+enum class SidebarTab { Lidar, View, Statistics };
+
 struct UiModel {
   // ---- filled by the app each frame -------------------------------------------------------------
   SessionSnapshot snap;
@@ -79,6 +81,8 @@ struct UiModel {
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();
   // Opens the Connection tab of the current source once: 0 port, 1 virtual, 2 replay; -1 none.
   int show_source_tab = -1;
+  // Opens a sidebar tab once (SidebarTab); -1 none.
+  int show_sidebar_tab = -1;
 
   // ---- requests from the panels, keys and mouse, carried out in order and cleared by the app -----
   std::vector<UiRequest> requests;

@@ -30,6 +30,7 @@ ImFont* display_font() { return g_display_font; }
 
 Fonts apply_theme(float scale) {
   ImGuiIO& io = ImGui::GetIO();
+  ImGui::GetStyle() = ImGuiStyle();  // called again on a scale change: sizes scale from the defaults
   Fonts fonts;
   ImFontConfig config;
   config.OversampleH = 2;
