@@ -260,6 +260,11 @@ void App::frame() {
   glClear(GL_COLOR_BUFFER_BIT);
   view_->draw(history_, settings_, fb_scale, fb_h);
   ui::draw_view_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
+  model_.booth = fullscreen_;
+  if (model_.booth) {
+    model_.legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
+    ui::draw_booth_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
+  }
   ImGui::Render();
   glViewport(0, 0, fb_w, fb_h);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

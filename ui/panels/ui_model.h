@@ -11,6 +11,7 @@
 #include "core/link/session_snapshot.h"
 #include "core/sim/faults.h"
 #include "ui/panels/ui_request.h"
+#include "ui/view/colour_legend.h"
 #include "ui/view/command_feedback.h"
 #include "ui/view/health_alerts.h"
 #include "ui/view/health_timeline.h"
@@ -76,6 +77,8 @@ struct UiModel {
   bool paused_view = false;               // the view holds the current laps
   ViewState view_state;                   // live, or dimmed with the reason in words
   std::vector<HealthAlert> alerts;        // worst first, for the status line and the badge
+  bool booth = false;                     // the full-screen view: large type and a legend
+  ColourLegend legend;                    // what the colours mean, for the booth view
   // Outcomes of device commands for the panel beside the control that issued them. Shared with
   // the session's completion callbacks, which run on the I/O thread.
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();

@@ -45,6 +45,8 @@ class PolarView {
   void draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale, int framebuffer_height);
 
   const ViewTransform& transform() const { return view_; }
+  // The colours the cloud was last built with (range near/far following auto-range).
+  const ColourParams& colours_in_use() const { return last_colours_; }
   std::size_t vertex_count() const { return vertices_.size(); }
 
  private:
