@@ -144,6 +144,7 @@ void App::drain_laps() {
   if (drained > 0) last_lap_at_ = std::chrono::steady_clock::now();
   if (drained == 0 || model_.paused_view) return;
   history_.push(lap_);
+  motion_.add_lap(lap_);
   view_->invalidate();
   ++model_.laps_shown;
   model_.points_in_lap = lap_.points.size();
@@ -195,6 +196,7 @@ void App::start_clean() {
   last_lap_at_.reset();
   pending_latency_rx_ns_ = 0;
   history_.clear();
+  motion_.clear();
   lap_ = {};
   while (measured_laps_->try_pop(measured_lap_)) {
   }  // the old source's laps measure nothing of the new one
@@ -211,10 +213,15 @@ void App::toggle_fullscreen() {
     glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
     fullscreen_ = true;
     settings_.show_panels = false;
+    // The booth view shows who walks past: motion colours, back to the user's mode on leaving.
+    windowed_colour_mode_ = settings_.colours.mode;
+    settings_.colours.mode = ui::ColourMode::Motion;
   } else {
     glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3], 0);
     fullscreen_ = false;
     settings_.show_panels = true;
+    if (windowed_colour_mode_ && settings_.colours.mode == ui::ColourMode::Motion) settings_.colours.mode = *windowed_colour_mode_;
+    windowed_colour_mode_.reset();
   }
 }
 
@@ -250,7 +257,7 @@ void App::frame() {
     model_.requests.push_back(ui::WatchSector{spec});
   }
   view_->auto_range(history_, settings_);
-  model_.cloud = view_->update_cloud(history_, settings_);
+  model_.cloud = view_->update_cloud(history_, settings_, &motion_);
   model_.laps_on_screen = history_.size();
   model_.points_drawn_total = view_->vertex_count();
   ui::draw_view_header(model_, sidebar, view_w);

@@ -13,6 +13,7 @@
 #include "ui/panels/ui_model.h"
 #include "ui/render/polar_view.h"
 #include "ui/view/lap_history.h"
+#include "ui/view/motion_background.h"
 #include "ui/view/settings.h"
 
 struct GLFWwindow;
@@ -94,6 +95,8 @@ class App {
   Lap measured_lap_;
   LidarSource source_;
   ui::LapHistory history_;
+  ui::MotionBackground motion_;  // the room, learned from the laps the view shows
+  std::optional<ui::ColourMode> windowed_colour_mode_;  // restored on leaving the booth view
   Lap lap_;
   std::unique_ptr<ui::PolarView> view_;
   std::chrono::steady_clock::time_point start_;

@@ -1,6 +1,8 @@
 // The booth view (--fullscreen) on a 1920x1080 screen: the model is written in large type,
-// legible across a stand, and a colour legend (a range bar from blue to red with ticks in metres)
-// says what the colours mean. The test starts its own Xvfb of that size.
+// legible across a stand; motion highlighting is on, so the virtual room's moving object is hot
+// and its walls calm; and a legend in the bottom-right corner names both colours. (The range
+// legend's bar and ticks are checked without a display, tests/ui/colour_legend_test.cpp.) The test
+// starts its own Xvfb of that size.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -12,24 +14,10 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-// The longest run of saturated pixels along one row of `r` that goes from blue to red.
-int longest_blue_to_red_run(const Image& image, Rect r) {
-  int best = 0;
-  for (int y = r.y0; y < r.y1; ++y) {
-    int start = -1;
-    for (int x = r.x0; x <= r.x1; ++x) {
-      const bool on = x < r.x1 && is_point_pixel(image.at(x, y));
-      if (on && start < 0) start = x;
-      if (!on && start >= 0) {
-        const int length = x - start;
-        const unsigned char* first = image.at(start + 2, y);
-        const unsigned char* last = image.at(x - 3, y);
-        if (length > best && first[2] > first[0] && last[0] > last[2]) best = length;
-        start = -1;
-      }
-    }
-  }
-  return best;
+// Motion mode's colours (ui/view/colour_map.cpp motion_colour), with some room for blending.
+bool hot(const unsigned char* p) { return p[0] > 210 && p[1] > 60 && p[1] < 140 && p[2] < 100; }
+bool calm(const unsigned char* p) {
+  return std::abs(p[0] - 88) < 30 && std::abs(p[1] - 128) < 30 && std::abs(p[2] - 170) < 30;
 }
 
 // Height of the first block of rows holding text-white pixels in `r`: the first line's glyphs.
@@ -43,23 +31,32 @@ int first_text_line_height(const Image& image, Rect r) {
   return 0;
 }
 
-TEST(AppBoothView, LargeTypeAndAColourLegendAt1080p) {
+TEST(AppBoothView, LargeTypeMotionColoursAndTheirLegendAt1080p) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const std::filesystem::path dir = fresh_temp_dir("ydscope-booth");
   const std::string png = (dir / "booth.png").string();
+  // 150 frames: some 40 laps, enough for the room to be learned (MotionBackground).
   const std::string command = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + dir.string() +
                               "' xvfb-run -a -s '-screen 0 1920x1080x24' '" + YDSCOPE_APP_PATH +
-                              "' --sim G6 --fullscreen --screenshot '" + png + "' --frames 60 > /dev/null";
+                              "' --sim G6 --scene room --fullscreen --screenshot '" + png + "' --frames 150 > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const Image image = load_png(png);
   ASSERT_TRUE(image) << png;
   ASSERT_EQ(image.width, 1920) << "not full screen";
   ASSERT_EQ(image.height, 1080) << "not full screen";
 
-  // The legend's bar: a long unbroken band from blue to red in the bottom-right corner (scan
-  // points never make a straight run that long, nor one ordered by colour).
-  const int run = longest_blue_to_red_run(image, {image.width / 2, image.height * 2 / 3, image.width, image.height});
-  EXPECT_GT(run, 250) << "no colour legend bar in the bottom-right corner";
+  // The scan, away from the legend's corner: a hot moving object in a calm room.
+  const Rect scan{image.width / 4, 0, image.width * 3 / 4, image.height * 7 / 8};
+  const int moving = count_pixels(image, scan, hot);
+  const int room = count_pixels(image, scan, calm);
+  EXPECT_GT(moving, 60) << "nothing in the room is painted as moving";
+  EXPECT_GT(room, 5 * moving) << "the room's walls are not the calm colour, or too much is hot";
+
+  // The legend: both colours' swatches in the bottom-right corner, with words beside them.
+  const Rect corner{image.width * 3 / 4, image.height * 3 / 4, image.width, image.height};
+  EXPECT_GT(count_pixels(image, corner, hot), 80) << "no 'moving' swatch in the legend";
+  EXPECT_GT(count_pixels(image, corner, calm), 80) << "no 'room' swatch in the legend";
+  EXPECT_GT(count_pixels(image, corner, is_text_pixel), 300) << "no legend words";
 
   // The model, top left, in type several times the panels' 16 px: its first line of glyphs is
   // taller than 16 px text could be.

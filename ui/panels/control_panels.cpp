@@ -112,8 +112,12 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::RadioButton("flag", &mode, 1);
   ImGui::SameLine();
   ImGui::RadioButton("lap age", &mode, 2);
+  ImGui::SameLine();
+  ImGui::RadioButton("motion", &mode, 3);
+  help_marker("Returns closer than the room learned over the last 5 s (people walking past) hot, with fading trails; "
+              "the room calm. The booth view's default.");
   v.colours.mode = static_cast<ColourMode>(mode);
-  if (v.colours.mode != ColourMode::Flag) {
+  if (v.colours.mode != ColourMode::Flag && v.colours.mode != ColourMode::Motion) {
     int palette = static_cast<int>(v.colours.palette);
     ImGui::TextDisabled("palette  ");
     ImGui::SameLine();

@@ -92,7 +92,8 @@ void PolarView::auto_range(const LapHistory& history, const ViewSettings& settin
   if (const auto range = fit_.update(settings.auto_range, target)) view_.fit_range(*range);
 }
 
-const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings) {
+const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings,
+                                               const MotionBackground* motion) {
   // With auto-range the range palette spans what is shown, so a 30 m TG scan and a 3 m room both
   // use all of it; a manual view keeps the panel's near/far.
   ColourParams colours = settings.colours;
@@ -104,7 +105,7 @@ const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const 
   last_settings_ = settings;
   last_colours_ = colours;
   if (dirty_) {
-    stats_ = build_point_cloud(history, colours, settings.interference, vertices_);
+    stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion);
     renderer_.upload_points(vertices_);
     dirty_ = false;
   }

@@ -40,7 +40,8 @@ class PolarView {
   // Fits the view to the newest lap when auto-range is on.
   void auto_range(const LapHistory& history, const ViewSettings& settings);
   // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics.
-  const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings);
+  const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings,
+                                      const MotionBackground* motion = nullptr);
   // GL layer then ImGui overlay (background draw list, under the panels).
   void draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale, int framebuffer_height);
 

@@ -41,6 +41,10 @@ ColourLegend describe_legend(const ColourParams& colours, int persistence_laps) 
       legend.ticks = {{0.0f, "newest"}, {1.0f, oldest == 1 ? "1 lap ago" : std::to_string(oldest) + " laps ago"}};
       break;
     }
+    case ColourMode::Motion:
+      legend.title = "motion";
+      legend.swatches = {{motion_colour(true), "moving (closer than the room)"}, {motion_colour(false), "the room"}};
+      break;
     case ColourMode::Flag:
       legend.title = "interference flag";
       legend.swatches = {{flag_colour(PointFlag::None), "no flag"},

@@ -46,6 +46,7 @@ std::string_view colour_mode_name(ColourMode mode) {
     case ColourMode::Range: return "range";
     case ColourMode::Flag: return "interference flag";
     case ColourMode::LapAge: return "lap age";
+    case ColourMode::Motion: return "motion";
   }
   return "?";
 }
@@ -76,7 +77,9 @@ Rgba8 flag_colour(PointFlag flag) {
   return {255, 255, 255, 255};
 }
 
-Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age) {
+Rgba8 motion_colour(bool moving) { return moving ? Rgba8{255, 96, 48, 255} : Rgba8{88, 128, 170, 255}; }
+
+Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age, bool moving) {
   age = std::clamp(age, 0.0f, 1.0f);
   Rgba8 c;
   switch (params.mode) {
@@ -87,6 +90,8 @@ Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age)
     }
     case ColourMode::Flag: c = flag_colour(point.flag); break;
     case ColourMode::LapAge: c = sample_palette(params.palette, 1.0f - age); break;
+    // Older laps' hot points, fading, are the trails of whoever walked past.
+    case ColourMode::Motion: c = motion_colour(moving); break;
   }
   if (params.fade_old_laps) {
     // The newest lap is opaque; the oldest kept one is barely there.
