@@ -101,7 +101,7 @@ std::string App::start_source() {
       request.scene = options_.scene;
       // The Virtual tab shows what runs.
       model_.sim_model_choice = model_choice(options_.model, model_.sim_model_choice);
-      model_.sim_scene_choice = options_.scene == "room" ? 0 : 1;
+      model_.sim_scene_choice = options_.scene == "room" ? 0 : options_.scene == "booth" ? 2 : 1;
       break;
     }
     case SourceKind::Replay:

@@ -1,6 +1,7 @@
 // The booth view (--fullscreen) on a 1920x1080 screen: the model is written in large type,
-// legible across a stand; motion highlighting is on, so the virtual room's moving object is hot
-// and its walls calm; and a legend in the bottom-right corner names both colours. (The range
+// legible across a stand; motion highlighting is on, so on the virtual booth scene the visitors
+// walking along the aisle ahead are hot and the stand's own walls behind the lidar calm; and a
+// legend in the bottom-right corner names both colours. (The range
 // legend's bar and ticks are checked without a display, tests/ui/colour_legend_test.cpp.) The test
 // starts its own Xvfb of that size.
 #include <gtest/gtest.h>
@@ -38,19 +39,21 @@ TEST(AppBoothView, LargeTypeMotionColoursAndTheirLegendAt1080p) {
   // 150 frames: some 40 laps, enough for the room to be learned (MotionBackground).
   const std::string command = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + dir.string() +
                               "' xvfb-run -a -s '-screen 0 1920x1080x24' '" + YDSCOPE_APP_PATH +
-                              "' --sim G6 --scene room --fullscreen --screenshot '" + png + "' --frames 150 > /dev/null";
+                              "' --sim G6 --scene booth --fullscreen --screenshot '" + png + "' --frames 150 > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const Image image = load_png(png);
   ASSERT_TRUE(image) << png;
   ASSERT_EQ(image.width, 1920) << "not full screen";
   ASSERT_EQ(image.height, 1080) << "not full screen";
 
-  // The scan, away from the legend's corner: a hot moving object in a calm room.
-  const Rect scan{image.width / 4, 0, image.width * 3 / 4, image.height * 7 / 8};
-  const int moving = count_pixels(image, scan, hot);
-  const int room = count_pixels(image, scan, calm);
-  EXPECT_GT(moving, 60) << "nothing in the room is painted as moving";
-  EXPECT_GT(room, 5 * moving) << "the room's walls are not the calm colour, or too much is hot";
+  // Ahead of the lidar (the upper half) the aisle: visitors walking past, hot. Behind it (the
+  // lower half, away from the legend's corner) the stand's walls and kiosk: calm, none hot.
+  const int cy = image.height / 2;
+  const Rect aisle{image.width / 4, 0, image.width * 3 / 4, cy - 20};
+  const Rect stand{image.width / 4, cy + 20, image.width * 3 / 4, image.height * 7 / 8};
+  EXPECT_GT(count_pixels(image, aisle, hot), 150) << "no visitor in the aisle is painted as moving";
+  EXPECT_GT(count_pixels(image, stand, calm), 300) << "the stand's walls are not the calm colour";
+  EXPECT_LT(count_pixels(image, stand, hot), 20) << "the stand's static walls are painted as moving";
 
   // The legend: both colours' swatches in the bottom-right corner, with words beside them.
   const Rect corner{image.width * 3 / 4, image.height * 3 / 4, image.width, image.height};

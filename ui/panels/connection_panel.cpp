@@ -15,7 +15,7 @@ namespace {
 
 constexpr const char* kBauds[] = {"model default", "115200", "128000", "230400", "512000"};
 constexpr std::uint32_t kBaudValues[] = {0, 115200, 128000, 230400, 512000};
-constexpr const char* kScenes[] = {"room", "demo"};
+constexpr const char* kScenes[] = {"room", "demo", "booth"};
 constexpr const char* kHosts[] = {"manual only", "YDLidar-SDK host"};
 constexpr const char* kDeliveries[] = {"whole packets", "USB bursts", "random splits"};
 
