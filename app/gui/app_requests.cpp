@@ -2,7 +2,6 @@
 // and mouse, in the order they came. Device commands go to the session with a callback that shows
 // their outcome beside the control that asked; source, replay and virtual-lidar requests go to the
 // LidarSource; view and file requests are done here.
-#include <chrono>
 #include <cstdio>
 #include <type_traits>
 #include <variant>
@@ -80,11 +79,8 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
           }
           // What is on screen, frozen or live: the view's laps, never a newer one it has not shown.
           const std::size_t laps = r.every_shown_lap ? history_.size() : 1;
-          const ui::ReceiveClock clock{std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                           std::chrono::steady_clock::now().time_since_epoch()).count(),
-                                       std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count()};
           const std::string path = timestamped_name("csv");
-          const std::string error = save_text_file(path, ui::shown_laps_csv(history_, laps, clock));
+          const std::string error = save_text_file(path, ui::shown_laps_csv(history_, laps));
           const std::string what = laps == 1 ? "lap " + std::to_string(history_.newest().index)
                                              : std::to_string(laps) + " laps (" + std::to_string(history_.at_age(laps - 1).index) +
                                                    " to " + std::to_string(history_.newest().index) + ")";
