@@ -39,7 +39,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
       session_(16, [] { glfwPostEmptyEvent(); }, "view"),
       measured_laps_(session_.lap_stream().subscribe("statistics", 32)),
       source_(session_),
-      view_(std::make_unique<ui::PolarView>()),
+      view_(std::make_unique<ui::PolarView>(options.screenshot_path.empty())),
       start_(std::chrono::steady_clock::now()),
       last_frame_(start_) {
   const auto dir = ui::config_directory();
@@ -63,9 +63,11 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", settings_.last_replay_file.c_str());
   model_.ports = discover_ports();
   restore_sectors();
+  install_key_callback();
 }
 
 App::~App() {
+  remove_key_callback();
   if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
   source_.stop();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
@@ -99,13 +101,15 @@ std::string App::start_source() {
       request.scene = options_.scene;
       // The Virtual tab shows what runs.
       model_.sim_model_choice = model_choice(options_.model, model_.sim_model_choice);
-      model_.sim_scene_choice = options_.scene == "room" ? 0 : 1;
+      model_.sim_scene_choice = options_.scene == "room" ? 0 : options_.scene == "booth" ? 2 : 1;
       break;
     }
     case SourceKind::Replay:
       request.kind = ui::ConnectRequest::Kind::Replay;
       request.address = options_.replay_file;
       request.model = options_.model;
+      request.replay_speed = options_.replay_speed;
+      request.replay_loop = !options_.replay_once;
       settings_.last_replay_file = options_.replay_file;
       std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", options_.replay_file.c_str());
       model_.replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
@@ -124,6 +128,9 @@ std::string App::start(const ui::ConnectRequest& request) {
   model_.source_text = source_.description();
   model_.sim_active = source_.sim_active();
   model_.replay.available = source_.replay_active();
+  // The Replay tab shows what the new link plays from its first frame, not the defaults.
+  model_.replay.speed = static_cast<float>(request.replay_speed);
+  model_.replay.loop = request.replay_loop;
   model_.source_warnings = source_.warnings();
   for (const std::string& warning : model_.source_warnings) std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
   return error;
@@ -137,6 +144,7 @@ void App::drain_laps() {
   if (drained > 0) last_lap_at_ = std::chrono::steady_clock::now();
   if (drained == 0 || model_.paused_view) return;
   history_.push(lap_);
+  motion_.add_lap(lap_);
   view_->invalidate();
   ++model_.laps_shown;
   model_.points_in_lap = lap_.points.size();
@@ -184,25 +192,15 @@ void App::start_clean() {
     session_.set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
   }
   last_set_scan_hz_.reset();
+  last_replay_status_.reset();
   last_lap_at_.reset();
   pending_latency_rx_ns_ = 0;
   history_.clear();
+  motion_.clear();
   lap_ = {};
   while (measured_laps_->try_pop(measured_lap_)) {
   }  // the old source's laps measure nothing of the new one
   view_->invalidate();
-}
-
-void App::handle_keys() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F11, false)) toggle_fullscreen();
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false)) settings_.show_panels = !settings_.show_panels;
-  if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model_.requests.push_back(ui::ResetView{});
-  if (ImGui::IsKeyPressed(GLFW_KEY_A, false)) settings_.auto_range = true;
-  if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) model_.paused_view = !model_.paused_view;
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) model_.requests.push_back(ui::SaveScreenshot{});
-  if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) && io.KeyCtrl) quit_ = true;
 }
 
 void App::toggle_fullscreen() {
@@ -215,10 +213,15 @@ void App::toggle_fullscreen() {
     glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
     fullscreen_ = true;
     settings_.show_panels = false;
+    // The booth view shows who walks past: motion colours, back to the user's mode on leaving.
+    windowed_colour_mode_ = settings_.colours.mode;
+    settings_.colours.mode = ui::ColourMode::Motion;
   } else {
     glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3], 0);
     fullscreen_ = false;
     settings_.show_panels = true;
+    if (windowed_colour_mode_ && settings_.colours.mode == ui::ColourMode::Motion) settings_.colours.mode = *windowed_colour_mode_;
+    windowed_colour_mode_.reset();
   }
 }
 
@@ -245,14 +248,17 @@ void App::frame() {
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
   view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
-  view_->handle_input(settings_);
+  view_->set_status_band(ui::status_band_height());
+  view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
+                       std::chrono::duration<double>(last_frame_ - start_).count());
   if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
     char spec[48];
     std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
     model_.requests.push_back(ui::WatchSector{spec});
   }
   view_->auto_range(history_, settings_);
-  model_.cloud = view_->update_cloud(history_, settings_);
+  model_.cloud = view_->update_cloud(history_, settings_, &motion_);
+  model_.laps_on_screen = history_.size();
   model_.points_drawn_total = view_->vertex_count();
   ui::draw_view_header(model_, sidebar, view_w);
 
@@ -261,6 +267,11 @@ void App::frame() {
   glClear(GL_COLOR_BUFFER_BIT);
   view_->draw(history_, settings_, fb_scale, fb_h);
   ui::draw_view_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
+  model_.booth = fullscreen_;
+  if (model_.booth) {
+    model_.legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
+    ui::draw_booth_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
+  }
   ImGui::Render();
   glViewport(0, 0, fb_w, fb_h);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

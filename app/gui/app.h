@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/gui/app_options.h"
 #include "app/gui/lidar_source.h"
@@ -12,6 +13,7 @@
 #include "ui/panels/ui_model.h"
 #include "ui/render/polar_view.h"
 #include "ui/view/lap_history.h"
+#include "ui/view/motion_background.h"
 #include "ui/view/settings.h"
 
 struct GLFWwindow;
@@ -36,8 +38,6 @@ class App {
   // Laps are arriving (the link is scanning).
   bool streaming() const { return model_.snap.state == LinkState::Scanning; }
   const std::string& last_error() const { return model_.status_message; }
-  // The current lap, for the CSV export.
-  const Lap& current_lap() const { return lap_; }
   bool quit_requested() const { return quit_; }
   // No lap will come until the user picks another source: it did not start, or it is a replay
   // that went round without one.
@@ -51,6 +51,9 @@ class App {
   void drain_laps();
   void measure_lap(const Lap& lap);
   void update_model();
+  // Keys (app_keys.cpp): GLFW's callback queues each press; handle_keys acts on them in order.
+  void install_key_callback();
+  void remove_key_callback();
   void handle_keys();
   // The frame's requests from panels, keys and mouse, in order (app_requests.cpp).
   void carry_out_requests(int framebuffer_width, int framebuffer_height);
@@ -75,6 +78,12 @@ class App {
   void sync_sectors();
 
   GLFWwindow* window_;
+  struct KeyPress {
+    int key;
+    int mods;
+  };
+  std::vector<KeyPress> key_presses_;  // since the last frame, in order
+  void (*imgui_key_callback_)(GLFWwindow*, int, int, int, int) = nullptr;
   AppOptions options_;
   bool persist_;
   std::string settings_path_;
@@ -86,12 +95,15 @@ class App {
   Lap measured_lap_;
   LidarSource source_;
   ui::LapHistory history_;
+  ui::MotionBackground motion_;  // the room, learned from the laps the view shows
+  std::optional<ui::ColourMode> windowed_colour_mode_;  // restored on leaving the booth view
   Lap lap_;
   std::unique_ptr<ui::PolarView> view_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
   std::optional<double> last_set_scan_hz_;
+  std::optional<ReplayStatus> last_replay_status_;  // the replay link's, as follow_replay last saw it
   std::optional<std::chrono::steady_clock::time_point> last_lap_at_;  // newest lap of this source
   bool has_source_ = false;
   bool quit_ = false;

@@ -9,8 +9,8 @@ namespace ydscope::gui {
 const char* const kAppHelp = kAppHelpText;
 
 AppOptions parse_app_options(std::span<const std::string> raw) {
-  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector"},
-                       {"fullscreen"});
+  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed"},
+                       {"fullscreen", "once"});
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
   if (int(port) + int(sim) + int(replay) > 1)
@@ -31,6 +31,13 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   }
   if (const auto baud = args.integer("baud", 50, 4'000'000)) options.baud = static_cast<unsigned>(*baud);
   options.scene = args.value("scene").value_or(options.scene);
+  // The Replay tab's slider holds the same speeds, so the two never disagree.
+  if (const auto speed = args.number("speed", 0.25, 8.0)) {
+    if (!replay) throw UsageError("--speed goes with --replay FILE.");
+    options.replay_speed = *speed;
+  }
+  options.replay_once = args.has("once");
+  if (options.replay_once && !replay) throw UsageError("--once goes with --replay FILE.");
   options.fullscreen = args.has("fullscreen");
   options.screenshot_path = args.value("screenshot").value_or("");
   if (const auto frames = args.integer("frames", 1, 1'000'000)) {

@@ -17,6 +17,8 @@ struct AppOptions {
   std::optional<unsigned> baud;      // --baud
   std::string scene = "demo";        // --scene for --sim
   std::string replay_file;           // --replay FILE
+  double replay_speed = 1.0;         // --speed X with --replay
+  bool replay_once = false;          // --once with --replay: stop at the end instead of looping
   bool fullscreen = false;
   std::string screenshot_path;       // --screenshot PNG
   int frames = 120;                  // --frames N with --screenshot

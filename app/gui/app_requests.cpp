@@ -10,6 +10,7 @@
 #include "app/gui/screenshot.h"
 #include "ui/panels/panels.h"
 #include "ui/view/file_names.h"
+#include "ui/view/lap_csv.h"
 
 namespace ydscope::gui {
 
@@ -76,9 +77,14 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
             m.status_message = "no lap to export yet.";
             return;
           }
+          // What is on screen, frozen or live: the view's laps, never a newer one it has not shown.
+          const std::size_t laps = r.every_shown_lap ? history_.size() : 1;
           const std::string path = timestamped_name("csv");
-          const std::string error = export_lap_csv(path, lap_);
-          m.status_message = error.empty() ? "exported lap " + std::to_string(lap_.index) + " to " + path : error;
+          const std::string error = save_text_file(path, ui::shown_laps_csv(history_, laps));
+          const std::string what = laps == 1 ? "lap " + std::to_string(history_.newest().index)
+                                             : std::to_string(laps) + " laps (" + std::to_string(history_.at_age(laps - 1).index) +
+                                                   " to " + std::to_string(history_.newest().index) + ")";
+          m.status_message = error.empty() ? "exported " + what + (m.paused_view ? " as frozen" : "") + " to " + path : error;
         } else if constexpr (std::is_same_v<R, ui::WatchSector>) {
           m.sector_error = watch_sector(r.spec);
           if (!m.sector_error.empty()) return;
@@ -100,7 +106,15 @@ void App::follow_replay() {
     m.replay.position_s = static_cast<double>(status->position_ns) * 1e-9;
     m.replay.duration_s = static_cast<double>(status->duration_ns) * 1e-9;
     m.replay.passes = status->loops;
+    // The tab shows what the link does. Taken only when the link's value changes, so a slider
+    // being dragged is not pulled back to the value the I/O thread has not caught up with.
+    if (!last_replay_status_ || last_replay_status_->speed != status->speed) m.replay.speed = static_cast<float>(status->speed);
+    if (!last_replay_status_ || last_replay_status_->loop != status->loop) m.replay.loop = status->loop;
+    if (!last_replay_status_ || last_replay_status_->paused != status->paused) m.replay.paused = status->paused;
+    last_replay_status_ = status;
   }
+  // Without loop the session closes the link at the recording's end and does not reopen it.
+  m.replay.ended = m.snap.state == LinkState::Failed && last_lap_at_.has_value();
 }
 
 }  // namespace ydscope::gui

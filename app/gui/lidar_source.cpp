@@ -86,7 +86,8 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       std::string error;
       replay_handle_ = std::make_shared<ReplayHandle>();
       ReplayOptions options;
-      options.loop = true;
+      options.speed = request.replay_speed;
+      options.loop = request.replay_loop;
       auto replay = replay_config(request.address, request.model, options, replay_handle_, error, warnings_);
       if (!replay) return error;
       config = std::move(*replay);

@@ -23,6 +23,7 @@
 #include "core/version.h"
 #include "ui/render/theme.h"
 #include "ui/view/app_icon.h"
+#include "ui/view/window_fit.h"
 
 namespace {
 
@@ -32,6 +33,8 @@ void on_stop_signal(int) { g_stop_requested = 1; }
 // SIGUSR1 saves a screenshot like the S key: for a kiosk's remote check, and for the UI tests.
 volatile std::sig_atomic_t g_screenshot_requested = 0;
 void on_screenshot_signal(int) { g_screenshot_requested = 1; }
+// The window's content scale, as GLFW last reported it (main thread only).
+float g_content_scale = 1.0f;
 
 void on_glfw_error(int code, const char* description) {
   // Without a window manager (Xvfb) GLFW cannot iconify a full-screen window on focus loss; harmless.
@@ -64,12 +67,24 @@ int run(const ydscope::gui::AppOptions& options) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 0);
-  GLFWwindow* window = glfwCreateWindow(1280, 800, "ydscope", nullptr, nullptr);
+  // The first window fits the monitor's work area (ui/view/window_fit.h); a window manager may
+  // then maximise one that had to shrink.
+  ydscope::ui::ScreenRect work_area;
+  float monitor_scale = 1.0f;
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+    glfwGetMonitorWorkarea(monitor, &work_area.x, &work_area.y, &work_area.width, &work_area.height);
+    float unused = 1.0f;
+    glfwGetMonitorContentScale(monitor, &monitor_scale, &unused);
+  }
+  const ydscope::ui::ScreenRect first = ydscope::ui::first_window_rect(work_area, monitor_scale);
+  if (ydscope::ui::window_was_shrunk(work_area, monitor_scale)) glfwWindowHint(GLFW_MAXIMIZED, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(first.width, first.height, "ydscope", nullptr, nullptr);
   if (!window) {
     std::fprintf(stderr, "ydscope: cannot create an OpenGL 3.3 core window; try LIBGL_ALWAYS_SOFTWARE=1 for Mesa's software renderer.\n");
     glfwTerminate();
     return 1;
   }
+  glfwSetWindowPos(window, first.x, first.y);
   set_window_icon(window);
   glfwMakeContextCurrent(window);
   // Screenshot runs go as fast as laps arrive; interactive runs follow the display.
@@ -80,6 +95,10 @@ int run(const ydscope::gui::AppOptions& options) {
   float scale_x = 1.0f, scale_y = 1.0f;
   glfwGetWindowContentScale(window, &scale_x, &scale_y);
   ydscope::ui::apply_theme(scale_x);
+  float theme_scale = scale_x;
+  g_content_scale = scale_x;
+  // A move to a monitor of another scale rebuilds the fonts and sizes at the next frame.
+  glfwSetWindowContentScaleCallback(window, [](GLFWwindow*, float x, float) { g_content_scale = x; });
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -114,6 +133,13 @@ int run(const ydscope::gui::AppOptions& options) {
         // Laps wake the loop through glfwPostEmptyEvent; with nothing arriving a slow tick keeps the
         // statistics and link state current at almost no cost.
         glfwWaitEventsTimeout(screenshot_mode ? 0.02 : (app->streaming() ? 0.25 : 1.0));
+        if (g_content_scale != theme_scale) {
+          theme_scale = g_content_scale;
+          ImGui_ImplOpenGL3_DestroyFontsTexture();
+          ImGui::GetIO().Fonts->Clear();
+          ydscope::ui::apply_theme(theme_scale);
+          ImGui_ImplOpenGL3_CreateFontsTexture();
+        }
         if (g_screenshot_requested) {
           g_screenshot_requested = 0;
           app->request_screenshot();

@@ -31,16 +31,11 @@ std::string save_framebuffer_png(const std::string& path, int width, int height)
   return {};
 }
 
-std::string export_lap_csv(const std::string& path, const Lap& lap) {
+std::string save_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   if (!out) return "could not create " + path + ": " + std::strerror(errno) + ".";
-  out << "angle_deg,range_mm,flag\n";
-  char line[64];
-  for (const LapPoint& p : lap.points) {
-    std::snprintf(line, sizeof line, "%.3f,%.1f,%u\n", static_cast<double>(p.angle_deg),
-                  static_cast<double>(p.range_mm), static_cast<unsigned>(p.flag));
-    out << line;
-  }
+  out << text;
+  out.close();
   if (!out) return "writing " + path + " failed: " + std::strerror(errno) + ".";
   return {};
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Saving what the window shows: the framebuffer as PNG, and the current lap as CSV.
+// Saving what the window shows: the framebuffer as PNG, and the laps on screen as CSV.
 #include <string>
 
 #include "core/protocol/lap.h"
@@ -11,8 +11,8 @@ namespace ydscope::gui {
 // Returns an empty string on success, otherwise one sentence saying what failed.
 std::string save_framebuffer_png(const std::string& path, int width, int height);
 
-// One line per point: angle_deg,range_mm,flag. Empty string on success, otherwise a sentence.
-std::string export_lap_csv(const std::string& path, const Lap& lap);
+// Writes `text` (the CSV of ui/view/lap_csv.h). Empty string on success, otherwise a sentence.
+std::string save_text_file(const std::string& path, const std::string& text);
 
 // Saved files get ui::timestamped_name (ui/view/file_names.h).
 using ui::timestamped_name;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/sim/scene_booth.h"
 #include "core/sim/scene_demo.h"
 #include "core/sim/scene_room.h"
 
@@ -10,10 +11,11 @@ namespace ydscope {
 std::unique_ptr<Scene> make_scene(std::string_view name, std::uint64_t seed) {
   if (name == "room") return std::make_unique<RoomScene>(seed);
   if (name == "demo") return std::make_unique<DemoScene>(seed);
+  if (name == "booth") return std::make_unique<BoothScene>(seed);
   return nullptr;
 }
 
-std::string_view scene_names() { return "room, demo"; }
+std::string_view scene_names() { return "room, demo, booth"; }
 
 double hash_unit(std::uint64_t seed, std::int64_t a, std::int64_t b) {
   std::uint64_t z = seed ^ (static_cast<std::uint64_t>(a) * 0x9E3779B97F4A7C15ULL) ^

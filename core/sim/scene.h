@@ -22,9 +22,9 @@ class Scene {
   virtual std::string_view name() const = 0;
 };
 
-// "room" or "demo" (case-sensitive); nullptr for any other name.
+// "room", "demo" or "booth" (case-sensitive); nullptr for any other name.
 std::unique_ptr<Scene> make_scene(std::string_view name, std::uint64_t seed);
-// "room, demo" for messages and --help.
+// "room, demo, booth" for messages and --help.
 std::string_view scene_names();
 
 // Deterministic noise shared by the scenes: a hash of (seed, a, b) mapped to [0, 1) or to an

@@ -52,7 +52,7 @@ enum class DeviceMode : std::uint8_t { Idle, Scanning };
 
 struct VirtualLidarConfig {
   Model model = Model::G6;
-  std::string scene = "demo";  // "room" or "demo" (scene_names())
+  std::string scene = "demo";  // "room", "demo" or "booth" (scene_names())
   std::uint64_t seed = 1;      // scene noise, moving objects, serial number, fault decisions
   FaultConfig faults;
   // Encode ranges with another scale than the manual's (emulates vendor firmware variants).

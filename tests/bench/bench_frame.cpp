@@ -92,6 +92,31 @@ void BM_BuildCloud(benchmark::State& state) {
 }
 BENCHMARK(BM_BuildCloud)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
 
+// Motion highlighting's share: the cloud built in motion colours against a learned room, and the
+// learning itself, once per lap.
+void BM_BuildCloudWithMotion(benchmark::State& state) {
+  LapHistory history;
+  fill_history(history, static_cast<std::size_t>(state.range(0)));
+  MotionBackground motion;
+  for (std::uint64_t i = 0; i < MotionBackground::kLaps; ++i) motion.add_lap(make_lap(static_cast<std::size_t>(state.range(0)) / 10, i));
+  ColourParams colours;
+  colours.mode = ColourMode::Motion;
+  std::vector<PointVertex> out;
+  for (auto _ : state) {
+    build_point_cloud(history, colours, InterferenceSettings{}, out, &motion);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_BuildCloudWithMotion)->Arg(20000)->Unit(benchmark::kMillisecond);
+
+void BM_MotionLearnsALap(benchmark::State& state) {
+  MotionBackground motion;
+  const Lap lap = make_lap(static_cast<std::size_t>(state.range(0)), 1);
+  for (auto _ : state) motion.add_lap(lap);
+}
+BENCHMARK(BM_MotionLearnsALap)->Arg(2000)->Unit(benchmark::kMillisecond);
+
 // draw_grid: 0 points only, 1 grid + points. Uploads a fresh cloud every frame, as with a new lap.
 void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
   GlWindow& g = gl();

@@ -146,7 +146,7 @@ TEST_P(RoundTrip, LapsComeAtTheSetScanFrequencyWithinTheLineRate) {
 
 INSTANTIATE_TEST_SUITE_P(ModelsAndScenes, RoundTrip,
                          ::testing::Combine(::testing::Values(Model::G1, Model::G6, Model::TG15, Model::TG30, Model::TG50),
-                                            ::testing::Values("room", "demo")),
+                                            ::testing::Values("room", "demo", "booth")),
                          [](const auto& param) {
                            return std::string(profile_for(std::get<0>(param.param)).name) + "_" +
                                   std::get<1>(param.param);

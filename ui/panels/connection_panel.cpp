@@ -15,7 +15,7 @@ namespace {
 
 constexpr const char* kBauds[] = {"model default", "115200", "128000", "230400", "512000"};
 constexpr std::uint32_t kBaudValues[] = {0, 115200, 128000, 230400, 512000};
-constexpr const char* kScenes[] = {"room", "demo"};
+constexpr const char* kScenes[] = {"room", "demo", "booth"};
 constexpr const char* kHosts[] = {"manual only", "YDLidar-SDK host"};
 constexpr const char* kDeliveries[] = {"whole packets", "USB bursts", "random splits"};
 
@@ -146,25 +146,35 @@ void sim_section(UiModel& m) {
   }
 }
 
+// The recording in the field, decoded as chosen, at the speed and loop the tab shows.
+ConnectRequest replay_request(const UiModel& m) {
+  ConnectRequest r;
+  r.kind = ConnectRequest::Kind::Replay;
+  r.address = m.replay_text;
+  if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
+  r.replay_speed = m.replay.speed;
+  r.replay_loop = m.replay.loop;
+  return r;
+}
+
 void replay_section(UiModel& m) {
   ImGui::InputText("recording", m.replay_text, sizeof m.replay_text);
   // For a recording that names no model (or one this ydscope does not know), as --model does.
   model_combo("decode as", m.replay_model_choice, "as recorded");
-  if (ImGui::Button("Open recording") && m.replay_text[0]) {
-    ConnectRequest r;
-    r.kind = ConnectRequest::Kind::Replay;
-    r.address = m.replay_text;
-    if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
-    m.requests.push_back(r);
-  }
-  if (m.replay.available) {
+  if (ImGui::Button("Open recording") && m.replay_text[0]) m.requests.push_back(replay_request(m));
+  if (m.replay.available && m.replay.ended) {
+    // The link is closed at its end: playing again opens the recording anew, as it was set.
+    ImGui::SameLine();
+    if (ImGui::Button("Play again") && m.replay_text[0]) m.requests.push_back(replay_request(m));
+    ImGui::TextDisabled("played to the end at %.2fx (loop off)", static_cast<double>(m.replay.speed));
+  } else if (m.replay.available) {
     ImGui::SameLine();
     bool changed = false;
     if (ImGui::Button(m.replay.paused ? "Play" : "Pause")) {
       m.replay.paused = !m.replay.paused;
       changed = true;
     }
-    changed |= ImGui::SliderFloat("speed", &m.replay.speed, 0.25f, 8.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("speed", &m.replay.speed, kMinReplaySpeedShown, kMaxReplaySpeedShown, "%.2fx", ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::Checkbox("loop", &m.replay.loop);
     if (changed) m.requests.push_back(ControlReplay{m.replay.paused, static_cast<double>(m.replay.speed), m.replay.loop});
     const float fraction = m.replay.duration_s > 0.0 ? static_cast<float>(m.replay.position_s / m.replay.duration_s) : 0.0f;
@@ -262,7 +272,12 @@ void draw_connection_panel(UiModel& m) {
   ImGui::SameLine();
   wrapped_text(m.source_text.empty() ? "none" : m.source_text.c_str());
   link_state_text(s.state, s.message.c_str());
-  if (!s.link.empty()) ImGui::TextDisabled("%s", s.link.c_str());
+  if (!s.link.empty() && s.message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", s.link.c_str());
+  } else if (!s.link.empty()) {
+    ImGui::TextDisabled("%s", s.link.c_str());
+  }
   if (ImGui::BeginTabBar("sources")) {
     const auto tab_flags = [&m](int tab) {
       return m.show_source_tab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;

@@ -41,17 +41,17 @@ void draw_frequency_panels(UiModel& m) {
 
   if (ImGui::CollapsingHeader("Scan frequency", ImGuiTreeNodeFlags_DefaultOpen)) {
     const auto measured = m.scan_rate.hz();
-    if (ImGui::BeginTable("scanhz", 2, ImGuiTableFlags_SizingStretchSame)) {
+    // Set and measured side by side on one row: the sidebar's Lidar tab must fit 800 px.
+    if (ImGui::BeginTable("scanhz", 4, ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
+      ImGui::TableNextColumn();
       ImGui::TextDisabled("set (A5 0D)");
-      ImGui::TableSetColumnIndex(1);
-      ImGui::TextDisabled("measured");
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
+      ImGui::TableNextColumn();
       if (s.scan_hz) ImGui::Text("%.2f Hz", *s.scan_hz);
       else ImGui::TextDisabled("-");
-      ImGui::TableSetColumnIndex(1);
+      ImGui::TableNextColumn();
+      ImGui::TextDisabled("measured");
+      ImGui::TableNextColumn();
       if (measured) ImGui::Text("%.2f Hz", *measured);
       else ImGui::TextDisabled("-");
       ImGui::EndTable();
@@ -75,8 +75,11 @@ void draw_frequency_panels(UiModel& m) {
     ImGui::SameLine();
     if (ImGui::Button("Set target")) m.requests.push_back(SetScanHz{static_cast<double>(m.scan_target_hz)});
     if (!can_command) ImGui::EndDisabled();
+    if (profile) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("%s: %.0f-%.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
+    }
     command_feedback_line(m, CommandControl::ScanFrequency);
-    if (profile) ImGui::TextDisabled("%s allows %.0f to %.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
   }
 
   if (ImGui::CollapsingHeader("Ranging frequency")) {
@@ -109,8 +112,12 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::RadioButton("flag", &mode, 1);
   ImGui::SameLine();
   ImGui::RadioButton("lap age", &mode, 2);
+  ImGui::SameLine();
+  ImGui::RadioButton("motion", &mode, 3);
+  help_marker("Returns closer than the room learned over the last 5 s (people walking past) hot, with fading trails; "
+              "the room calm. The booth view's default.");
   v.colours.mode = static_cast<ColourMode>(mode);
-  if (v.colours.mode != ColourMode::Flag) {
+  if (v.colours.mode != ColourMode::Flag && v.colours.mode != ColourMode::Motion) {
     int palette = static_cast<int>(v.colours.palette);
     ImGui::TextDisabled("palette  ");
     ImGui::SameLine();
@@ -140,13 +147,19 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   if (ImGui::Button(m.paused_view ? "Resume" : "Freeze")) m.paused_view = !m.paused_view;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot")) m.requests.push_back(SaveScreenshot{});
+  // The export takes what is on screen: frozen laps while frozen.
+  ImGui::TextDisabled("CSV");
   ImGui::SameLine();
-  if (ImGui::Button("Export CSV")) m.requests.push_back(ExportLapCsv{});
+  if (ImGui::Button("Newest lap")) m.requests.push_back(ExportLapCsv{false});
+  ImGui::SameLine();
+  char every[48];
+  std::snprintf(every, sizeof every, "All %zu shown laps", m.laps_on_screen);
+  if (ImGui::Button(every)) m.requests.push_back(ExportLapCsv{true});
   if (!m.status_message.empty()) wrapped_text(m.status_message.c_str());
 }
 
 void draw_filter_panel(UiModel& m, ViewSettings& v) {
-  if (!ImGui::CollapsingHeader("Interference filter")) return;
+  if (!ImGui::CollapsingHeader("Interference filter", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Checkbox("drop specular (flag 2)", &v.interference.drop_specular);
   ImGui::SameLine();
   ImGui::TextDisabled("%d / lap", static_cast<int>(m.cloud.newest_specular_removed));

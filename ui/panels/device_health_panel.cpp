@@ -11,12 +11,17 @@
 namespace ydscope::ui {
 namespace {
 
+// A name and its value in the next two columns of the current table row.
+void cell(const char* name, const char* value) {
+  ImGui::TableNextColumn();
+  ImGui::TextDisabled("%s", name);
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(value);
+}
+
 void row(const char* name, const char* value) {
   ImGui::TableNextRow();
-  ImGui::TableSetColumnIndex(0);
-  ImGui::TextDisabled("%s", name);
-  ImGui::TableSetColumnIndex(1);
-  ImGui::TextUnformatted(value);
+  cell(name, value);
 }
 
 // A round lamp in the current line: red when the bit is set (amber when untrusted), green when clear,
@@ -71,14 +76,20 @@ void draw_device_panel(UiModel& m) {
   }
   const DeviceDetails& d = *s.device;
   char text[96];
-  if (ImGui::BeginTable("device", 2, ImGuiTableFlags_SizingStretchProp)) {
-    row("model", d.profile ? std::string(d.profile->name).c_str() : "unknown");
+  // Short values two to a row, so the Lidar tab fits an 800 px window (tests/ui/sidebar_fit_test).
+  if (ImGui::BeginTable("device-short", 4, ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableNextRow();
+    cell("model", d.profile ? std::string(d.profile->name).c_str() : "unknown");
     std::snprintf(text, sizeof text, "%u", static_cast<unsigned>(d.model_code));
-    row("model code", text);
+    cell("model code", text);
+    ImGui::TableNextRow();
     std::snprintf(text, sizeof text, "%u.%u", static_cast<unsigned>(d.firmware.major), static_cast<unsigned>(d.firmware.minor));
-    row("firmware", text);
+    cell("firmware", text);
     std::snprintf(text, sizeof text, "%u", static_cast<unsigned>(d.hardware));
-    row("hardware", text);
+    cell("hardware", text);
+    ImGui::EndTable();
+  }
+  if (ImGui::BeginTable("device", 2, ImGuiTableFlags_SizingStretchProp)) {
     row("serial", d.serial.c_str());
     std::snprintf(text, sizeof text, "%g mm per count", s.distance_scale);
     row("distance scale", text);
@@ -127,12 +138,19 @@ void draw_health_panel(UiModel& m) {
     ImGui::TextColored(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f}, "%s status %u: %s",
                        h.command == Command::HealthStatusBits ? "A5 92" : "A5 91", static_cast<unsigned>(h.status),
                        std::string(info.name).c_str());
-    ImGui::TextDisabled("%s", std::string(info.meaning).c_str());
+    // What the status means: in the panel when it is a problem, one hover away when it is not.
+    if (info.is_problem) wrapped_text(std::string(info.meaning).c_str());
+    else if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(info.meaning).c_str());
     ImGui::Text("error code 0x%04X", static_cast<unsigned>(h.error_code));
+    if (!h.summary.empty()) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("  device says: %s", h.summary.c_str());
+    }
   } else {
     ImGui::TextDisabled("not asked yet");
   }
-  if (s.health && !s.health->summary.empty()) ImGui::TextDisabled("device says: %s", s.health->summary.c_str());
+  if (reports_health_bits(model) && s.health && !s.health->summary.empty())
+    ImGui::TextDisabled("device says: %s", s.health->summary.c_str());
   const bool can_ask = link_state_connected(s.state) && !s.busy && !m.replay.available;
   if (!can_ask) ImGui::BeginDisabled();
   if (ImGui::Button("Ask health now")) m.requests.push_back(RefreshHealth{});

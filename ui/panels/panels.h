@@ -1,5 +1,7 @@
 #pragma once
 // The ImGui panels of the sidebar. Each draws one collapsing section; draw_sidebar lays them out.
+#include <imgui.h>
+
 #include "ui/panels/ui_model.h"
 
 namespace ydscope::ui {
@@ -20,10 +22,16 @@ float draw_sidebar(UiModel& model, ViewSettings& settings);
 
 // Status line over the polar view: model, state, measured rate, health alert, badges, banner.
 void draw_view_header(const UiModel& model, float view_left, float view_width);
+// The height at the bottom of the view that the status line takes (grid labels keep out).
+float status_band_height();
+// The booth view (full screen): model, state and rates in large type, and the colour legend.
+void draw_booth_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 // When model.view_state says the picture is not live: dim the view and say why in large type.
 void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 
 // Small helpers shared by the panels.
+// The colour of words of this severity over the view: green, blue, amber, red.
+ImU32 severity_colour(Severity severity);
 void help_marker(const char* text);
 // Text wrapped at the panel edge, unformatted (this ImGui build drops some TextWrapped("%s") text).
 void wrapped_text(const char* text);

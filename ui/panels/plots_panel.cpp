@@ -53,7 +53,9 @@ void scan_rate_plot(const RunPlots& plots) {
     draw->AddLine({sample_x(a, b, i - 1, n), sample_y(a, b, v0, lo, hi)}, {sample_x(a, b, i, n), sample_y(a, b, v1, lo, hi)},
                   IM_COL32(90, 210, 120, 200), 1.5f);
   }
+  ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("last %zu laps: blue measured, green set", n);
+  ImGui::PopTextWrapPos();
 }
 
 void value_plot(const char* id, const MetricHistory& h, const char* format, const char* what) {
@@ -89,7 +91,9 @@ void draw_plots_panel(const UiModel& m) {
   error_plot("##checksum", p.checksum_errors_per_s(), "checksum errors");
   error_plot("##crc8", p.crc8_failures_per_s(), "CRC8 failures");
   ImGui::PopItemWidth();
+  ImGui::PushTextWrapPos(0.0f);  // wrapped at the panel's edge, never cut off
   ImGui::TextDisabled("per lap (top three), per second over the last %zu s (the rest)", RunPlots::kSeconds);
+  ImGui::PopTextWrapPos();
 }
 
 }  // namespace ydscope::ui

@@ -11,6 +11,7 @@
 #include "core/link/session_snapshot.h"
 #include "core/sim/faults.h"
 #include "ui/panels/ui_request.h"
+#include "ui/view/colour_legend.h"
 #include "ui/view/command_feedback.h"
 #include "ui/view/health_alerts.h"
 #include "ui/view/health_timeline.h"
@@ -36,7 +37,14 @@ struct ReplayControl {
   double position_s = 0.0;  // filled by the app from the replay's status
   double duration_s = 0.0;
   std::uint64_t passes = 0;  // times it went round to its start
+  bool ended = false;        // played to its end without loop: nothing more comes
 };
+
+// The speeds the Replay tab's slider offers (and --speed accepts).
+inline constexpr float kMinReplaySpeedShown = 0.25f;
+inline constexpr float kMaxReplaySpeedShown = 8.0f;
+
+enum class SidebarTab { Lidar, View, Statistics };
 
 struct UiModel {
   // ---- filled by the app each frame -------------------------------------------------------------
@@ -55,6 +63,7 @@ struct UiModel {
   std::uint64_t laps_shown = 0;
   std::uint64_t laps_skipped = 0;  // drained but never shown (its LapRing::skipped)
   std::size_t points_in_lap = 0;
+  std::size_t laps_on_screen = 0;  // the persistence's laps the view draws now
   PointCloudStats cloud;
   std::size_t points_drawn_total = 0;
   std::optional<std::uint8_t> ct_health;  // G1 CT health of the newest lap that carried it
@@ -68,11 +77,15 @@ struct UiModel {
   bool paused_view = false;               // the view holds the current laps
   ViewState view_state;                   // live, or dimmed with the reason in words
   std::vector<HealthAlert> alerts;        // worst first, for the status line and the badge
+  bool booth = false;                     // the full-screen view: large type and a legend
+  ColourLegend legend;                    // what the colours mean, for the booth view
   // Outcomes of device commands for the panel beside the control that issued them. Shared with
   // the session's completion callbacks, which run on the I/O thread.
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();
   // Opens the Connection tab of the current source once: 0 port, 1 virtual, 2 replay; -1 none.
   int show_source_tab = -1;
+  // Opens a sidebar tab once (SidebarTab); -1 none.
+  int show_sidebar_tab = -1;
 
   // ---- requests from the panels, keys and mouse, carried out in order and cleared by the app -----
   std::vector<UiRequest> requests;

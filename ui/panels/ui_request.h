@@ -28,6 +28,8 @@ struct ConnectRequest {
   std::uint8_t firmware_major = 1;    // Sim only: what its device info reports
   std::uint8_t firmware_minor = 2;
   DeliveryModel delivery;             // Sim only: how its bytes reach the host
+  double replay_speed = 1.0;          // Replay only: 1 as recorded, within the panel's slider
+  bool replay_loop = true;            // Replay only: false stops at the end and says so
 };
 
 // ---- the source -------------------------------------------------------------------------------
@@ -63,7 +65,9 @@ struct SetDistanceScale {
 // ---- the view and files -----------------------------------------------------------------------
 struct ResetView {};
 struct SaveScreenshot {};
-struct ExportLapCsv {};
+struct ExportLapCsv {
+  bool every_shown_lap = false;  // else the newest lap on screen
+};
 struct WatchSector {
   std::string spec;  // "260:280 [1500:2500]"
 };

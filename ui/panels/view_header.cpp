@@ -13,15 +13,7 @@
 namespace ydscope::ui {
 namespace {
 
-ImU32 severity_colour(Severity s) {
-  switch (s) {
-    case Severity::Ok: return IM_COL32(110, 230, 150, 255);
-    case Severity::Info: return IM_COL32(130, 185, 255, 255);
-    case Severity::Warning: return IM_COL32(255, 200, 90, 255);
-    case Severity::Error: return IM_COL32(255, 105, 95, 255);
-  }
-  return IM_COL32(255, 255, 255, 255);
-}
+float status_margin() { return ImGui::GetFontSize() * 0.6f; }
 
 ImFont* big_font() { return display_font() ? display_font() : ImGui::GetFont(); }
 
@@ -39,9 +31,22 @@ float badge(ImDrawList* draw, ImVec2 top_right, const char* text, ImU32 fill, Im
 
 }  // namespace
 
+ImU32 severity_colour(Severity s) {
+  switch (s) {
+    case Severity::Ok: return IM_COL32(110, 230, 150, 255);
+    case Severity::Info: return IM_COL32(130, 185, 255, 255);
+    case Severity::Warning: return IM_COL32(255, 200, 90, 255);
+    case Severity::Error: return IM_COL32(255, 105, 95, 255);
+  }
+  return IM_COL32(255, 255, 255, 255);
+}
+
+float status_band_height() { return ImGui::GetTextLineHeight() + 2.0f * status_margin(); }
+
 void draw_view_header(const UiModel& m, float view_left, float view_width) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float pad = 72.0f;  // above the spoke labels that sit in the bottom corners
+  // The status line sits in its own band at the bottom, which grid labels keep out of.
+  const float pad = status_band_height() - status_margin();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float bottom = ImGui::GetMainViewport()->WorkSize.y;
   const float wrap = std::max(view_width - 32.0f, 100.0f);

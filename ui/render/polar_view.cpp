@@ -16,27 +16,28 @@ void PolarView::set_viewport(Vec2 origin, Vec2 size) {
   const Vec2 old_size = view_.viewport_size();
   view_.set_viewport(origin, size);
   if (std::fabs(old_size.x - size.x) > 0.5f || std::fabs(old_size.y - size.y) > 0.5f) {
-    fitted_once_ = false;  // refit on resize when auto-range is on
+    fit_.forget();  // refit on resize when auto-range is on
   }
 }
 
 void PolarView::reset(ViewSettings& settings) {
   settings.auto_range = true;
-  fitted_once_ = false;
-  view_.fit_range(fitted_range_mm_ > 0.0f ? fitted_range_mm_ : 8000.0f);
+  fit_.forget();
+  view_.fit_range(fit_.fitted_mm() > 0.0f ? fit_.fitted_mm() : 8000.0f);
 }
 
-void PolarView::handle_input(ViewSettings& settings) {
+void PolarView::handle_input(ViewSettings& settings, bool pointer_in_window, double now_s) {
   const ImGuiIO& io = ImGui::GetIO();
   const Vec2 mouse{io.MousePos.x, io.MousePos.y};
-  const bool inside = view_.contains_screen(mouse) && !io.WantCaptureMouse;
+  const bool inside = pointer_in_window && view_.contains_screen(mouse) && !io.WantCaptureMouse;
+  hover_gate_.update(inside, io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f, now_s);
   hover_cursor_.reset();
   cursor_world_.reset();
   if (!inside) {
     if (sweep_from_deg_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) sweep_from_deg_.reset();  // let go outside
     return;
   }
-  hover_cursor_ = mouse;
+  if (hover_gate_.visible()) hover_cursor_ = mouse;
   cursor_world_ = view_.screen_to_world(mouse);
   if (io.MouseWheel != 0.0f) {
     view_.zoom_about(mouse, std::pow(1.15f, io.MouseWheel));
@@ -66,7 +67,6 @@ void PolarView::handle_input(ViewSettings& settings) {
     settings.auto_range = false;
   }
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) ruler_.click(*cursor_world_);
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ruler_.clear();
 }
 
 std::optional<SectorShape> PolarView::sweep_shape() const {
@@ -87,30 +87,25 @@ std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
 }
 
 void PolarView::auto_range(const LapHistory& history, const ViewSettings& settings) {
-  if (!settings.auto_range || history.empty()) return;
-  const float target = robust_max_range_mm(history.newest().points, 0.93f) * 1.1f;
-  if (target <= 0.0f) return;
-  // Refit only on a real change, so the rings do not breathe with every lap's noise.
-  if (!fitted_once_ || std::fabs(target - fitted_range_mm_) > 0.15f * fitted_range_mm_) {
-    fitted_range_mm_ = target;
-    view_.fit_range(target);
-    fitted_once_ = true;
-  }
+  // Asked every frame, lap or not, so turning auto-range back on is seen the frame it happens.
+  const float target = history.empty() ? 0.0f : robust_max_range_mm(history.newest().points, 0.93f) * 1.1f;
+  if (const auto range = fit_.update(settings.auto_range, target)) view_.fit_range(*range);
 }
 
-const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings) {
+const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings,
+                                               const MotionBackground* motion) {
   // With auto-range the range palette spans what is shown, so a 30 m TG scan and a 3 m room both
   // use all of it; a manual view keeps the panel's near/far.
   ColourParams colours = settings.colours;
-  if (settings.auto_range && fitted_range_mm_ > 0.0f) {
+  if (settings.auto_range && fit_.fitted_mm() > 0.0f) {
     colours.near_mm = 0.0f;
-    colours.far_mm = fitted_range_mm_;
+    colours.far_mm = fit_.fitted_mm();
   }
   if (!(colours == last_colours_) || !(settings.interference == last_settings_.interference)) dirty_ = true;
   last_settings_ = settings;
   last_colours_ = colours;
   if (dirty_) {
-    stats_ = build_point_cloud(history, colours, settings.interference, vertices_);
+    stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion);
     renderer_.upload_points(vertices_);
     dirty_ = false;
   }
@@ -122,11 +117,11 @@ void PolarView::draw(const LapHistory& history, const ViewSettings& settings, fl
   PolarStyle style;
   style.point_size_px = settings.point_size_px;
   style.show_grid = settings.show_grid;
-  const float key[5] = {view_.px_per_mm(), view_.centre_world().x, view_.centre_world().y, view_.viewport_size().x,
-                        view_.viewport_size().y};
+  const float key[6] = {view_.px_per_mm(),        view_.centre_world().x,   view_.centre_world().y,
+                        view_.viewport_size().x, view_.viewport_size().y, status_band_px_};
   if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
     std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
-    grid_ = layout_grid(view_);
+    grid_ = layout_grid(view_, ring_spacing_px(view_.viewport_size()), 30.0f, 45.0f, 18.0f, status_band_px_);
     build_grid_geometry(view_, grid_, style.grid, grid_lines_);
     renderer_.upload_grid(grid_lines_);
   }

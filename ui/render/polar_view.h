@@ -9,7 +9,9 @@
 
 #include "ui/render/polar_overlay.h"
 #include "ui/render/polar_renderer.h"
+#include "ui/view/auto_range_fit.h"
 #include "ui/view/hit_test.h"
+#include "ui/view/hover_gate.h"
 #include "ui/view/lap_history.h"
 #include "ui/view/settings.h"
 
@@ -17,12 +19,16 @@ namespace ydscope::ui {
 
 class PolarView {
  public:
-  PolarView() = default;
+  // `hover`: show the nearest point under a pointer that moves (off for screenshots).
+  explicit PolarView(bool hover = true) : hover_gate_(hover) {}
 
   // The part of the window the view owns (window pixels).
   void set_viewport(Vec2 origin, Vec2 size);
+  // The bottom of the view where the status line is written: grid labels keep out of it.
+  void set_status_band(float px) { status_band_px_ = px; }
   // Mouse input from ImGui's IO for this frame; ignored when ImGui wants the mouse (over a panel).
-  void handle_input(ViewSettings& settings);
+  // `pointer_in_window` is the window system's word (GLFW_HOVERED); `now_s` any steady clock.
+  void handle_input(ViewSettings& settings, bool pointer_in_window, double now_s);
   void reset(ViewSettings& settings);
   void clear_ruler() { ruler_.clear(); }
   // The watched sectors to outline, in the order the Sectors panel lists them.
@@ -34,11 +40,14 @@ class PolarView {
   // Fits the view to the newest lap when auto-range is on.
   void auto_range(const LapHistory& history, const ViewSettings& settings);
   // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics.
-  const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings);
+  const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings,
+                                      const MotionBackground* motion = nullptr);
   // GL layer then ImGui overlay (background draw list, under the panels).
   void draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale, int framebuffer_height);
 
   const ViewTransform& transform() const { return view_; }
+  // The colours the cloud was last built with (range near/far following auto-range).
+  const ColourParams& colours_in_use() const { return last_colours_; }
   std::size_t vertex_count() const { return vertices_.size(); }
 
  private:
@@ -48,14 +57,15 @@ class PolarView {
   std::vector<PointVertex> vertices_;
   std::vector<LineVertex> grid_lines_;
   GridLayout grid_;
-  // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height).
-  float grid_key_[5] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  float status_band_px_ = 0.0f;
+  // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height, band).
+  float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
   bool dirty_ = true;
-  bool fitted_once_ = false;
-  float fitted_range_mm_ = 0.0f;
+  AutoRangeFit fit_;
   ViewSettings last_settings_;
   ColourParams last_colours_;
+  HoverGate hover_gate_;
   std::optional<Vec2> hover_cursor_;
   std::optional<Vec2> cursor_world_;
   std::vector<SectorShape> sectors_;

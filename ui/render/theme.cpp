@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "ui/view/glyph_ranges.h"
+
 namespace ydscope::ui {
 namespace {
 
@@ -28,13 +30,13 @@ ImFont* display_font() { return g_display_font; }
 
 Fonts apply_theme(float scale) {
   ImGuiIO& io = ImGui::GetIO();
+  ImGui::GetStyle() = ImGuiStyle();  // called again on a scale change: sizes scale from the defaults
   Fonts fonts;
   ImFontConfig config;
   config.OversampleH = 2;
   config.OversampleV = 2;
-  // Latin-1 covers the degree sign; dashes, bullet, ellipsis and arrows come from the punctuation
-  // and arrow blocks.
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2013, 0x2026, 0x2190, 0x2193, 0};
+  static_assert(sizeof(ImWchar) == sizeof(kGlyphRanges[0]));
+  const auto* ranges = reinterpret_cast<const ImWchar*>(kGlyphRanges);
   if (const char* path = find_font()) {
     fonts.system_font = io.Fonts->AddFontFromFileTTF(path, 16.0f * scale, &config, ranges) != nullptr;
     ImFontConfig large;

@@ -14,7 +14,8 @@ struct Fonts {
 ImFont* display_font();
 inline constexpr float kDisplayFontPx = 64.0f;
 
-// Call once after ImGui::CreateContext and before the first frame. `scale` for HiDPI.
+// Call after ImGui::CreateContext and before the first frame, and again (with the font atlas
+// cleared) when the window's content scale changes. `scale` for HiDPI.
 Fonts apply_theme(float scale);
 
 // Background behind the polar view (also the GL clear colour).

@@ -22,14 +22,17 @@ constexpr std::array<Stop, 9> kTurbo{{{0.27f, 0.36f, 0.86f},
                                       {0.99f, 0.66f, 0.18f},
                                       {0.93f, 0.37f, 0.07f},
                                       {0.76f, 0.16f, 0.02f}}};
-constexpr std::array<Stop, 9> kViridis{{{0.267f, 0.005f, 0.329f},
-                                        {0.278f, 0.173f, 0.478f},
-                                        {0.231f, 0.318f, 0.545f},
-                                        {0.173f, 0.443f, 0.557f},
-                                        {0.129f, 0.565f, 0.553f},
-                                        {0.153f, 0.678f, 0.506f},
-                                        {0.361f, 0.784f, 0.388f},
-                                        {0.667f, 0.863f, 0.196f},
+// Viridis from a third of the way along: its purple start is nearly as dark as the background
+// (contrast 1.3 : 1) and the nearest points vanished. From here on every colour stands out at least
+// 3 : 1 (tests/ui/palette_contrast_test.cpp).
+constexpr std::array<Stop, 9> kViridis{{{0.194f, 0.398f, 0.553f},
+                                        {0.159f, 0.481f, 0.556f},
+                                        {0.130f, 0.563f, 0.553f},
+                                        {0.145f, 0.638f, 0.522f},
+                                        {0.220f, 0.712f, 0.468f},
+                                        {0.359f, 0.783f, 0.389f},
+                                        {0.563f, 0.836f, 0.261f},
+                                        {0.774f, 0.877f, 0.179f},
                                         {0.992f, 0.906f, 0.145f}}};
 
 std::uint8_t to_byte(float v) {
@@ -43,6 +46,7 @@ std::string_view colour_mode_name(ColourMode mode) {
     case ColourMode::Range: return "range";
     case ColourMode::Flag: return "interference flag";
     case ColourMode::LapAge: return "lap age";
+    case ColourMode::Motion: return "motion";
   }
   return "?";
 }
@@ -73,7 +77,9 @@ Rgba8 flag_colour(PointFlag flag) {
   return {255, 255, 255, 255};
 }
 
-Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age) {
+Rgba8 motion_colour(bool moving) { return moving ? Rgba8{255, 96, 48, 255} : Rgba8{88, 128, 170, 255}; }
+
+Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age, bool moving) {
   age = std::clamp(age, 0.0f, 1.0f);
   Rgba8 c;
   switch (params.mode) {
@@ -84,6 +90,8 @@ Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age)
     }
     case ColourMode::Flag: c = flag_colour(point.flag); break;
     case ColourMode::LapAge: c = sample_palette(params.palette, 1.0f - age); break;
+    // Older laps' hot points, fading, are the trails of whoever walked past.
+    case ColourMode::Motion: c = motion_colour(moving); break;
   }
   if (params.fade_old_laps) {
     // The newest lap is opaque; the oldest kept one is barely there.

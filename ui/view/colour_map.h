@@ -9,7 +9,8 @@
 
 namespace ydscope::ui {
 
-enum class ColourMode : std::uint8_t { Range, Flag, LapAge };
+// Motion: returns closer than the learned room hot, the room calm (motion_background.h).
+enum class ColourMode : std::uint8_t { Range, Flag, LapAge, Motion };
 enum class Palette : std::uint8_t { Turbo, Viridis };
 
 std::string_view colour_mode_name(ColourMode mode);
@@ -30,8 +31,12 @@ struct ColourParams {
   friend bool operator==(const ColourParams&, const ColourParams&) = default;
 };
 
-// `age` is 0 for the newest lap and 1 for the oldest kept lap.
-Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age);
+// Motion mode's two colours: a hot one for what moves, a calm one for the room.
+Rgba8 motion_colour(bool moving);
+
+// `age` is 0 for the newest lap and 1 for the oldest kept lap. In Motion mode the point is the
+// room's unless `moving` says otherwise.
+Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age, bool moving = false);
 
 // Colour of an interference point the filter removed, drawn as a faint ghost when asked.
 Rgba8 ghost_colour(PointFlag flag);

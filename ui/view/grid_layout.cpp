@@ -33,9 +33,6 @@ std::string format_distance(float mm) {
 
 namespace {
 
-// Ring labels are written to the right of their anchor: room for the longest ("12.5 m").
-constexpr float kRingLabelWidthPx = 48.0f;
-
 // Where a ray from `from` along `dir` leaves the rectangle [lo, hi]; false if it never is inside.
 bool ray_exit(Vec2 from, Vec2 dir, Vec2 lo, Vec2 hi, Vec2& exit) {
   float t_enter = 0.0f;
@@ -62,20 +59,25 @@ bool ray_exit(Vec2 from, Vec2 dir, Vec2 lo, Vec2 hi, Vec2& exit) {
 
 }  // namespace
 
+float ring_spacing_px(Vec2 viewport_size) {
+  constexpr float kRingsAcrossHalf = 5.0f;
+  return std::max(70.0f, std::min(viewport_size.x, viewport_size.y) * 0.5f / kRingsAcrossHalf);
+}
+
 GridLayout layout_grid(const ViewTransform& view, float min_ring_px, float spoke_step_deg, float label_angle_deg,
-                       float edge_margin_px) {
+                       float edge_margin_px, float status_band_px) {
   GridLayout grid;
   grid.ring_step_mm = nice_ring_step_mm(view.px_per_mm(), min_ring_px);
   const float visible = view.visible_radius_mm();
   // Rings inside the visible radius only; at most a few hundred even when panned far out.
   const float first = std::max(grid.ring_step_mm, std::floor((length(view.centre_world()) - visible) / grid.ring_step_mm) * grid.ring_step_mm);
   const Vec2 lo = view.viewport_origin() + Vec2{edge_margin_px, edge_margin_px};
-  const Vec2 hi = view.viewport_origin() + view.viewport_size() - Vec2{edge_margin_px, edge_margin_px};
+  const Vec2 hi = view.viewport_origin() + view.viewport_size() - Vec2{edge_margin_px, edge_margin_px + status_band_px};
   for (float r = first; r <= visible && grid.ring_radii_mm.size() < 400; r += grid.ring_step_mm) {
     grid.ring_radii_mm.push_back(r);
     // A label near the window's edge would be cut off or touch it: that ring goes unlabelled.
     const Vec2 at = view.world_to_screen(polar_to_world(label_angle_deg, r));
-    if (at.x >= lo.x && at.y >= lo.y && at.x <= hi.x - kRingLabelWidthPx && at.y <= hi.y)
+    if (at.x >= lo.x && at.y >= lo.y && at.x <= hi.x - kRingLabelWidthPx && at.y + kLabelHeightPx <= hi.y)
       grid.ring_labels.push_back({at, format_distance(r)});
   }
 

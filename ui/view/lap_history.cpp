@@ -15,6 +15,7 @@ void LapHistory::set_depth(std::size_t depth) {
 void LapHistory::push(const Lap& lap) {
   HistoryLap& slot = slots_[next_];
   slot.index = lap.index;
+  slot.first_rx_ns = lap.first_rx_ns;
   slot.last_rx_ns = lap.last_rx_ns;
   slot.points.assign(lap.points.begin(), lap.points.end());  // reuses the slot's capacity
   next_ = (next_ + 1) % slots_.size();

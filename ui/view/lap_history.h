@@ -11,6 +11,7 @@ namespace ydscope::ui {
 
 struct HistoryLap {
   std::uint64_t index = 0;
+  std::int64_t first_rx_ns = 0;  // receive time of the lap's first byte
   std::int64_t last_rx_ns = 0;
   std::vector<LapPoint> points;
 };

@@ -3,7 +3,9 @@
 namespace ydscope::ui {
 
 PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
-                                  const InterferenceSettings& filter, std::vector<PointVertex>& out) {
+                                  const InterferenceSettings& filter, std::vector<PointVertex>& out,
+                                  const MotionBackground* motion) {
+  const bool by_motion = colours.mode == ColourMode::Motion && motion != nullptr;
   out.clear();
   PointCloudStats stats;
   const std::size_t laps = history.size();
@@ -31,7 +33,7 @@ PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams&
         }
         continue;
       }
-      out.push_back({w.x, w.y, point_colour(colours, p, age_fraction)});
+      out.push_back({w.x, w.y, point_colour(colours, p, age_fraction, by_motion && motion->is_moving(p))});
       ++stats.drawn;
     }
   }

@@ -7,6 +7,7 @@
 #include "core/protocol/interference_filter.h"
 #include "ui/view/colour_map.h"
 #include "ui/view/lap_history.h"
+#include "ui/view/motion_background.h"
 
 namespace ydscope::ui {
 
@@ -33,8 +34,10 @@ struct PointCloudStats {
   std::size_t newest_no_return = 0;         // range 0: no echo, never drawn
 };
 
-// Clears `out` (keeping its capacity) and fills it. Points with range 0 are not drawn.
+// Clears `out` (keeping its capacity) and fills it. Points with range 0 are not drawn. `motion`
+// tells moving points from the room in Motion mode (without it every point is the room's).
 PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
-                                  const InterferenceSettings& filter, std::vector<PointVertex>& out);
+                                  const InterferenceSettings& filter, std::vector<PointVertex>& out,
+                                  const MotionBackground* motion = nullptr);
 
 }  // namespace ydscope::ui

@@ -77,6 +77,7 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       if (value == "range") s.colours.mode = ColourMode::Range;
       else if (value == "flag") s.colours.mode = ColourMode::Flag;
       else if (value == "age") s.colours.mode = ColourMode::LapAge;
+      else if (value == "motion") s.colours.mode = ColourMode::Motion;
     } else if (key == "palette") {
       if (value == "turbo") s.colours.palette = Palette::Turbo;
       else if (value == "viridis") s.colours.palette = Palette::Viridis;
@@ -120,7 +121,10 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
 
 std::string format_settings(const ViewSettings& s) {
   std::ostringstream out;
-  const char* mode = s.colours.mode == ColourMode::Range ? "range" : s.colours.mode == ColourMode::Flag ? "flag" : "age";
+  const char* mode = s.colours.mode == ColourMode::Range    ? "range"
+                     : s.colours.mode == ColourMode::Flag   ? "flag"
+                     : s.colours.mode == ColourMode::Motion ? "motion"
+                                                            : "age";
   auto yes = [](bool v) { return v ? "true" : "false"; };
   out << "# ydscope view settings; written on exit\n"
       << "colour_mode = " << mode << "\n"
