@@ -1,8 +1,9 @@
 #include "core/bridge/foxglove_server.h"
 
+#include "core/bridge/client_send_queue.h"
+
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <future>
 #include <map>
 #include <set>
@@ -29,13 +30,6 @@ namespace http = beast::http;
 namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 using Clock = std::chrono::steady_clock;
-
-struct Outgoing {
-  bool text = false;
-  std::string json;
-  std::array<std::uint8_t, 13> header{};
-  std::shared_ptr<const std::vector<std::uint8_t>> payload;
-};
 
 }  // namespace
 
@@ -66,7 +60,8 @@ class FoxgloveServer::Impl {
 
 class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client> {
  public:
-  Client(Impl& server, tcp::socket socket) : server_(server), ws_(std::move(socket)) {
+  Client(Impl& server, tcp::socket socket)
+      : server_(server), ws_(std::move(socket)), queue_(server.options_.client_queue) {
     boost::system::error_code ec;
     const auto endpoint = ws_.next_layer().remote_endpoint(ec);
     peer_ = ec ? "unknown peer" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
@@ -74,7 +69,7 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
 
   asio::awaitable<void> run();
   void send_text(std::string json) {
-    Outgoing out;
+    OutgoingMessage out;
     out.text = true;
     out.json = std::move(json);
     enqueue(std::move(out));
@@ -82,7 +77,7 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
   void send_message(std::uint32_t channel_id, std::uint64_t log_time, const std::shared_ptr<const std::vector<std::uint8_t>>& payload) {
     const auto it = by_channel_.find(channel_id);
     if (it == by_channel_.end()) return;
-    Outgoing out;
+    OutgoingMessage out;
     out.header = message_data_header(it->second, log_time);
     out.payload = payload;
     enqueue(std::move(out));
@@ -98,60 +93,52 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
     ws_.next_layer().shutdown(tcp::socket::shutdown_both, ec);
     ws_.next_layer().close(ec);
   }
-  ClientStats stats() const { return {peer_, sent_, dropped_}; }
+  ClientStats stats() const { return {peer_, sent_, queue_.dropped()}; }
 
  private:
-  void enqueue(Outgoing out);
+  void enqueue(OutgoingMessage out);
   void write_next();
   void handle_text(std::string_view text);
 
   Impl& server_;
   websocket::stream<tcp::socket> ws_;
   std::string peer_;
-  std::deque<Outgoing> queue_;
-  bool writing_ = false;
+  ClientSendQueue queue_;
   bool open_ = false;
   std::map<std::uint32_t, std::uint32_t> subscriptions_;  // subscription id -> channel id
   std::map<std::uint32_t, std::uint32_t> by_channel_;     // channel id -> subscription id
   std::set<std::string> parameter_subscriptions_;
   bool all_parameters_ = false;
   std::uint64_t sent_ = 0;
-  std::uint64_t dropped_ = 0;
   std::uint64_t dropped_reported_ = 0;
   Clock::time_point last_drop_report_{};
 };
 
-void FoxgloveServer::Impl::Client::enqueue(Outgoing out) {
+void FoxgloveServer::Impl::Client::enqueue(OutgoingMessage out) {
   if (!open_) return;
-  // Full: drop the oldest message that is not being written right now.
-  if (queue_.size() >= server_.options_.client_queue) {
-    const std::size_t first_droppable = writing_ ? 1 : 0;
-    if (queue_.size() > first_droppable) {
-      queue_.erase(queue_.begin() + static_cast<std::ptrdiff_t>(first_droppable));
-      ++dropped_;
-    }
-  }
-  queue_.push_back(std::move(out));
-  if (dropped_ > dropped_reported_ && Clock::now() - last_drop_report_ > std::chrono::seconds(5)) {
-    dropped_reported_ = dropped_;
+  queue_.push(std::move(out));
+  const std::uint64_t dropped = queue_.dropped();
+  if (dropped > dropped_reported_ && Clock::now() - last_drop_report_ > std::chrono::seconds(5)) {
+    dropped_reported_ = dropped;
     last_drop_report_ = Clock::now();
-    queue_.push_back(Outgoing{true, status_json(StatusLevel::Warning,
-                                                "this connection is too slow for the lidar: " + std::to_string(dropped_) +
-                                                    " messages dropped so far (the oldest go first)",
-                                                "ydscope-dropped"),
-                              {}, {}});
+    OutgoingMessage warning;
+    warning.text = true;
+    warning.json = status_json(StatusLevel::Warning,
+                               "this connection is too slow for the lidar: " + std::to_string(dropped) +
+                                   " messages dropped so far (the oldest go first)",
+                               "ydscope-dropped");
+    queue_.push(std::move(warning));
   }
   write_next();
 }
 
 void FoxgloveServer::Impl::Client::write_next() {
-  if (writing_ || queue_.empty() || !open_) return;
-  writing_ = true;
-  const Outgoing& out = queue_.front();
+  if (!open_) return;
+  const OutgoingMessage* out = queue_.begin_write();
+  if (!out) return;
   auto self = shared_from_this();
   const auto done = [self](const boost::system::error_code& ec, std::size_t) {
-    self->writing_ = false;
-    if (!self->queue_.empty()) self->queue_.pop_front();
+    self->queue_.end_write();
     if (ec) {
       self->open_ = false;  // the read side notices too and removes the client
       self->close();
@@ -160,11 +147,11 @@ void FoxgloveServer::Impl::Client::write_next() {
     ++self->sent_;
     self->write_next();
   };
-  ws_.text(out.text);
-  if (out.text) {
-    ws_.async_write(asio::buffer(out.json), done);
+  ws_.text(out->text);
+  if (out->text) {
+    ws_.async_write(asio::buffer(out->json), done);
   } else {
-    const std::array<asio::const_buffer, 2> buffers{asio::buffer(out.header), asio::buffer(*out.payload)};
+    const std::array<asio::const_buffer, 2> buffers{asio::buffer(out->header), asio::buffer(*out->payload)};
     ws_.async_write(buffers, done);
   }
 }
