@@ -4,8 +4,11 @@
 // The message being written sits in a slot of its own: the socket write reads its bytes until it
 // completes, so it must never move. (A single deque holding it at the front moved it: erasing the
 // oldest waiting message right behind it shifted the front element, under the running write.)
-// When the queue is full, the oldest waiting message is dropped and counted; the one in flight
-// is never dropped. Not thread-safe: the server's thread owns it.
+// When the queue is full, the oldest waiting lap (binary Message Data) is dropped and counted, so
+// the status message telling a slow client about its drops is not itself dropped by the next
+// lap; only a queue of nothing but text messages drops its oldest text. The message in flight is
+// never dropped. Not thread-safe: the server's thread owns it.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -29,11 +32,13 @@ class ClientSendQueue {
   // At most `capacity` messages waiting or in flight (at least 1) before the oldest waiting goes.
   explicit ClientSendQueue(std::size_t capacity) : capacity_(capacity < 1 ? 1 : capacity) {}
 
-  // Queues `message`, dropping the oldest waiting message first when full. True if one was dropped.
+  // Queues `message`, dropping the oldest waiting lap (else text) first when full. True if one
+  // was dropped.
   bool push(OutgoingMessage message) {
     bool dropped = false;
     if (waiting_.size() + (in_flight_ ? 1 : 0) >= capacity_ && !waiting_.empty()) {
-      waiting_.pop_front();
+      const auto lap = std::find_if(waiting_.begin(), waiting_.end(), [](const OutgoingMessage& m) { return !m.text; });
+      waiting_.erase(lap != waiting_.end() ? lap : waiting_.begin());
       ++dropped_;
       dropped = true;
     }

@@ -66,5 +66,36 @@ TEST(ClientSendQueue, CapacityOneStillDeliversTheNewestAfterTheWrite) {
   EXPECT_EQ(number_of(*queue.begin_write()), 3);
 }
 
+// Regression: the status warning about drops was queued behind laps and dropped by the next
+// ones, so a client slow enough to lose laps never heard about it.
+TEST(ClientSendQueue, TextMessagesOutliveLapsWhenTheQueueIsFull) {
+  ClientSendQueue queue(3);
+  queue.push(numbered(1));
+  OutgoingMessage warning;
+  warning.text = true;
+  warning.json = R"({"op":"status"})";
+  queue.push(warning);
+  for (int n = 2; n <= 50; ++n) queue.push(numbered(n));
+  EXPECT_EQ(queue.dropped(), 48u);
+  const OutgoingMessage* first = queue.begin_write();
+  ASSERT_NE(first, nullptr);
+  EXPECT_TRUE(first->text) << "the warning was dropped";
+  queue.end_write();
+  EXPECT_EQ(number_of(*queue.begin_write()), 49);
+}
+
+TEST(ClientSendQueue, AQueueOfTextAloneStaysBounded) {
+  ClientSendQueue queue(2);
+  for (int n = 0; n < 10; ++n) {
+    OutgoingMessage status;
+    status.text = true;
+    status.json = std::to_string(n);
+    queue.push(status);
+  }
+  EXPECT_EQ(queue.waiting(), 2u);
+  EXPECT_EQ(queue.dropped(), 8u);
+  EXPECT_EQ(queue.begin_write()->json, "8");
+}
+
 }  // namespace
 }  // namespace ydscope::foxglove
