@@ -1,7 +1,5 @@
 #include "core/bridge/foxglove_server.h"
 
-#include "core/bridge/client_send_queue.h"
-
 #include <algorithm>
 #include <chrono>
 #include <future>
@@ -20,6 +18,8 @@
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
+
+#include "core/bridge/client_send_queue.h"
 
 namespace ydscope::foxglove {
 namespace {

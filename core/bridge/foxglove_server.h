@@ -2,8 +2,9 @@
 // FoxgloveServer: a WebSocket server speaking foxglove.websocket.v1 (Boost.Beast) on a thread of
 // its own, so slow or broken clients never touch the session's I/O thread or each other.
 //
-// Each client has a bounded send queue: when it is full, the oldest queued message is dropped
-// and counted for that client (a status warning tells the client, at most every 5 s). Client
+// Each client has a bounded send queue (core/bridge/client_send_queue.h): when it is full, the
+// oldest queued lap is dropped and counted for that client (a status warning tells the client,
+// at most every 5 s). Client
 // text messages above kMaxClientMessage, malformed JSON, unknown ops and bad subscriptions get a
 // status message and are otherwise ignored; a client that vanishes mid-frame is just removed.
 //
