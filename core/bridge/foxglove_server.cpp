@@ -14,6 +14,7 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/redirect_error.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/asio/use_awaitable.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/http.hpp>
@@ -43,7 +44,7 @@ class FoxgloveServer::Impl {
 
   bool start(std::string& error);
   void stop();
-  void on_client_gone(const std::shared_ptr<Client>& client) { clients_.erase(client); }
+  void on_client_gone(const std::shared_ptr<Client>& client);
   asio::awaitable<void> accept_loop();
 
   ServerOptions options_;
@@ -61,7 +62,7 @@ class FoxgloveServer::Impl {
 class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client> {
  public:
   Client(Impl& server, tcp::socket socket)
-      : server_(server), ws_(std::move(socket)), queue_(server.options_.client_queue) {
+      : server_(server), ws_(std::move(socket)), queue_(server.options_.client_queue), handshake_timer_(server.io_) {
     boost::system::error_code ec;
     const auto endpoint = ws_.next_layer().remote_endpoint(ec);
     peer_ = ec ? "unknown peer" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
@@ -89,6 +90,7 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
     if (!chosen.empty() || id) send_text(parameter_values_json(chosen, id));
   }
   void close() {
+    handshake_timer_.cancel();
     boost::system::error_code ec;
     ws_.next_layer().shutdown(tcp::socket::shutdown_both, ec);
     ws_.next_layer().close(ec);
@@ -112,7 +114,13 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
   std::uint64_t sent_ = 0;
   std::uint64_t dropped_reported_ = 0;
   Clock::time_point last_drop_report_{};
+  asio::steady_timer handshake_timer_;  // the HTTP upgrade has no timeout of its own
 };
+
+void FoxgloveServer::Impl::on_client_gone(const std::shared_ptr<Client>& client) {
+  client->close();
+  clients_.erase(client);
+}
 
 void FoxgloveServer::Impl::Client::enqueue(OutgoingMessage out) {
   if (!open_) return;
@@ -160,6 +168,10 @@ asio::awaitable<void> FoxgloveServer::Impl::Client::run() {
   auto self = shared_from_this();
   boost::system::error_code ec;
   auto token = asio::redirect_error(asio::use_awaitable, ec);
+  handshake_timer_.expires_after(server_.options_.handshake_timeout);
+  handshake_timer_.async_wait([weak = weak_from_this()](const boost::system::error_code& timer_ec) {
+    if (auto client = weak.lock(); client && !timer_ec && !client->open_) client->close();
+  });
   beast::flat_buffer buffer;
   http::request<http::string_body> request;
   co_await http::async_read(ws_.next_layer(), buffer, request, token);
@@ -181,8 +193,14 @@ asio::awaitable<void> FoxgloveServer::Impl::Client::run() {
     response.set(http::field::server, "ydscope");
   }));
   ws_.read_message_max(16u << 20);  // beyond this Beast closes the connection; below it we ignore
+  websocket::stream_base::timeout timeouts;
+  timeouts.handshake_timeout = server_.options_.handshake_timeout;
+  timeouts.idle_timeout = server_.options_.idle_timeout;
+  timeouts.keep_alive_pings = true;
+  ws_.set_option(timeouts);
   co_await ws_.async_accept(request, token);
   if (ec) co_return server_.on_client_gone(self);
+  handshake_timer_.cancel();
   open_ = true;
   send_text(server_info_json(server_.options_.name, std::to_string(Clock::now().time_since_epoch().count())));
   std::vector<ChannelAd> ads;
