@@ -302,7 +302,11 @@ asio::awaitable<void> FoxgloveServer::Impl::accept_loop() {
     tcp::socket socket = co_await acceptor_.async_accept(asio::redirect_error(asio::use_awaitable, ec));
     if (ec) {
       if (stopped_ || ec == asio::error::operation_aborted) co_return;
-      continue;  // e.g. too many open files: keep serving the others
+      // E.g. out of file descriptors: the waiting connection fails again at once, so retrying
+      // straight away would spin the server's thread; keep serving the others and retry soon.
+      asio::steady_timer pause(io_, std::chrono::milliseconds(100));
+      co_await pause.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+      continue;
     }
     socket.set_option(tcp::no_delay(true), ec);
     auto client = std::make_shared<Client>(*this, std::move(socket));
