@@ -15,6 +15,7 @@
 #include "app/cli/session_cli.h"
 #include "app/cli/session_parameters.h"
 #include "core/bridge/foxglove_server.h"
+#include "core/bridge/ros_topic_channels.h"
 #include "core/export/mcap_recording_export.h"
 #include "core/link/record_tap.h"
 
@@ -92,13 +93,6 @@ foxglove::ServerOptions listen_options(const Arguments& args) {
 
 bool is_loopback(const std::string& host) { return host.rfind("127.", 0) == 0 || host == "::1" || host == "localhost"; }
 
-std::vector<foxglove::ServerChannel> channels() {
-  std::vector<foxglove::ServerChannel> out;
-  for (const RosTopicInfo& t : ros_topics())
-    out.push_back({static_cast<std::uint32_t>(t.topic) + 1, std::string(t.name), std::string(t.schema->name), std::string(t.schema->text)});
-  return out;
-}
-
 int run_serve(std::span<const std::string> raw) {
   const Arguments args(raw, with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds"})),
                        with_mcap_flags({"force"}));
@@ -114,7 +108,7 @@ int run_serve(std::span<const std::string> raw) {
 
   Session session(4);
   SessionParameters parameters(session);
-  foxglove::FoxgloveServer server(server_options, channels(), &parameters);
+  foxglove::FoxgloveServer server(server_options, foxglove::ros_topic_channels(), &parameters);
   std::string error;
   if (!server.start(error)) throw std::runtime_error(error);
   if (!is_loopback(server_options.host))
@@ -125,7 +119,7 @@ int run_serve(std::span<const std::string> raw) {
   std::unique_ptr<McapRecordingExport> mcap;
   std::unique_ptr<RosTopicEncoder> encoder;
   const auto publish = [&server](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-    server.publish(static_cast<std::uint32_t>(topic) + 1, log_time, std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
+    server.publish(foxglove::channel_id(topic), log_time, std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
   };
   if (mcap_path) {
     mcap = McapRecordingExport::create(*mcap_path, export_options, error);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <future>
 #include <map>
 #include <set>
@@ -15,10 +14,13 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/redirect_error.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/asio/use_awaitable.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
+
+#include "core/bridge/client_send_queue.h"
 
 namespace ydscope::foxglove {
 namespace {
@@ -29,13 +31,6 @@ namespace http = beast::http;
 namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 using Clock = std::chrono::steady_clock;
-
-struct Outgoing {
-  bool text = false;
-  std::string json;
-  std::array<std::uint8_t, 13> header{};
-  std::shared_ptr<const std::vector<std::uint8_t>> payload;
-};
 
 }  // namespace
 
@@ -49,7 +44,7 @@ class FoxgloveServer::Impl {
 
   bool start(std::string& error);
   void stop();
-  void on_client_gone(const std::shared_ptr<Client>& client) { clients_.erase(client); }
+  void on_client_gone(const std::shared_ptr<Client>& client);
   asio::awaitable<void> accept_loop();
 
   ServerOptions options_;
@@ -66,7 +61,8 @@ class FoxgloveServer::Impl {
 
 class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client> {
  public:
-  Client(Impl& server, tcp::socket socket) : server_(server), ws_(std::move(socket)) {
+  Client(Impl& server, tcp::socket socket)
+      : server_(server), ws_(std::move(socket)), queue_(server.options_.client_queue), handshake_timer_(server.io_) {
     boost::system::error_code ec;
     const auto endpoint = ws_.next_layer().remote_endpoint(ec);
     peer_ = ec ? "unknown peer" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
@@ -74,7 +70,7 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
 
   asio::awaitable<void> run();
   void send_text(std::string json) {
-    Outgoing out;
+    OutgoingMessage out;
     out.text = true;
     out.json = std::move(json);
     enqueue(std::move(out));
@@ -82,7 +78,7 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
   void send_message(std::uint32_t channel_id, std::uint64_t log_time, const std::shared_ptr<const std::vector<std::uint8_t>>& payload) {
     const auto it = by_channel_.find(channel_id);
     if (it == by_channel_.end()) return;
-    Outgoing out;
+    OutgoingMessage out;
     out.header = message_data_header(it->second, log_time);
     out.payload = payload;
     enqueue(std::move(out));
@@ -94,64 +90,63 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
     if (!chosen.empty() || id) send_text(parameter_values_json(chosen, id));
   }
   void close() {
+    handshake_timer_.cancel();
     boost::system::error_code ec;
     ws_.next_layer().shutdown(tcp::socket::shutdown_both, ec);
     ws_.next_layer().close(ec);
   }
-  ClientStats stats() const { return {peer_, sent_, dropped_}; }
+  ClientStats stats() const { return {peer_, sent_, queue_.dropped()}; }
 
  private:
-  void enqueue(Outgoing out);
+  void enqueue(OutgoingMessage out);
   void write_next();
   void handle_text(std::string_view text);
 
   Impl& server_;
   websocket::stream<tcp::socket> ws_;
   std::string peer_;
-  std::deque<Outgoing> queue_;
-  bool writing_ = false;
+  ClientSendQueue queue_;
   bool open_ = false;
   std::map<std::uint32_t, std::uint32_t> subscriptions_;  // subscription id -> channel id
   std::map<std::uint32_t, std::uint32_t> by_channel_;     // channel id -> subscription id
   std::set<std::string> parameter_subscriptions_;
   bool all_parameters_ = false;
   std::uint64_t sent_ = 0;
-  std::uint64_t dropped_ = 0;
   std::uint64_t dropped_reported_ = 0;
   Clock::time_point last_drop_report_{};
+  asio::steady_timer handshake_timer_;  // the HTTP upgrade has no timeout of its own
 };
 
-void FoxgloveServer::Impl::Client::enqueue(Outgoing out) {
+void FoxgloveServer::Impl::on_client_gone(const std::shared_ptr<Client>& client) {
+  client->close();
+  clients_.erase(client);
+}
+
+void FoxgloveServer::Impl::Client::enqueue(OutgoingMessage out) {
   if (!open_) return;
-  // Full: drop the oldest message that is not being written right now.
-  if (queue_.size() >= server_.options_.client_queue) {
-    const std::size_t first_droppable = writing_ ? 1 : 0;
-    if (queue_.size() > first_droppable) {
-      queue_.erase(queue_.begin() + static_cast<std::ptrdiff_t>(first_droppable));
-      ++dropped_;
-    }
-  }
-  queue_.push_back(std::move(out));
-  if (dropped_ > dropped_reported_ && Clock::now() - last_drop_report_ > std::chrono::seconds(5)) {
-    dropped_reported_ = dropped_;
+  queue_.push(std::move(out));
+  const std::uint64_t dropped = queue_.dropped();
+  if (dropped > dropped_reported_ && Clock::now() - last_drop_report_ > std::chrono::seconds(5)) {
+    dropped_reported_ = dropped;
     last_drop_report_ = Clock::now();
-    queue_.push_back(Outgoing{true, status_json(StatusLevel::Warning,
-                                                "this connection is too slow for the lidar: " + std::to_string(dropped_) +
-                                                    " messages dropped so far (the oldest go first)",
-                                                "ydscope-dropped"),
-                              {}, {}});
+    OutgoingMessage warning;
+    warning.text = true;
+    warning.json = status_json(StatusLevel::Warning,
+                               "this connection is too slow for the lidar: " + std::to_string(dropped) +
+                                   " messages dropped so far (the oldest go first)",
+                               "ydscope-dropped");
+    queue_.push(std::move(warning));
   }
   write_next();
 }
 
 void FoxgloveServer::Impl::Client::write_next() {
-  if (writing_ || queue_.empty() || !open_) return;
-  writing_ = true;
-  const Outgoing& out = queue_.front();
+  if (!open_) return;
+  const OutgoingMessage* out = queue_.begin_write();
+  if (!out) return;
   auto self = shared_from_this();
   const auto done = [self](const boost::system::error_code& ec, std::size_t) {
-    self->writing_ = false;
-    if (!self->queue_.empty()) self->queue_.pop_front();
+    self->queue_.end_write();
     if (ec) {
       self->open_ = false;  // the read side notices too and removes the client
       self->close();
@@ -160,11 +155,11 @@ void FoxgloveServer::Impl::Client::write_next() {
     ++self->sent_;
     self->write_next();
   };
-  ws_.text(out.text);
-  if (out.text) {
-    ws_.async_write(asio::buffer(out.json), done);
+  ws_.text(out->text);
+  if (out->text) {
+    ws_.async_write(asio::buffer(out->json), done);
   } else {
-    const std::array<asio::const_buffer, 2> buffers{asio::buffer(out.header), asio::buffer(*out.payload)};
+    const std::array<asio::const_buffer, 2> buffers{asio::buffer(out->header), asio::buffer(*out->payload)};
     ws_.async_write(buffers, done);
   }
 }
@@ -173,6 +168,10 @@ asio::awaitable<void> FoxgloveServer::Impl::Client::run() {
   auto self = shared_from_this();
   boost::system::error_code ec;
   auto token = asio::redirect_error(asio::use_awaitable, ec);
+  handshake_timer_.expires_after(server_.options_.handshake_timeout);
+  handshake_timer_.async_wait([weak = weak_from_this()](const boost::system::error_code& timer_ec) {
+    if (auto client = weak.lock(); client && !timer_ec && !client->open_) client->close();
+  });
   beast::flat_buffer buffer;
   http::request<http::string_body> request;
   co_await http::async_read(ws_.next_layer(), buffer, request, token);
@@ -194,8 +193,14 @@ asio::awaitable<void> FoxgloveServer::Impl::Client::run() {
     response.set(http::field::server, "ydscope");
   }));
   ws_.read_message_max(16u << 20);  // beyond this Beast closes the connection; below it we ignore
+  websocket::stream_base::timeout timeouts;
+  timeouts.handshake_timeout = server_.options_.handshake_timeout;
+  timeouts.idle_timeout = server_.options_.idle_timeout;
+  timeouts.keep_alive_pings = true;
+  ws_.set_option(timeouts);
   co_await ws_.async_accept(request, token);
   if (ec) co_return server_.on_client_gone(self);
+  handshake_timer_.cancel();
   open_ = true;
   send_text(server_info_json(server_.options_.name, std::to_string(Clock::now().time_since_epoch().count())));
   std::vector<ChannelAd> ads;
@@ -297,7 +302,11 @@ asio::awaitable<void> FoxgloveServer::Impl::accept_loop() {
     tcp::socket socket = co_await acceptor_.async_accept(asio::redirect_error(asio::use_awaitable, ec));
     if (ec) {
       if (stopped_ || ec == asio::error::operation_aborted) co_return;
-      continue;  // e.g. too many open files: keep serving the others
+      // E.g. out of file descriptors: the waiting connection fails again at once, so retrying
+      // straight away would spin the server's thread; keep serving the others and retry soon.
+      asio::steady_timer pause(io_, std::chrono::milliseconds(100));
+      co_await pause.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+      continue;
     }
     socket.set_option(tcp::no_delay(true), ec);
     auto client = std::make_shared<Client>(*this, std::move(socket));

@@ -2,14 +2,16 @@
 // FoxgloveServer: a WebSocket server speaking foxglove.websocket.v1 (Boost.Beast) on a thread of
 // its own, so slow or broken clients never touch the session's I/O thread or each other.
 //
-// Each client has a bounded send queue: when it is full, the oldest queued message is dropped
-// and counted for that client (a status warning tells the client, at most every 5 s). Client
+// Each client has a bounded send queue (core/bridge/client_send_queue.h): when it is full, the
+// oldest queued lap is dropped and counted for that client (a status warning tells the client,
+// at most every 5 s). Client
 // text messages above kMaxClientMessage, malformed JSON, unknown ops and bad subscriptions get a
 // status message and are otherwise ignored; a client that vanishes mid-frame is just removed.
 //
 // Thread contract: publish(), broadcast_parameters(), clients() and stop() may be called from
 // any thread. The ParameterBackend is called on the server's thread and must not block: it
 // reports results through its callback, from any thread.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -35,6 +37,12 @@ struct ServerOptions {
   std::string host = "127.0.0.1";
   std::uint16_t port = 8765;            // 0 picks a free port (see port())
   std::size_t client_queue = 64;        // messages queued per client before the oldest is dropped
+  // A connection that has not finished the WebSocket handshake by then is closed (a port scanner,
+  // a peer gone half way). After it, a client that sends nothing for idle_timeout, not even the
+  // pong to the server's keep-alive ping (sent at half of it), is closed: a peer that vanished
+  // without FIN or RST would otherwise hold its socket for ever.
+  std::chrono::milliseconds handshake_timeout{30'000};
+  std::chrono::milliseconds idle_timeout{300'000};
   std::string name = "ydscope";
 };
 

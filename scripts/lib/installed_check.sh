@@ -11,6 +11,14 @@ fail() { echo "installed check: $*" >&2; exit 1; }
 [ "$($app --version)" = "ydscope $version" ] || fail "ydscope --version says '$($app --version)', not $version"
 man -w ydscope-cli-scan >/dev/null || fail "no man page for ydscope-cli scan"
 [ -f /usr/lib/udev/rules.d/70-ydlidar.rules ] || fail "the udev rule is not installed"
+unit=/usr/lib/systemd/system/ydscope-serve@.service
+[ -f "$unit" ] || fail "the systemd unit ydscope-serve@.service is not installed"
+grep -q '^ExecStart=/usr/bin/ydscope-cli serve ' "$unit" || fail "$unit does not start /usr/bin/ydscope-cli serve"
+if command -v systemd-analyze >/dev/null; then
+  # An instance name, since a template alone cannot be loaded; checks the unit's syntax and that
+  # its ExecStart exists.
+  systemd-analyze verify "${unit%@.service}@ttyUSB0.service" || fail "systemd-analyze verify rejects $unit"
+fi
 
 link=$(mktemp -u /tmp/ydscope-ci-lidar.XXXXXX)
 $cli sim --model G6 --pty "$link" &
