@@ -18,7 +18,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo]
+constexpr std::string_view kHelpText = R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth]
                        [--seed N] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
                        [--delivery whole|burst:BYTES:US|random:MAX] [fault options] [--verbose]
 
@@ -36,6 +36,8 @@ G6/TG 512000), and can inject faults. It serves until SIGINT or SIGTERM, then ex
   --scene NAME           room: walls, furniture, two people walking, a mirror (G1 flag 2) and a
                          sunlit window (G1 flag 3). demo (default): a turning flower, orbiting
                          moons and a star-shaped wall, made to look good on a trade-show screen.
+                         booth: a stand facing an aisle where visitors walk past (the app's
+                         motion highlighting paints them hot).
   --seed N               seed of the scene's noise and motion, the serial number and every fault
                          decision (default 1). The same seed gives the same bytes.
   --distance-scale X     encode ranges with X mm per raw unit instead of the manual's (G1 1,
