@@ -3,7 +3,10 @@
 // --screenshot picture, even with a pointer moving over a point while it is taken.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "app_test_support.h"
+#include "private_display.h"
 #include "x11_input.h"
 
 namespace ydscope::test {
@@ -30,7 +33,9 @@ int hover_words(const Image& image, Spot at) {
 }
 
 TEST(AppHover, TheBoxFollowsAMovingPointerAndGoesWhenItRests) {
-  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
+  const PrivateDisplay display;  // before the hands: they open it
+  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
   X11Hands hands;
   ASSERT_TRUE(hands) << "cannot open the X display";
   const std::filesystem::path dir = fresh_temp_dir("ydscope-hover");
