@@ -12,6 +12,7 @@
 #include "ui/panels/panels.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
+#include "ui/view/booth_calm.h"
 #include "ui/view/health_names.h"
 
 namespace ydscope::gui {
@@ -203,6 +204,15 @@ void App::start_clean() {
   view_->invalidate();
 }
 
+void App::follow_pointer() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) pointer_moved_s_ = model_.now_s;
+  const bool hide = ui::cursor_hidden(model_.now_s - pointer_moved_s_, fullscreen_);
+  if (hide == cursor_hidden_) return;
+  cursor_hidden_ = hide;
+  glfwSetInputMode(window_, GLFW_CURSOR, hide ? GLFW_CURSOR_HIDDEN : GLFW_CURSOR_NORMAL);
+}
+
 void App::toggle_fullscreen() {
   GLFWmonitor* monitor = glfwGetPrimaryMonitor();
   if (!fullscreen_) {
@@ -216,12 +226,16 @@ void App::toggle_fullscreen() {
     // The booth view shows who walks past: motion colours, back to the user's mode on leaving.
     windowed_colour_mode_ = settings_.colours.mode;
     settings_.colours.mode = ui::ColourMode::Motion;
+    windowed_persistence_ = settings_.persistence_laps;  // long enough for trails to read as motion
+    settings_.persistence_laps = ui::booth_persistence(settings_.persistence_laps);
   } else {
     glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3], 0);
     fullscreen_ = false;
     settings_.show_panels = true;
     if (windowed_colour_mode_ && settings_.colours.mode == ui::ColourMode::Motion) settings_.colours.mode = *windowed_colour_mode_;
     windowed_colour_mode_.reset();
+    if (windowed_persistence_) settings_.persistence_laps = *windowed_persistence_;
+    windowed_persistence_.reset();
   }
 }
 
@@ -239,6 +253,7 @@ void App::frame() {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   handle_keys();
+  follow_pointer();
 
   int win_w = 0, win_h = 0, fb_w = 0, fb_h = 0;
   glfwGetWindowSize(window_, &win_w, &win_h);

@@ -61,6 +61,8 @@ class App {
   // The replay's position for its panel, while a replay is the source.
   void follow_replay();
   void toggle_fullscreen();
+  // The booth view hides the pointer once it rests; any move brings it back.
+  void follow_pointer();
   // A new source or a Disconnect: everything measured from the old one goes.
   void start_clean();
   // Starts `request` (after start_clean) and puts the outcome where the user looks: the overlay,
@@ -97,6 +99,10 @@ class App {
   ui::LapHistory history_;
   ui::MotionBackground motion_;  // the room, learned from the laps the view shows
   std::optional<ui::ColourMode> windowed_colour_mode_;  // restored on leaving the booth view
+  std::optional<int> windowed_persistence_;              // likewise
+  std::string shown_banner_;                             // the banner whose age model_ holds
+  double pointer_moved_s_ = 0.0;                         // the booth view hides a resting pointer
+  bool cursor_hidden_ = false;
   Lap lap_;
   std::unique_ptr<ui::PolarView> view_;
   std::chrono::steady_clock::time_point start_;

@@ -30,6 +30,10 @@ void App::update_model() {
       model_.snap = session_.snapshot();
     }
   }
+  if (model_.banner != shown_banner_) {  // a new banner's age starts now (the booth view fades it)
+    shown_banner_ = model_.banner;
+    model_.banner_since_s = model_.now_s;
+  }
   model_.sim_active = source_.sim_active();
   const SessionSnapshot& s = model_.snap;
   // The target field starts from the device's set value whenever that changes.

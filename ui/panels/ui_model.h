@@ -51,6 +51,7 @@ struct UiModel {
   SessionSnapshot snap;
   std::string source_text;  // "virtual G6 (demo scene) on /dev/pts/4", "recording demo.ydrec"
   std::string banner;       // shown over the view, e.g. "No lidar found — showing the virtual G6 (demo scene)"
+  double banner_since_s = 0.0;  // when this banner first showed (the booth view fades it)
   std::string start_error;  // why the chosen source did not start (then there is no source)
   bool start_error_replay = false;  // ... and it was a recording
   std::vector<std::string> source_warnings;  // wrong with the source but not stopping it

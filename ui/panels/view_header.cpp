@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
+#include "ui/view/booth_calm.h"
 #include "ui/render/theme.h"
 
 namespace ydscope::ui {
@@ -97,13 +98,15 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
           error ? IM_COL32(255, 255, 255, 255) : IM_COL32(20, 15, 5, 255));
   }
 
-  if (!m.banner.empty()) {
+  const float banner_alpha = banner_opacity(m.now_s - m.banner_since_s, m.booth);
+  if (!m.banner.empty() && banner_alpha > 0.0f) {
     const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str(), nullptr, false, wrap - 28.0f);
     const float x = view_left + std::max(16.0f, (view_width - size.x) * 0.5f);
     const float by = 44.0f + (s.recording || !m.alerts.empty() ? line : 0.0f);
-    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, 215), 8.0f);
-    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x, by}, IM_COL32(210, 230, 255, 255), m.banner.c_str(), nullptr,
-                  wrap - 28.0f);
+    const auto alpha = [banner_alpha](int a) { return static_cast<ImU32>(static_cast<float>(a) * banner_alpha); };
+    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, alpha(215)), 8.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x, by}, IM_COL32(210, 230, 255, alpha(255)), m.banner.c_str(),
+                  nullptr, wrap - 28.0f);
   }
 }
 

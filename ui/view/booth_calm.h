@@ -1,0 +1,24 @@
+#pragma once
+// In the booth view (full screen at a trade show) what is there for an operator gets out of the
+// visitors' way: a banner ("No lidar found, showing the virtual G6") says its piece and fades, the
+// pointer hides once nobody moves it, and persistence is long enough for trails to read as motion.
+// The windowed view keeps all of them as they are.
+namespace ydscope::ui {
+
+// A banner is shown whole this long, then fades out over kBannerFadeSeconds.
+inline constexpr double kBannerHoldSeconds = 6.0;
+inline constexpr double kBannerFadeSeconds = 2.0;
+// The pointer hides after resting this long.
+inline constexpr double kCursorRestSeconds = 3.0;
+// The booth view's persistence, in laps.
+inline constexpr int kBoothMinPersistence = 30;
+inline constexpr int kBoothMaxPersistence = 60;
+
+// 1 for a banner `age_s` old in the windowed view; in the booth view 1, then down to 0.
+float banner_opacity(double age_s, bool booth);
+// Whether the pointer, last moved `rested_s` ago, is hidden.
+bool cursor_hidden(double rested_s, bool booth);
+// The persistence the booth view uses, given the windowed view's.
+int booth_persistence(int windowed_laps);
+
+}  // namespace ydscope::ui
