@@ -1,8 +1,7 @@
 # ydscope_forbid_includes(TARGET FOLDER REASON [INCLUDES dir...] [DEPENDS file...] PATTERNS regex...):
-# the build of
-# TARGET fails when any .cpp or .h in FOLDER reaches a header whose path matches one of the
-# regular expressions, with a message naming the file, the header and the reason. A layer's rules
-# are then facts the build checks, not conventions a reviewer has to remember. INCLUDES are the
+# the build of TARGET fails when any .cpp or .h in FOLDER reaches a header whose path matches one
+# of the regular expressions, with a message naming the file, the header and the reason. A layer's
+# rules are then facts the build checks, not conventions a reviewer has to remember. INCLUDES are the
 # folders of foreign or generated headers the layer uses (ImGui's, say), so the compiler can follow
 # them; DEPENDS names generated headers that must exist first.
 function(ydscope_forbid_includes target folder reason)

@@ -32,8 +32,6 @@ class LapPrinter {
 
   // The summary line follows the laps in jsonl and summary; a CSV holds only its rows.
   bool wants_summary() const { return format_ != LapFormat::Csv; }
-  // Receive time of the first printed lap's first byte, once a lap was printed.
-  std::optional<std::int64_t> origin_ns() const { return origin_ns_; }
 
  private:
   JsonOut& out_;

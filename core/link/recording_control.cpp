@@ -57,7 +57,7 @@ std::optional<std::string> RecordingControl::flush_file() {
 }
 
 void RecordingControl::record_metadata(const RecordingMetadata& metadata) {
-  if (recorder_.capturing()) recorder_.metadata(metadata);
+  recorder_.metadata(metadata);  // to the file and the tap, whichever are open
 }
 
 void RecordingControl::update_wire_hook() {

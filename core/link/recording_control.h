@@ -33,7 +33,7 @@ class RecordingControl {
 
   bool file_active() const { return recorder_.active(); }
   const std::string& file_path() const { return recorder_.path(); }
-  // Adds a metadata record to whatever captures (nothing when nothing does).
+  // Adds a metadata record to whatever captures (SessionRecorder skips what is not open).
   void record_metadata(const RecordingMetadata& metadata);
   bool capturing() const { return recorder_.capturing(); }
 

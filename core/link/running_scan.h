@@ -27,7 +27,6 @@ class RunningScan {
   double restart(const ModelProfile& profile);
   // The user's scale (empty: the model's). Applies from the next restart.
   void set_scale_override(std::optional<double> mm_per_count) { scale_override_ = mm_per_count; }
-  bool decoding() const { return decoder_ != nullptr; }
   std::optional<double> distance_scale() const;
 
   // Decodes `bytes` received at rx_ns; returns how many bytes can come before a lap could close.
