@@ -145,6 +145,7 @@ void App::drain_laps() {
   if (drained > 0) last_lap_at_ = std::chrono::steady_clock::now();
   if (drained == 0 || model_.paused_view) return;
   history_.push(lap_);
+  lap_phase_.on_lap(seconds_since_start(last_frame_));
   motion_.add_lap(lap_);
   view_->invalidate();
   ++model_.laps_shown;
@@ -197,6 +198,8 @@ void App::start_clean() {
   last_lap_at_.reset();
   pending_latency_rx_ns_ = 0;
   history_.clear();
+  lap_phase_.reset();
+  shown_phase_ = 0.0f;
   motion_.clear();
   lap_ = {};
   while (measured_laps_->try_pop(measured_lap_)) {
@@ -240,7 +243,9 @@ void App::toggle_fullscreen() {
 }
 
 void App::frame() {
-  last_frame_ = std::chrono::steady_clock::now();
+  const auto now = std::chrono::steady_clock::now();
+  model_.frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
+  last_frame_ = now;
 
   drain_laps();
   update_model();
@@ -265,14 +270,16 @@ void App::frame() {
   view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
   view_->set_status_band(ui::status_band_height());
   view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
-                       std::chrono::duration<double>(last_frame_ - start_).count());
+                       seconds_since_start(last_frame_));
   if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
     char spec[48];
     std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
     model_.requests.push_back(ui::WatchSector{spec});
   }
   view_->auto_range(history_, settings_);
-  model_.cloud = view_->update_cloud(history_, settings_, &motion_);
+  if (animating()) shown_phase_ = lap_phase_.at(seconds_since_start(last_frame_));
+  else if (!settings_.smooth) shown_phase_ = 0.0f;
+  model_.cloud = view_->update_cloud(history_, settings_, &motion_, shown_phase_);
   model_.laps_on_screen = history_.size();
   model_.points_drawn_total = view_->vertex_count();
   ui::draw_view_header(model_, sidebar, view_w);

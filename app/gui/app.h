@@ -13,6 +13,7 @@
 #include "ui/panels/ui_model.h"
 #include "ui/render/polar_view.h"
 #include "ui/view/lap_history.h"
+#include "ui/view/lap_phase.h"
 #include "ui/view/motion_background.h"
 #include "ui/view/settings.h"
 
@@ -37,6 +38,10 @@ class App {
   std::uint64_t laps_shown() const { return model_.laps_shown; }
   // Laps are arriving (the link is scanning).
   bool streaming() const { return model_.snap.state == LinkState::Scanning; }
+  // The picture changes between laps (persistence fading): the loop draws at the display's rate.
+  bool animating() const {
+    return settings_.smooth && streaming() && !model_.paused_view && history_.size() > 1;
+  }
   const std::string& last_error() const { return model_.status_message; }
   bool quit_requested() const { return quit_; }
   // No lap will come until the user picks another source: it did not start, or it is a replay
@@ -61,6 +66,9 @@ class App {
   // The replay's position for its panel, while a replay is the source.
   void follow_replay();
   void toggle_fullscreen();
+  double seconds_since_start(std::chrono::steady_clock::time_point t) const {
+    return std::chrono::duration<double>(t - start_).count();
+  }
   // The booth view hides the pointer once it rests; any move brings it back.
   void follow_pointer();
   // A new source or a Disconnect: everything measured from the old one goes.
@@ -97,6 +105,8 @@ class App {
   Lap measured_lap_;
   LidarSource source_;
   ui::LapHistory history_;
+  ui::LapPhase lap_phase_;   // how far between two laps, for fading persistence at display rate
+  float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
   ui::MotionBackground motion_;  // the room, learned from the laps the view shows
   std::optional<ui::ColourMode> windowed_colour_mode_;  // restored on leaving the booth view
   std::optional<int> windowed_persistence_;              // likewise

@@ -23,6 +23,7 @@
 #include "core/version.h"
 #include "ui/render/theme.h"
 #include "ui/view/app_icon.h"
+#include "ui/view/frame_pacing.h"
 #include "ui/view/window_fit.h"
 
 namespace {
@@ -52,6 +53,15 @@ void set_window_icon(GLFWwindow* window) {
     images[i] = {kSizes[i], kSizes[i], pixels[i].data()};
   }
   glfwSetWindowIcon(window, static_cast<int>(images.size()), images.data());  // copied by GLFW
+}
+
+// The refresh rate of the monitor showing the window (full screen) or of the primary one; 0 when
+// the window system does not say.
+double refresh_hz(GLFWwindow* window) {
+  GLFWmonitor* monitor = glfwGetWindowMonitor(window);
+  if (monitor == nullptr) monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
+  return mode != nullptr ? mode->refreshRate : 0.0;
 }
 
 int run(const ydscope::gui::AppOptions& options) {
@@ -120,6 +130,7 @@ int run(const ydscope::gui::AppOptions& options) {
       const auto started = std::chrono::steady_clock::now();
       const auto deadline = started + std::chrono::seconds(30);
       int frames = 0;
+      auto frame_started = started;
       std::signal(SIGINT, on_stop_signal);
       std::signal(SIGTERM, on_stop_signal);
       std::signal(SIGUSR1, on_screenshot_signal);
@@ -129,10 +140,12 @@ int run(const ydscope::gui::AppOptions& options) {
       sigaddset(&usr1, SIGUSR1);
       sigprocmask(SIG_UNBLOCK, &usr1, nullptr);
       while (exit_code == 0 && !glfwWindowShouldClose(window) && !app->quit_requested() && !g_stop_requested) {
-        // Wait for input or the session's wake-up; the timeout keeps the statistics ticking.
-        // Laps wake the loop through glfwPostEmptyEvent; with nothing arriving a slow tick keeps the
-        // statistics and link state current at almost no cost.
-        glfwWaitEventsTimeout(screenshot_mode ? 0.02 : (app->streaming() ? 0.25 : 1.0));
+        // Wait for input or the session's wake-up (laps post an empty event); the timeout paces
+        // the fading between laps at the display's rate, or keeps the statistics ticking.
+        const ydscope::ui::FrameNeeds needs{screenshot_mode, app->animating(), app->streaming()};
+        const double since_frame_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_started).count();
+        glfwWaitEventsTimeout(ydscope::ui::frame_wait_s(needs, since_frame_s, refresh_hz(window)));
+        frame_started = std::chrono::steady_clock::now();
         if (g_content_scale != theme_scale) {
           theme_scale = g_content_scale;
           ImGui_ImplOpenGL3_DestroyFontsTexture();

@@ -139,6 +139,8 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::SliderInt("persistence", &v.persistence_laps, 1, 60, "%d laps");
   ImGui::Checkbox("fade old laps", &v.colours.fade_old_laps);
   ImGui::SameLine();
+  ImGui::Checkbox("smooth", &v.smooth);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Draw at the display's rate so old laps fade between laps");
   ImGui::Checkbox("grid", &v.show_grid);
   ImGui::SameLine();
   ImGui::Checkbox("auto-range", &v.auto_range);

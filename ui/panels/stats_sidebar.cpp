@@ -37,6 +37,7 @@ void draw_stats_panel(const UiModel& m) {
   pair("reconnects", "%.0f", static_cast<double>(c.reconnects), c.reconnects > 0);
   pair("latency ms", "%.1f", m.latency_ms.mean(), false);
   pair("frame ms", "%.2f", m.frame_ms.mean(), false);
+  pair("frames/s", "%.1f", m.frame_interval_ms.mean() > 0.0 ? 1000.0 / m.frame_interval_ms.mean() : 0.0, false);
   pair("points drawn", "%.0f", static_cast<double>(m.points_drawn_total), false);
   pair("laps shown", "%.0f", static_cast<double>(m.laps_shown), false);
   ImGui::EndTable();

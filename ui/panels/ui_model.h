@@ -60,6 +60,7 @@ struct UiModel {
   double now_s = 0.0;       // since start, for the health timeline
   ScanRateMeter scan_rate;
   RunningMean frame_ms;
+  RunningMean frame_interval_ms;  // start to start of frames: how often the view redraws
   RunningMean latency_ms;   // lap's last byte -> the frame that first shows it
   std::uint64_t laps_shown = 0;
   std::uint64_t laps_skipped = 0;  // drained but never shown (its LapRing::skipped)

@@ -93,7 +93,7 @@ void PolarView::auto_range(const LapHistory& history, const ViewSettings& settin
 }
 
 const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings,
-                                               const MotionBackground* motion) {
+                                               const MotionBackground* motion, float phase) {
   // With auto-range the range palette spans what is shown, so a 30 m TG scan and a 3 m room both
   // use all of it; a manual view keeps the panel's near/far.
   ColourParams colours = settings.colours;
@@ -102,12 +102,14 @@ const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const 
     colours.far_mm = fit_.fitted_mm();
   }
   if (!(colours == last_colours_) || !(settings.interference == last_settings_.interference)) dirty_ = true;
+  if (phase != last_phase_ && history.size() > 1) dirty_ = true;  // one lap alone does not fade
   last_settings_ = settings;
   last_colours_ = colours;
   if (dirty_) {
-    stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion);
+    stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion, phase);
     renderer_.upload_points(vertices_);
     dirty_ = false;
+    last_phase_ = phase;
   }
   return stats_;
 }

@@ -39,9 +39,10 @@ class PolarView {
   void invalidate() { dirty_ = true; }
   // Fits the view to the newest lap when auto-range is on.
   void auto_range(const LapHistory& history, const ViewSettings& settings);
-  // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics.
+  // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics. `phase`
+  // (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud of several laps.
   const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings,
-                                      const MotionBackground* motion = nullptr);
+                                      const MotionBackground* motion = nullptr, float phase = 0.0f);
   // GL layer then ImGui overlay (background draw list, under the panels).
   void draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale, int framebuffer_height);
 
@@ -62,6 +63,7 @@ class PolarView {
   float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
   bool dirty_ = true;
+  float last_phase_ = 0.0f;
   AutoRangeFit fit_;
   ViewSettings last_settings_;
   ColourParams last_colours_;

@@ -36,8 +36,11 @@ struct PointCloudStats {
 
 // Clears `out` (keeping its capacity) and fills it. Points with range 0 are not drawn. `motion`
 // tells moving points from the room in Motion mode (without it every point is the room's).
+// `phase` (LapPhase, 0..1) is how far the view is towards the next lap: every lap ages by that
+// fraction of a lap, and when the history is full the oldest lap, which the next one will push
+// out, fades away with it, so nothing pops.
 PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
                                   const InterferenceSettings& filter, std::vector<PointVertex>& out,
-                                  const MotionBackground* motion = nullptr);
+                                  const MotionBackground* motion = nullptr, float phase = 0.0f);
 
 }  // namespace ydscope::ui

@@ -103,6 +103,8 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.show_panels = *b;
     } else if (key == "show_grid" && b) {
       s.show_grid = *b;
+    } else if (key == "smooth" && b) {
+      s.smooth = *b;
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
     } else if (key == "sector") {
@@ -140,6 +142,7 @@ std::string format_settings(const ViewSettings& s) {
       << "show_ghosts = " << yes(s.interference.show_ghosts) << "\n"
       << "show_panels = " << yes(s.show_panels) << "\n"
       << "show_grid = " << yes(s.show_grid) << "\n"
+      << "smooth = " << yes(s.smooth) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
   return out.str();

@@ -25,6 +25,9 @@ struct ViewSettings {
   InterferenceSettings interference;
   bool show_panels = true;
   bool show_grid = true;
+  // Draw at the display's rate so persistence fades between laps; off, the view redraws once a
+  // lap (cheaper with software rendering).
+  bool smooth = true;
   std::string last_replay_file;
   std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
 

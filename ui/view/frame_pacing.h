@@ -1,0 +1,17 @@
+#pragma once
+// How long the desktop app's loop may sleep in glfwWaitEventsTimeout before the next frame. Laps
+// and input wake it early in every case; the timeout is what keeps the picture moving, or the
+// statistics ticking, when nothing wakes it.
+namespace ydscope::ui {
+
+struct FrameNeeds {
+  bool screenshot = false;  // --screenshot: as fast as the frames come
+  bool animating = false;   // persistence is fading between laps: the display's rate
+  bool streaming = false;   // laps arrive and wake the loop; a slow tick for the counters
+};
+
+// `since_frame_s`: time since the current frame started; `refresh_hz`: the monitor's rate
+// (a missing or absurd value counts as 60 Hz). Never negative.
+double frame_wait_s(const FrameNeeds& needs, double since_frame_s, double refresh_hz);
+
+}  // namespace ydscope::ui
