@@ -12,6 +12,7 @@
 #include "core/link/session.h"
 #include "ui/panels/ui_model.h"
 #include "ui/render/polar_view.h"
+#include "ui/view/booth_calm.h"
 #include "ui/view/lap_history.h"
 #include "ui/view/lap_phase.h"
 #include "ui/view/motion_background.h"
@@ -38,9 +39,11 @@ class App {
   std::uint64_t laps_shown() const { return model_.laps_shown; }
   // Laps are arriving (the link is scanning).
   bool streaming() const { return model_.snap.state == LinkState::Scanning; }
-  // The picture changes between laps (persistence fading): the loop draws at the display's rate.
+  // The picture changes between laps (persistence or a booth banner fading): the loop draws at
+  // the display's rate.
   bool animating() const {
-    return settings_.smooth && streaming() && !model_.paused_view && history_.size() > 1;
+    const bool fading_laps = settings_.smooth && streaming() && !model_.paused_view && history_.size() > 1;
+    return fading_laps || ui::banner_fading(model_.now_s - model_.banner_since_s, fullscreen_ && !model_.banner.empty());
   }
   const std::string& last_error() const { return model_.status_message; }
   bool quit_requested() const { return quit_; }

@@ -16,6 +16,13 @@ TEST(BoothCalm, ABannerStaysWholeThenFadesOnlyInTheBoothView) {
   EXPECT_FLOAT_EQ(banner_opacity(3600.0, false), 1.0f) << "the windowed view keeps its banner";
 }
 
+TEST(BoothCalm, TheViewAnimatesOnlyWhileABoothBannerFades) {
+  EXPECT_FALSE(banner_fading(kBannerHoldSeconds - 0.1, true)) << "still whole";
+  EXPECT_TRUE(banner_fading(kBannerHoldSeconds + 0.5 * kBannerFadeSeconds, true));
+  EXPECT_FALSE(banner_fading(kBannerHoldSeconds + kBannerFadeSeconds + 0.1, true)) << "gone";
+  EXPECT_FALSE(banner_fading(kBannerHoldSeconds + 0.5 * kBannerFadeSeconds, false)) << "the window never fades it";
+}
+
 TEST(BoothCalm, ThePointerHidesAtRestOnlyInTheBoothView) {
   EXPECT_FALSE(cursor_hidden(0.0, true));
   EXPECT_FALSE(cursor_hidden(kCursorRestSeconds - 0.1, true));

@@ -10,6 +10,10 @@ float banner_opacity(double age_s, bool booth) {
   return static_cast<float>(std::clamp(left, 0.0, 1.0));
 }
 
+bool banner_fading(double age_s, bool booth) {
+  return booth && age_s > kBannerHoldSeconds && age_s < kBannerHoldSeconds + kBannerFadeSeconds;
+}
+
 bool cursor_hidden(double rested_s, bool booth) { return booth && rested_s >= kCursorRestSeconds; }
 
 int booth_persistence(int windowed_laps) { return std::clamp(windowed_laps, kBoothMinPersistence, kBoothMaxPersistence); }

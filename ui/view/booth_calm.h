@@ -16,6 +16,9 @@ inline constexpr int kBoothMaxPersistence = 60;
 
 // 1 for a banner `age_s` old in the windowed view; in the booth view 1, then down to 0.
 float banner_opacity(double age_s, bool booth);
+// Whether the banner is part way through its fade, when the view must draw at the display's
+// rate for it to fade smoothly even with no laps arriving.
+bool banner_fading(double age_s, bool booth);
 // Whether the pointer, last moved `rested_s` ago, is hidden.
 bool cursor_hidden(double rested_s, bool booth);
 // The persistence the booth view uses, given the windowed view's.
