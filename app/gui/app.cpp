@@ -1,5 +1,8 @@
 #include "app/gui/app.h"
 
+#include <algorithm>
+#include <variant>
+
 #include <cstdio>
 
 #define GLFW_INCLUDE_NONE
@@ -10,6 +13,7 @@
 
 #include "app/gui/screenshot.h"
 #include "ui/panels/panels.h"
+#include "ui/render/draw_signature.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
 #include "ui/view/booth_calm.h"
@@ -243,9 +247,7 @@ void App::toggle_fullscreen() {
 }
 
 void App::frame() {
-  const auto now = std::chrono::steady_clock::now();
-  model_.frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
-  last_frame_ = now;
+  last_frame_ = std::chrono::steady_clock::now();
 
   drain_laps();
   update_model();
@@ -284,10 +286,7 @@ void App::frame() {
   model_.points_drawn_total = view_->vertex_count();
   ui::draw_view_header(model_, sidebar, view_w);
 
-  glViewport(0, 0, fb_w, fb_h);
-  glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
-  glClear(GL_COLOR_BUFFER_BIT);
-  view_->draw(history_, settings_, fb_scale, fb_h);
+  view_->lay_out(history_, settings_);
   ui::draw_view_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
   model_.booth = fullscreen_;
   if (model_.booth) {
@@ -295,14 +294,40 @@ void App::frame() {
     ui::draw_booth_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
   }
   ImGui::Render();
+  drew_ = render_if_changed(fb_scale, fb_w, fb_h);
+  carry_out_requests(fb_w, fb_h);
+}
+
+bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
+  std::uint64_t signature = ui::draw_signature(*ImGui::GetDrawData());
+  for (const std::uint64_t part : {view_->gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
+                                   static_cast<std::uint64_t>(settings_.show_grid),
+                                   static_cast<std::uint64_t>(settings_.point_size_px * 1000.0f)})
+    signature = ui::mix_signature(signature, part);
+  // A screenshot reads the frame it is taken in, so that frame is always drawn; so is one the
+  // window system lost (uncovered, resized).
+  const bool screenshot = !options_.screenshot_path.empty() ||
+                          std::any_of(model_.requests.begin(), model_.requests.end(), [](const ui::UiRequest& r) {
+                            return std::holds_alternative<ui::SaveScreenshot>(r);
+                          });
+  if (signature == drawn_signature_ && !screenshot && !window_damaged_) return false;
+  drawn_signature_ = signature;
+  window_damaged_ = false;
+  glViewport(0, 0, fb_w, fb_h);
+  glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
+  glClear(GL_COLOR_BUFFER_BIT);
+  view_->draw_gl(settings_, fb_scale, fb_h);
   glViewport(0, 0, fb_w, fb_h);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  carry_out_requests(fb_w, fb_h);
+  return true;
 }
 
 void App::after_present() {
   // Frame time = the work of a frame (draining, drawing, presenting), not the wait between frames.
-  model_.frame_ms.add(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - last_frame_).count());
+  const auto now = std::chrono::steady_clock::now();
+  model_.frame_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
+  if (last_present_) model_.frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - *last_present_).count());
+  last_present_ = now;
   if (pending_latency_rx_ns_ != 0) {
     const double latency_ms = static_cast<double>(steady_ns() - pending_latency_rx_ns_) * 1e-6;
     model_.latency_ms.add(latency_ms);

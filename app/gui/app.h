@@ -33,6 +33,9 @@ class App {
   std::string start_source();
   // One frame: input, drain, draw (ImGui frame included). Does not swap buffers.
   void frame();
+  // Whether the frame rendered: one that would look exactly like the last is not drawn, and
+  // then there is nothing to swap.
+  bool drew() const { return drew_; }
   // After the swap: latency of the laps this frame showed.
   void after_present();
 
@@ -65,6 +68,8 @@ class App {
   void handle_keys();
   // The frame's requests from panels, keys and mouse, in order (app_requests.cpp).
   void carry_out_requests(int framebuffer_width, int framebuffer_height);
+  // Renders the GL layer and ImGui's draw data unless the frame would repeat the last one.
+  bool render_if_changed(float framebuffer_scale, int framebuffer_width, int framebuffer_height);
   void carry_out(const ui::UiRequest& request, int framebuffer_width, int framebuffer_height);
   // The replay's position for its panel, while a replay is the source.
   void follow_replay();
@@ -120,6 +125,10 @@ class App {
   std::unique_ptr<ui::PolarView> view_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
+  std::optional<std::chrono::steady_clock::time_point> last_present_;
+  bool drew_ = false;
+  std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
+  bool window_damaged_ = true;         // the window system asks for the picture again
   std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
   std::optional<double> last_set_scan_hz_;
   std::optional<ReplayStatus> last_replay_status_;  // the replay link's, as follow_replay last saw it

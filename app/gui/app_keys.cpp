@@ -17,10 +17,16 @@ void App::install_key_callback() {
     if (app->imgui_key_callback_) app->imgui_key_callback_(window, key, scancode, action, mods);
     if (action == GLFW_PRESS) app->key_presses_.push_back({key, mods});
   });
+  // Not the keys', but it needs the same pointer: an uncovered or resized window is drawn again
+  // even when the frame would otherwise repeat the last one.
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* window) {
+    static_cast<App*>(glfwGetWindowUserPointer(window))->window_damaged_ = true;
+  });
 }
 
 void App::remove_key_callback() {
   glfwSetKeyCallback(window_, imgui_key_callback_);
+  glfwSetWindowRefreshCallback(window_, nullptr);
   glfwSetWindowUserPointer(window_, nullptr);
 }
 

@@ -7,26 +7,10 @@
 
 #include "core/protocol/model_profile.h"
 #include "ui/panels/panels.h"
-#include "ui/render/theme.h"
+#include "tests/ui/headless_imgui.h"
 
 namespace ydscope::ui {
 namespace {
-
-class HeadlessImGui {
- public:
-  HeadlessImGui(float width, float height) {
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui::GetIO().DisplaySize = {width, height};
-    apply_theme(1.0f);
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas
-  }
-  ~HeadlessImGui() { ImGui::DestroyContext(); }
-  HeadlessImGui(const HeadlessImGui&) = delete;
-  HeadlessImGui& operator=(const HeadlessImGui&) = delete;
-};
 
 // A G6 on a port, scanning, every panel with what a real session fills in.
 UiModel busy_model() {

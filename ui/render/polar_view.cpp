@@ -108,27 +108,24 @@ const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const 
   if (dirty_) {
     stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion, phase);
     renderer_.upload_points(vertices_);
+    ++gl_generation_;
     dirty_ = false;
     last_phase_ = phase;
   }
   return stats_;
 }
 
-void PolarView::draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale,
-                     int framebuffer_height) {
-  PolarStyle style;
-  style.point_size_px = settings.point_size_px;
-  style.show_grid = settings.show_grid;
+void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings) {
   const float key[6] = {view_.px_per_mm(),        view_.centre_world().x,   view_.centre_world().y,
                         view_.viewport_size().x, view_.viewport_size().y, status_band_px_};
   if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
     std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
     grid_ = layout_grid(view_, ring_spacing_px(view_.viewport_size()), 30.0f, 45.0f, 18.0f, status_band_px_);
-    build_grid_geometry(view_, grid_, style.grid, grid_lines_);
+    build_grid_geometry(view_, grid_, PolarStyle{}.grid, grid_lines_);
     renderer_.upload_grid(grid_lines_);
+    ++gl_generation_;
   }
   const GridLayout& grid = grid_;
-  renderer_.draw(view_, style, framebuffer_scale, framebuffer_height);
 
   OverlayInput overlay;
   overlay.view = &view_;
@@ -140,6 +137,13 @@ void PolarView::draw(const LapHistory& history, const ViewSettings& settings, fl
   overlay.sweep = sweep_shape();
   if (hover_cursor_ && !history.empty()) overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
+}
+
+void PolarView::draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height) const {
+  PolarStyle style;
+  style.point_size_px = settings.point_size_px;
+  style.show_grid = settings.show_grid;
+  renderer_.draw(view_, style, framebuffer_scale, framebuffer_height);
 }
 
 }  // namespace ydscope::ui

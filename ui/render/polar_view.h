@@ -43,8 +43,13 @@ class PolarView {
   // (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud of several laps.
   const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings,
                                       const MotionBackground* motion = nullptr, float phase = 0.0f);
-  // GL layer then ImGui overlay (background draw list, under the panels).
-  void draw(const LapHistory& history, const ViewSettings& settings, float framebuffer_scale, int framebuffer_height);
+  // The grid for the current view, and the labels, ruler, sectors and hover box into ImGui's
+  // background draw list (under the panels). Before ImGui::Render.
+  void lay_out(const LapHistory& history, const ViewSettings& settings);
+  // The GL layer: grid lines and points. After ImGui::Render, before ImGui's own draw data.
+  void draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height) const;
+  // Changes whenever the GL layer would draw something else (a new cloud or grid uploaded).
+  std::uint64_t gl_generation() const { return gl_generation_; }
 
   const ViewTransform& transform() const { return view_; }
   // The colours the cloud was last built with (range near/far following auto-range).
@@ -63,6 +68,7 @@ class PolarView {
   float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
   bool dirty_ = true;
+  std::uint64_t gl_generation_ = 0;
   float last_phase_ = 0.0f;
   AutoRangeFit fit_;
   ViewSettings last_settings_;
