@@ -21,6 +21,7 @@
 #include "app/gui/sanitizer_pins.h"
 #include "app/gui/screenshot.h"
 #include "core/version.h"
+#include "ui/render/gl.h"
 #include "ui/render/theme.h"
 #include "ui/view/app_icon.h"
 #include "ui/view/frame_pacing.h"
@@ -55,13 +56,14 @@ void set_window_icon(GLFWwindow* window) {
   glfwSetWindowIcon(window, static_cast<int>(images.size()), images.data());  // copied by GLFW
 }
 
-// The refresh rate of the monitor showing the window (full screen) or of the primary one; 0 when
-// the window system does not say.
+// The rate to animate at: the refresh rate of the monitor showing the window (full screen) or
+// of the primary one, held lower on a software renderer.
 double refresh_hz(GLFWwindow* window) {
   GLFWmonitor* monitor = glfwGetWindowMonitor(window);
   if (monitor == nullptr) monitor = glfwGetPrimaryMonitor();
   const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
-  return mode != nullptr ? mode->refreshRate : 0.0;
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return ydscope::ui::animation_hz(mode != nullptr ? mode->refreshRate : 0.0, renderer);
 }
 
 int run(const ydscope::gui::AppOptions& options) {
@@ -184,6 +186,7 @@ int run(const ydscope::gui::AppOptions& options) {
             break;
           }
         }
+        if (!app->drew()) continue;  // the picture on screen is still right
         glfwSwapBuffers(window);
         app->after_present();
       }

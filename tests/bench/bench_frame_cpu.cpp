@@ -1,7 +1,8 @@
 // CPU the desktop app uses, measured from outside as a user would see it in `top`:
 //   idle       the window open with a port that does not exist (the session retries with backoff);
 //   streaming  a real-time G6 stream (demo scene) from `ydscope-cli sim` in ANOTHER process on a
-//              pseudo-terminal, so the virtual lidar's own CPU is not counted.
+//              pseudo-terminal, so the virtual lidar's own CPU is not counted; with the View tab's
+//              "smooth" on (drawing at the display's rate), then off (a frame per lap).
 // For each case the app runs under the current DISPLAY (use xvfb-run) for a warm-up, then its
 // utime+stime from /proc/<pid>/stat over a measured window gives the share of one core.
 //   xvfb-run -a -s "-screen 0 1280x800x24" build/ui/tests/bench/bench_frame_cpu [seconds]
@@ -105,7 +106,10 @@ int main(int argc, char** argv) {
     stop(pid);
     std::printf("idle (no device, window open):   %6.2f %%\n", idle);
   }
-  {
+  for (const bool smooth : {true, false}) {
+    // settings.ini is where the View tab's "smooth" is kept.
+    fs::create_directories(home / "ydscope");
+    std::ofstream(home / "ydscope" / "settings.ini") << "smooth = " << (smooth ? "true" : "false") << "\n";
     const std::string link = (home / "g6").string();
     const pid_t sim = spawn({cli, "sim", "--model", "G6", "--scene", "demo", "--pty", link}, true);
     for (int i = 0; i < 50 && !fs::exists(link); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -114,7 +118,8 @@ int main(int argc, char** argv) {
     const double sim_cpu = measure(sim, 0, 2);
     stop(pid);
     stop(sim);
-    std::printf("streaming (G6 demo, sim apart):  %6.2f %%   (the sim process itself: %.2f %%)\n", streaming, sim_cpu);
+    std::printf("streaming (G6 demo, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)\n",
+                smooth ? "on" : "off", streaming, sim_cpu);
   }
   fs::remove_all(home);
   return 0;

@@ -56,6 +56,13 @@ TEST(FramePacing, AnimatingWaitsForTheNextRefreshAndIdleBarelyWakes) {
   EXPECT_EQ(frame_wait_s({.screenshot = true}, 0.0, 60.0), 0.02);
 }
 
+TEST(FramePacing, SoftwareRenderersAnimateAtThirtyAndHardwareAtTheMonitorsRate) {
+  EXPECT_EQ(animation_hz(60.0, "llvmpipe (LLVM 15.0.6, 256 bits)"), kSoftwareRendererHz);
+  EXPECT_EQ(animation_hz(144.0, "Mesa Intel(R) UHD Graphics 620 (KBL GT2)"), 144.0);
+  EXPECT_EQ(animation_hz(24.0, "softpipe"), 24.0) << "never faster than the monitor";
+  EXPECT_EQ(animation_hz(0.0, nullptr), 60.0) << "nothing known";
+}
+
 // A history of `laps` laps, one point each at 1 m, straight ahead.
 LapHistory history_of(std::size_t depth, std::size_t laps) {
   LapHistory history(depth);

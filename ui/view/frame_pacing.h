@@ -10,8 +10,14 @@ struct FrameNeeds {
   bool streaming = false;   // laps arrive and wake the loop; a slow tick for the counters
 };
 
-// `since_frame_s`: time since the current frame started; `refresh_hz`: the monitor's rate
-// (a missing or absurd value counts as 60 Hz). Never negative.
+// `since_frame_s`: time since the current frame started; `refresh_hz`: the rate to animate at
+// (animation_hz). Never negative.
 double frame_wait_s(const FrameNeeds& needs, double since_frame_s, double refresh_hz);
+
+// The rate to animate at: the monitor's (a missing or absurd value counts as 60 Hz), but at most
+// kSoftwareRendererHz when the GL renderer is a software one (Mesa's llvmpipe, softpipe, swrast;
+// SwiftShader), where every frame of a G6 cloud costs about 10 ms of CPU.
+inline constexpr double kSoftwareRendererHz = 30.0;
+double animation_hz(double monitor_hz, const char* gl_renderer);
 
 }  // namespace ydscope::ui
