@@ -1,0 +1,113 @@
+#pragma once
+// Another process as `top` sees it, for the benchmarks that measure the real app from outside:
+// start it, read its CPU time and resident memory from /proc, stop it as a service manager would.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace ydscope::bench {
+
+inline pid_t spawn(const std::vector<std::string>& argv, bool quiet) {
+  std::fflush(nullptr);  // the child must not repeat our buffered output
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (quiet) {
+      std::freopen("/dev/null", "w", stdout);
+      std::freopen("/dev/null", "w", stderr);
+    }
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+// utime + stime in clock ticks; -1 when the process is gone.
+inline long cpu_ticks(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  if (!std::getline(stat, text)) return -1;
+  // Fields after the command name (which may hold spaces) start after the last ')'.
+  std::istringstream rest(text.substr(text.rfind(')') + 2));
+  std::string field;
+  long utime = 0, stime = 0;
+  for (int i = 3; i <= 15 && rest >> field; ++i) {
+    if (i == 14) utime = std::stol(field);
+    if (i == 15) stime = std::stol(field);
+  }
+  return utime + stime;
+}
+
+// VmRSS in KiB; -1 when the process is gone.
+inline long resident_kib(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
+  return -1;
+}
+
+inline bool running(pid_t pid) {
+  int status = 0;
+  return waitpid(pid, &status, WNOHANG) == 0;
+}
+
+// Share of one core, in percent, over `seconds` after `warmup_s`; -1 if the process exited.
+inline double measure_cpu(pid_t pid, int warmup_s, int seconds) {
+  std::this_thread::sleep_for(std::chrono::seconds(warmup_s));
+  const long t0 = cpu_ticks(pid);
+  const auto w0 = std::chrono::steady_clock::now();
+  std::this_thread::sleep_for(std::chrono::seconds(seconds));
+  const long t1 = cpu_ticks(pid);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+  if (t0 < 0 || t1 < 0 || !running(pid)) return -1.0;  // it exited: no number
+  return 100.0 * static_cast<double>(t1 - t0) / static_cast<double>(sysconf(_SC_CLK_TCK)) / wall;
+}
+
+// SIGTERM, as a service manager stops it; SIGKILL after 5 s.
+inline void stop(pid_t pid) {
+  kill(pid, SIGTERM);
+  int status = 0;
+  for (int i = 0; i < 50 && waitpid(pid, &status, WNOHANG) == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  if (waitpid(pid, &status, WNOHANG) == 0) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+}
+
+struct AppBinaries {
+  std::string app;  // ydscope
+  std::string cli;  // ydscope-cli
+};
+
+// The app and the CLI of the build this benchmark belongs to, with a display to run the app on;
+// otherwise one sentence on stderr (naming `who`) and nothing.
+inline std::optional<AppBinaries> find_app_binaries(const char* who) {
+  if (!std::getenv("DISPLAY")) {
+    std::fprintf(stderr, "%s: no DISPLAY; run it under xvfb-run.\n", who);
+    return std::nullopt;
+  }
+  namespace fs = std::filesystem;
+  const fs::path build = fs::canonical("/proc/self/exe").parent_path().parent_path().parent_path();
+  AppBinaries found{(build / "app" / "ydscope").string(), (build / "app" / "ydscope-cli").string()};
+  if (!fs::exists(found.app) || !fs::exists(found.cli)) {
+    std::fprintf(stderr, "%s: build ydscope and ydscope-cli first (looked in %s).\n", who, (build / "app").c_str());
+    return std::nullopt;
+  }
+  return found;
+}
+
+}  // namespace ydscope::bench
