@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "app/program_run.h"
+#include "support/program_run.h"
 
 namespace ydscope {
 namespace {
 
 using test::run_program;
 
-test::ProgramRun cli(const std::string& arguments) { return run_program(YDSCOPE_CLI_PATH, arguments); }
+test::ProgramRun cli(const std::string& arguments) { return run_program(YDSCOPE_CLI_PATH, arguments, {.stdin_from_null = true}); }
 
 // The names under "commands:" in `ydscope-cli --help`.
 std::vector<std::string> listed_commands() {
@@ -109,7 +109,7 @@ TEST(CommandLine, AMissingRecordingIsAUsageErrorInEveryCommand) {
 
 #ifdef YDSCOPE_APP_PATH
 TEST(CommandLine, TheAppFollowsTheSameRules) {
-  const auto app = [](const std::string& arguments) { return run_program(YDSCOPE_APP_PATH, arguments); };
+  const auto app = [](const std::string& arguments) { return run_program(YDSCOPE_APP_PATH, arguments, {.stdin_from_null = true}); };
   const auto help = app("--help");
   EXPECT_EQ(help.status, 0);
   EXPECT_EQ(help.out.rfind("usage: ydscope ", 0), 0u) << help.out;

@@ -14,8 +14,9 @@
 #include "core/protocol/reply.h"
 #include "core/protocol/reply_reader.h"
 #include "core/record/recording_reader.h"
-#include "link/raw_recording.h"
+#include "support/raw_recording.h"
 #include "protocol_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -117,10 +118,8 @@ class LyingRecording : public ::testing::Test {
     test::write_file_bytes(path_, bytes);
     return path_;
   }
-  std::string path_ = (std::filesystem::temp_directory_path() /
-                       ("ydscope-lying-" + std::to_string(::getpid()) + "-" +
-                        ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ydrec"))
-                          .string();
+  test::TempDir dir_{"lying-recording"};
+  std::string path_ = dir_.file("lying.ydrec");
 };
 
 TEST_F(LyingRecording, ARecordLengthOf4GiBIsAnErrorNotAnAllocation) {

@@ -15,7 +15,8 @@
 #include "core/link/replay_link.h"
 #include "core/record/recording_reader.h"
 #include "link/link_read_support.h"
-#include "link/raw_recording.h"
+#include "support/raw_recording.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -28,15 +29,9 @@ constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
 
 class BadRecordings : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-bad-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
   std::string write(const std::string& name, const Bytes& bytes) const {
-    const std::string file = (dir_ / name).string();
+    const std::string file = dir_.file(name);
     test::write_file_bytes(file, bytes);
     return file;
   }
@@ -49,7 +44,7 @@ class BadRecordings : public ::testing::Test {
     return times;
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"bad-recordings"};
 };
 
 TEST_F(BadRecordings, SoundTimesAreReadAsWrittenWithoutAWarning) {

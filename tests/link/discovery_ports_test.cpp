@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/port_discovery.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -21,13 +22,9 @@ namespace fs = std::filesystem;
 class FakeSystem : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / ("ydscope-ports-" + std::to_string(::getpid()) + "-" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
     fs::create_directories(dev());
     fs::create_directories(sys());
   }
-  void TearDown() override { fs::remove_all(root_); }
 
   fs::path dev() const { return root_ / "dev"; }
   fs::path sys() const { return root_ / "sys"; }
@@ -61,7 +58,7 @@ class FakeSystem : public ::testing::Test {
     fs::create_symlink(target, dev() / "serial" / "by-id" / link_name);
   }
 
-  fs::path root_;
+  test::TempDir root_{"ports"};
 };
 
 TEST_F(FakeSystem, ListsUsbSerialPortsWithTheirIdentityKnownBridgesFirst) {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/link/serial_link.h"
-#include "session_test_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

@@ -1,6 +1,7 @@
 // PortWatch: the inotify wake-up that lets a reconnect try as soon as its serial port's path is
 // back. Each test waits on a real io_context with a bound (a hang guard, not a time claim).
 #include "core/link/port_watch.h"
+#include "support/temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -18,15 +19,6 @@ using namespace std::chrono_literals;
 
 class PortWatchTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string templ = (fs::temp_directory_path() / "ydscope-watch-XXXXXX").string();
-    ASSERT_NE(mkdtemp(templ.data()), nullptr);
-    dir_ = templ;
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
   // Runs the io_context until the watch fired or `bound` passed; true when it fired.
   bool fired_within(std::chrono::milliseconds bound) {
     io_.restart();
@@ -38,7 +30,7 @@ class PortWatchTest : public ::testing::Test {
     return watch_.arm(path.string(), [this] { fired_ = true; });
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"port-watch"};
   boost::asio::io_context io_;
   PortWatch watch_{io_};
   bool fired_ = false;

@@ -15,6 +15,7 @@
 #include "core/link/replay_link.h"
 #include "link/link_read_support.h"
 #include "core/record/recording_writer.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -25,13 +26,6 @@ constexpr auto kHangGuard = std::chrono::seconds(10);
 
 class ReplayLinkTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    path_ = (fs::temp_directory_path() /
-             ("ydscope-replay-" + std::to_string(::getpid()) + "-" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ydrec"))
-                .string();
-  }
-  void TearDown() override { fs::remove(path_); }
 
   // Device chunks at 1 ms steps, interleaved with commands that must not be replayed.
   Bytes write_recording(int chunks, std::int64_t step_ns = 1'000'000) {
@@ -62,7 +56,8 @@ class ReplayLinkTest : public ::testing::Test {
     return {std::move(result.bytes), result.end};
   }
 
-  std::string path_;
+  test::TempDir dir_{"replay-link"};
+  std::string path_ = dir_.file("recording.ydrec");
 };
 
 TEST_F(ReplayLinkTest, FastestSpeedReturnsExactlyTheDeviceBytesThenEof) {

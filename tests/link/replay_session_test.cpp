@@ -16,6 +16,7 @@
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
 #include "test_data.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -42,7 +43,8 @@ CommandResult wait_result(std::future<CommandResult>& result) {
 }
 
 void record_and_replay(Model model) {
-  const std::string file = (fs::temp_directory_path() / ("ydscope-rec-replay-" + std::to_string(::getpid()) + ".ydrec")).string();
+  const test::TempDir dir("replay-session");
+  const std::string file = dir.file("recording.ydrec");
   SimServerOptions options;
   options.device.model = model;
   options.device.scene = "room";
@@ -104,7 +106,6 @@ void record_and_replay(Model model) {
   };
   read_more();
   io.run_for(std::chrono::seconds(30));
-  fs::remove(file);
 
   // The first live lap may have begun before the recording did; every later one must be in the
   // replay, consecutively.

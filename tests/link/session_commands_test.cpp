@@ -2,7 +2,7 @@
 // read-back and resumes; the device never sees anything but A5 65 while it scans.
 #include <gtest/gtest.h>
 
-#include "session_test_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

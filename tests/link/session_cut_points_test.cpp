@@ -13,7 +13,8 @@
 #include "core/link/replay_link.h"
 #include "core/link/session.h"
 #include "core/protocol_test_support.h"
-#include "link/raw_recording.h"
+#include "support/raw_recording.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -24,8 +25,8 @@ TEST(SessionCutPoints, ALiveSessionCountsThePointsItCut) {
   test::append(stream, test::packet(kCtLapStart, 0.0, 0.0, {40}));
   test::RawRecording recording;  // model G6
   recording.add(RecordType::DeviceToHost, 0, stream);
-  const std::string file =
-      (std::filesystem::temp_directory_path() / ("ydscope-cut-" + std::to_string(::getpid()) + ".ydrec")).string();
+  const test::TempDir dir("cut-points");
+  const std::string file = dir.file("cut.ydrec");
   recording.write(file);
 
   Session session(4);
@@ -40,7 +41,6 @@ TEST(SessionCutPoints, ALiveSessionCountsThePointsItCut) {
   // The replay ends after its one lap; the counters stay until the next connection.
   const auto s = session.wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Failed; },
                                     std::chrono::seconds(20));
-  std::filesystem::remove(file);
   ASSERT_EQ(s.state, LinkState::Failed) << s.message;
   EXPECT_EQ(s.counters.laps, 1u);
   EXPECT_EQ(s.counters.cut_points, 1 + 110 * 255 - Lap::kMaxPoints);

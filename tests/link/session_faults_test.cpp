@@ -2,7 +2,7 @@
 // a disconnect and a new connect. Each leaves a link state and a sentence, and laps resume.
 #include <gtest/gtest.h>
 
-#include "session_test_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

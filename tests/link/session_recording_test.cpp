@@ -7,7 +7,8 @@
 #include "core/protocol/scan_decoder.h"
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
-#include "session_test_support.h"
+#include "support/session_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -16,8 +17,8 @@ using namespace test;
 
 TEST(SessionRecording, RecordsBothDirectionsAndTheDeviceMetadata) {
   SimOnPty sim(Model::G6);
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("ydscope-session-" + std::to_string(getpid()) + ".ydrec")).string();
+  const test::TempDir dir("session-recording");
+  const std::string path = dir.file("session.ydrec");
   std::uint64_t session_laps = 0;
   {
     Session session(64);
@@ -62,7 +63,6 @@ TEST(SessionRecording, RecordsBothDirectionsAndTheDeviceMetadata) {
   // stop is one the session discards too, so the counts can differ by those).
   EXPECT_GE(decoded_laps + 2, session_laps);
   EXPECT_GE(decoded_laps, 8u);
-  std::filesystem::remove(path);
 }
 
 // The app records through the session: a device or a folder is refused at once, with the

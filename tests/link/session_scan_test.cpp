@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "core/link/serial_link.h"
-#include "session_test_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "core/link/serial_link.h"
-#include "session_test_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

@@ -13,6 +13,7 @@
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
 #include "sim/host_port.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -23,9 +24,7 @@ using test::HostPort;
 class SimServerDelivery : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SimServerDelivery, HostDecodesTheStreamAndZeroPacketsAreStamped) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("ydscope-delivery-" + std::to_string(::getpid()) + "-" + std::to_string(std::hash<std::string>{}(GetParam())));
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir("delivery");
   SimServerOptions options;
   options.device.model = Model::G6;
   options.device.scene = "room";
@@ -60,7 +59,6 @@ TEST_P(SimServerDelivery, HostDecodesTheStreamAndZeroPacketsAreStamped) {
   ASSERT_GE(stamps.size(), decoder.counters().zero_packets);
   for (std::size_t i = 0; i < stamps.size(); ++i) EXPECT_EQ(stamps[i], i);
   EXPECT_EQ(server.counters().server.zero_packets_written, stamps.size());
-  std::filesystem::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, SimServerDelivery, ::testing::Values("whole", "burst:64:1000", "random:17"),

@@ -11,7 +11,8 @@
 
 #include "app_test_support.h"
 #include "core/record/recording_reader.h"
-#include "link/raw_recording.h"
+#include "support/program_run.h"
+#include "support/raw_recording.h"
 #include "test_data.h"
 
 namespace ydscope::test {
@@ -21,21 +22,9 @@ namespace {
 
 constexpr int kViewLeft = 448;  // the view is right of the panels
 
-struct ProgramRun {
-  int status = -1;
-  std::string err;
-};
-
+// In the test's folder, with a settings folder of its own.
 ProgramRun run_program(const std::filesystem::path& dir, const std::string& program, const std::string& arguments) {
-  const std::filesystem::path err_path = dir / "stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + dir.string() + "' '" + program + "' " +
-                              arguments + " >/dev/null 2>'" + err_path.string() + "'";
-  const int status = std::system(command.c_str());
-  ProgramRun run;
-  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_path, std::ios::binary);
-  run.err.assign(std::istreambuf_iterator<char>(err), {});
-  return run;
+  return test::run_program(program, arguments, {.working_dir = dir.string(), .config_home = dir.string()});
 }
 
 // The demo recording's device bytes under other metadata.

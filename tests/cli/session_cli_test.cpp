@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "cli_run_support.h"
-#include "session_test_support.h"
+#include "cli/cli_run_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

@@ -14,8 +14,9 @@
 
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
-#include "link/raw_recording.h"
+#include "support/raw_recording.h"
 #include "test_data.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -31,13 +32,7 @@ struct Expected {
 
 class RecordingFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-rec-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return dir_.file(name); }
 
   static Bytes file_bytes(const std::string& file) { return test::read_file_bytes(file); }
   static void write_bytes(const std::string& file, const Bytes& bytes) { test::write_file_bytes(file, bytes); }
@@ -50,7 +45,7 @@ class RecordingFileTest : public ::testing::Test {
     return out;
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"recording-file"};
 };
 
 constexpr std::int64_t kStart = 5'000'000'000;  // an arbitrary steady-clock origin

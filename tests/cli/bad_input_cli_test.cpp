@@ -14,9 +14,10 @@
 #include <gtest/gtest.h>
 
 #include "core/record/recording_reader.h"
-#include "link/cli_run_support.h"
-#include "link/raw_recording.h"
+#include "cli/cli_run_support.h"
+#include "support/raw_recording.h"
 #include "test_data.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -30,13 +31,7 @@ std::string demo_recording() { return (test::assets_dir() / "demo-g6.ydrec").str
 
 class BadInputCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-badcli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return dir_.file(name); }
 
   // The demo recording with the time field of every record from the `first`-th on rewritten.
   std::string demo_with_times(const std::string& name, std::size_t first,
@@ -59,7 +54,7 @@ class BadInputCli : public ::testing::Test {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"bad-input-cli"};
 };
 
 TEST_F(BadInputCli, ReplaySpeedOutsideItsRangeIsAUsageError) {

@@ -10,7 +10,9 @@
 
 #include "core/protocol/lap.h"
 #include "core/protocol/reply.h"
-#include "protocol_test_support.h"
+#include "cli/cli_run_support.h"
+#include "core/protocol_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -18,37 +20,12 @@ namespace {
 using test::append;
 using test::Bytes;
 
-struct Run {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using test::run_cli_apart;
 
-std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("ydscope_cli_test_" + std::to_string(getpid()) + "_" + name)).string();
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Run run_cli(const std::string& args) {
-  const std::string err_path = temp_path("stderr");
-  const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' " + args + " 2>'" + err_path + "'";
-  Run run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[65536];
-  std::size_t got;
-  while ((got = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, got);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = slurp(err_path);
-  std::filesystem::remove(err_path);
-  return run;
+// Files the tests write, gone when the suite ends.
+const test::TempDir& scratch() {
+  static const test::TempDir dir("cli-decode");
+  return dir;
 }
 
 std::string capture_arg(const std::string& name) { return "'" + test::capture(name).string() + "'"; }
@@ -61,24 +38,24 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 std::string write_temp(const std::string& name, const Bytes& bytes) {
-  const std::string path = temp_path(name);
+  const std::string path = scratch().file(name);
   std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
                                               static_cast<std::streamsize>(bytes.size()));
   return path;
 }
 
 TEST(CliDecode, SummaryOfRealCaptures) {
-  auto run = run_cli("decode --model G6 --format summary " + capture_arg("x4-scan1.bin"));
-  EXPECT_EQ(run.exit_code, 0) << run.err;
+  auto run = run_cli_apart("decode --model G6 --format summary " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(run.out, R"({"type":"summary","bytes":38074,"packets":455,"checksum_errors":0,"zero_packets":28,"laps":27})" "\n");
-  run = run_cli("decode --model g6 --format summary " + capture_arg("x4class-with-bad-checksum.bin"));
-  EXPECT_EQ(run.exit_code, 0) << run.err;
+  run = run_cli_apart("decode --model g6 --format summary " + capture_arg("x4class-with-bad-checksum.bin"));
+  EXPECT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(run.out, R"({"type":"summary","bytes":244,"packets":2,"checksum_errors":1,"zero_packets":1,"laps":0})" "\n");
 }
 
 TEST(CliDecode, JsonlLapsThenSummary) {
-  const auto run = run_cli("decode --model G6 " + capture_arg("x4-scan1.bin"));
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto run = run_cli_apart("decode --model G6 " + capture_arg("x4-scan1.bin"));
+  ASSERT_EQ(run.status, 0) << run.err;
   const auto all = lines(run.out);
   ASSERT_EQ(all.size(), 28u);  // 27 laps + summary
   for (std::size_t i = 0; i < 27; ++i) {
@@ -99,9 +76,9 @@ TEST(CliDecode, JsonlLapsThenSummary) {
 }
 
 TEST(CliDecode, StdinGivesTheSameOutput) {
-  const auto from_file = run_cli("decode --model G6 " + capture_arg("x4-scan2.bin"));
-  const auto from_stdin = run_cli("decode --model G6 - < " + capture_arg("x4-scan2.bin"));
-  EXPECT_EQ(from_stdin.exit_code, 0) << from_stdin.err;
+  const auto from_file = run_cli_apart("decode --model G6 " + capture_arg("x4-scan2.bin"));
+  const auto from_stdin = run_cli_apart("decode --model G6 - < " + capture_arg("x4-scan2.bin"));
+  EXPECT_EQ(from_stdin.status, 0) << from_stdin.err;
   EXPECT_EQ(from_file.out, from_stdin.out);
 }
 
@@ -123,8 +100,8 @@ TEST(CliDecode, G1CtInformationCrcAndFilters) {
   append(stream, test::packet(cts[0], 0.0, 0.0, {1000 << 2}));
   const std::string path = write_temp("g1.bin", stream);
 
-  auto run = run_cli("decode --model G1 '" + path + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto run = run_cli_apart("decode --model G1 '" + path + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
   auto all = lines(run.out);
   ASSERT_EQ(all.size(), 4u);
   EXPECT_NE(all[0].find(R"("scan_hz":9.6,"health":32,"crc_ok":true,"packets":5,"checksum_errors":0})"), std::string::npos)
@@ -136,17 +113,16 @@ TEST(CliDecode, G1CtInformationCrcAndFilters) {
   EXPECT_EQ(all[3], R"({"type":"summary","bytes":)" + std::to_string(stream.size()) +
                         R"(,"packets":13,"checksum_errors":0,"zero_packets":4,"laps":3})");  // 2*(1+4) + 2 + 1
 
-  run = run_cli("decode --model G1 --filter specular '" + path + "'");
+  run = run_cli_apart("decode --model G1 --filter specular '" + path + "'");
   all = lines(run.out);
   ASSERT_EQ(all.size(), 4u);
   EXPECT_EQ(all[2].find(",1000,2]"), std::string::npos);
   EXPECT_NE(all[2].find(",1000,3]"), std::string::npos);
-  run = run_cli("decode --model G1 --filter specular,ambient '" + path + "'");
+  run = run_cli_apart("decode --model G1 --filter specular,ambient '" + path + "'");
   all = lines(run.out);
   ASSERT_EQ(all.size(), 4u);
   EXPECT_EQ(all[2].find(",1000,3]"), std::string::npos);
   EXPECT_NE(all[2].find(",1000,1]"), std::string::npos);  // flag 1 is not interference
-  std::filesystem::remove(path);
 }
 
 TEST(CliDecode, CrcMismatchNullsTheCtInformation) {
@@ -155,10 +131,9 @@ TEST(CliDecode, CrcMismatchNullsTheCtInformation) {
   const std::uint8_t crc = test::append_g1_lap(stream, spec, 0x00);
   test::append_g1_lap(stream, spec, static_cast<std::uint8_t>(crc + 1));
   const std::string path = write_temp("g1bad.bin", stream);
-  const auto run = run_cli("decode --model G1 '" + path + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto run = run_cli_apart("decode --model G1 '" + path + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_NE(run.out.find(R"("scan_hz":null,"health":null,"crc_ok":false,)"), std::string::npos) << run.out;
-  std::filesystem::remove(path);
 }
 
 // Issue 17: with no LastCRC byte before the closing zero packet, crc_ok was false; it is unknown.
@@ -171,13 +146,12 @@ TEST(CliDecode, MissingLastCrcIsNullNotFalse) {
   append(stream, Bytes(next.begin() + 1, next.end()));  // no byte between the last packet and the zero packet
   test::append_g1_lap(stream, spec, 0x00);
   const std::string path = write_temp("g1nocrc.bin", stream);
-  const auto run = run_cli("decode --model G1 '" + path + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto run = run_cli_apart("decode --model G1 '" + path + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
   const auto all = lines(run.out);
   ASSERT_EQ(all.size(), 3u);
   EXPECT_NE(all[0].find(R"("scan_hz":9,"health":0,"crc_ok":null,)"), std::string::npos) << all[0];
   EXPECT_NE(all[1].find(R"("crc_ok":true,)"), std::string::npos) << all[1];
-  std::filesystem::remove(path);
 }
 
 // Issue 17: 110 packets of 255 samples came out as 24000 points without a word.
@@ -186,8 +160,8 @@ TEST(CliDecode, AnOverlongLapSaysHowManyPointsWereCut) {
   for (int i = 0; i < 110; ++i) append(stream, test::packet(0, 10.0, 20.0, std::vector<std::uint16_t>(255, 400)));
   append(stream, test::packet(kCtLapStart, 0.0, 0.0, {40}));
   const std::string path = write_temp("long.bin", stream);
-  const auto run = run_cli("decode --model G6 '" + path + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto run = run_cli_apart("decode --model G6 '" + path + "'");
+  ASSERT_EQ(run.status, 0) << run.err;
   const auto all = lines(run.out);
   ASSERT_EQ(all.size(), 2u);
   const std::size_t cut = 1 + 110 * 255 - Lap::kMaxPoints;  // 4051
@@ -195,7 +169,6 @@ TEST(CliDecode, AnOverlongLapSaysHowManyPointsWereCut) {
             std::string::npos)
       << all[0].substr(all[0].size() - 120);
   EXPECT_NE(all[1].find(R"("laps":1,"cut_points":)" + std::to_string(cut) + "}"), std::string::npos) << all[1];
-  std::filesystem::remove(path);
 }
 
 TEST(CliDecode, DistanceScaleOverride) {
@@ -203,50 +176,49 @@ TEST(CliDecode, DistanceScaleOverride) {
   append(stream, test::packet(0, 100.0, 100.0, {0x6FE5}));
   append(stream, test::packet(kCtLapStart, 0.0, 0.0, {0}));
   const std::string path = write_temp("scale.bin", stream);
-  auto run = run_cli("decode --model TG30 '" + path + "'");
+  auto run = run_cli_apart("decode --model TG30 '" + path + "'");
   EXPECT_NE(run.out.find(",14322.5,0]"), std::string::npos) << run.out;
-  run = run_cli("decode --model G6 '" + path + "'");
+  run = run_cli_apart("decode --model G6 '" + path + "'");
   EXPECT_NE(run.out.find(",7161.25,0]"), std::string::npos) << run.out;
-  run = run_cli("decode --model TG30 --distance-scale 1 '" + path + "'");
+  run = run_cli_apart("decode --model TG30 --distance-scale 1 '" + path + "'");
   EXPECT_NE(run.out.find(",28645,0]"), std::string::npos) << run.out;
-  std::filesystem::remove(path);
 }
 
 TEST(CliDecode, UsageErrorsExitTwoWithOneSentence) {
-  auto run = run_cli("decode --model X9 " + capture_arg("x4-scan1.bin"));
-  EXPECT_EQ(run.exit_code, 2);
+  auto run = run_cli_apart("decode --model X9 " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 2);
   EXPECT_TRUE(run.out.empty());
   EXPECT_NE(run.err.find("unknown model 'X9'"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("G1, G6, TG15, TG30, TG50"), std::string::npos) << run.err;
 
-  run = run_cli("decode --model G6 /nonexistent/scan.bin");
-  EXPECT_EQ(run.exit_code, 2);
+  run = run_cli_apart("decode --model G6 /nonexistent/scan.bin");
+  EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("'/nonexistent/scan.bin' was not found"), std::string::npos) << run.err;
 
-  run = run_cli("decode " + capture_arg("x4-scan1.bin"));
-  EXPECT_EQ(run.exit_code, 2);
+  run = run_cli_apart("decode " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("--model"), std::string::npos) << run.err;
 
-  run = run_cli("decode --model G6 --format xml " + capture_arg("x4-scan1.bin"));
-  EXPECT_EQ(run.exit_code, 2);
-  run = run_cli("decode --model G6 --filter glare " + capture_arg("x4-scan1.bin"));
-  EXPECT_EQ(run.exit_code, 2);
-  run = run_cli("decode --model G6 --distance-scale -1 " + capture_arg("x4-scan1.bin"));
-  EXPECT_EQ(run.exit_code, 2);
-  run = run_cli("decode --model G6");
-  EXPECT_EQ(run.exit_code, 2);
+  run = run_cli_apart("decode --model G6 --format xml " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 2);
+  run = run_cli_apart("decode --model G6 --filter glare " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 2);
+  run = run_cli_apart("decode --model G6 --distance-scale -1 " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 2);
+  run = run_cli_apart("decode --model G6");
+  EXPECT_EQ(run.status, 2);
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1);
 }
 
 TEST(CliDecode, ReadErrorExitsOne) {
-  const auto run = run_cli("decode --model G6 '" + std::filesystem::temp_directory_path().string() + "'");
-  EXPECT_EQ(run.exit_code, 1);
+  const auto run = run_cli_apart("decode --model G6 '" + std::filesystem::temp_directory_path().string() + "'");
+  EXPECT_EQ(run.status, 1);
   EXPECT_FALSE(run.err.empty());
 }
 
 TEST(CliDecode, HelpExplainsTheSchema) {
-  const auto run = run_cli("decode --help");
-  EXPECT_EQ(run.exit_code, 0);
+  const auto run = run_cli_apart("decode --help");
+  EXPECT_EQ(run.status, 0);
   for (const char* needle : {"--model", "--format", "--filter", "--distance-scale", R"("type":"lap")",
                              R"("type":"summary")", "crc_ok", "exit status"})
     EXPECT_NE(run.out.find(needle), std::string::npos) << needle;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/record/recording_plan.h"
-#include "link/raw_recording.h"
+#include "support/raw_recording.h"
 
 namespace ydscope {
 namespace {

@@ -9,8 +9,8 @@
 #include <thread>
 #include <unistd.h>
 
-#include "cli_run_support.h"
-#include "session_test_support.h"
+#include "cli/cli_run_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

@@ -14,10 +14,11 @@
 #include <thread>
 #include <vector>
 
-#include "cli_run_support.h"
+#include "cli/cli_run_support.h"
 #include "core/record/recording_reader.h"
-#include "fault_matrix_support.h"
-#include "session_test_support.h"
+#include "cli/fault_matrix_support.h"
+#include "support/session_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -84,13 +85,7 @@ constexpr std::chrono::milliseconds kRunPatience{60000};
 
 class FaultMatrix : public ::testing::TestWithParam<MatrixParam> {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-faults-" + std::to_string(::getpid()) + "-" + param_name({GetParam(), 0}));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const char* name) const { return (dir_ / name).string(); }
+  std::string path(const char* name) const { return dir_.file(name); }
 
   // Waits (bounded) until `ready`; false when it never became true.
   static bool wait_until(const std::function<bool()>& ready) {
@@ -115,7 +110,7 @@ class FaultMatrix : public ::testing::TestWithParam<MatrixParam> {
     if (event == LinkEvent::UnplugReplug) sim.server().replug();
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"fault-matrix"};
 };
 
 std::size_t lap_lines(const std::string& text) { return printed_laps(text).size(); }

@@ -15,6 +15,7 @@
 
 #include "core/link/session.h"
 #include "core/sim/sim_server.h"
+#include "support/temp_dir.h"
 
 namespace ydscope::test {
 
@@ -26,9 +27,6 @@ inline constexpr std::chrono::milliseconds kPatience{20000};
 class SimOnPty {
  public:
   explicit SimOnPty(Model model, const std::function<void(SimServerOptions&)>& tweak = {}) {
-    std::string templ = (std::filesystem::temp_directory_path() / "ydscope-session-XXXXXX").string();
-    if (!mkdtemp(templ.data())) throw std::runtime_error("mkdtemp failed");
-    dir_ = templ;
     SimServerOptions options;
     options.device.model = model;
     options.device.scene = "room";
@@ -38,17 +36,13 @@ class SimOnPty {
     server_ = std::make_unique<SimServer>(options);
     server_->start();
   }
-  ~SimOnPty() {
-    server_.reset();
-    std::error_code ec;
-    std::filesystem::remove_all(dir_, ec);
-  }
+  ~SimOnPty() { server_.reset(); }  // before its folder goes
   SimServer& server() { return *server_; }
   std::string port() const { return (dir_ / "lidar").string(); }
   SimCounters counters() const { return server_->counters(); }
 
  private:
-  std::filesystem::path dir_;
+  TempDir dir_{"session"};
   std::unique_ptr<SimServer> server_;
 };
 

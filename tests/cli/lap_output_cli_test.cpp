@@ -11,10 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "cli_run_support.h"
+#include "cli/cli_run_support.h"
 #include "core/protocol_test_support.h"
 #include "core/record/recording_writer.h"
-#include "session_test_support.h"
+#include "support/session_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -24,12 +25,7 @@ using test::run_cli_apart;
 
 class LapOutputCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("ydscope-lap-output-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string path(const char* name) const { return (dir_ / name).string(); }
+  std::string path(const char* name) const { return dir_.file(name); }
 
   // A G6 recording of `laps` laps whose record k (zero packet k and the rest of lap k) was
   // received at k * 100 ms: lap k is closed by the zero packet of record k + 1.
@@ -55,7 +51,7 @@ class LapOutputCli : public ::testing::Test {
     return file;
   }
 
-  std::filesystem::path dir_;
+  test::TempDir dir_{"lap-output-cli"};
 };
 
 std::vector<std::string> lines_of(const std::string& text) {

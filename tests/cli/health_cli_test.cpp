@@ -14,8 +14,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "cli_run_support.h"
-#include "session_test_support.h"
+#include "cli/cli_run_support.h"
+#include "support/session_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -58,8 +59,7 @@ TEST(HealthCli, AHealthyLidarGivesNoLineAndExitZero) {
 }
 
 TEST(HealthCli, RecordSaysItOnStderrAndInItsSummaryLine) {
-  const auto dir = std::filesystem::temp_directory_path() / ("ydscope-health-record-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir("health-record");
   SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.faults.health_bits = 255; });
   const std::string file = (dir / "sick.ydrec").string();
   const CliResult run = run_cli_apart("record --port " + sim.port() + " --out " + file + " --seconds 0.5");
@@ -72,7 +72,6 @@ TEST(HealthCli, RecordSaysItOnStderrAndInItsSummaryLine) {
   const std::string tail = "; the lidar reported a health error: error (error code 0x00FF) (A5 91)\n";
   ASSERT_GE(run.out.size(), tail.size());
   EXPECT_EQ(run.out.substr(run.out.size() - tail.size()), tail) << run.out;
-  std::filesystem::remove_all(dir);
 }
 
 // G1 reports health in every lap's CT: a change mid-scan is a new line, and so is the way back.
@@ -80,7 +79,8 @@ TEST(HealthCli, RecordSaysItOnStderrAndInItsSummaryLine) {
 // lidar's health bits after chosen laps.
 TEST(HealthCli, AG1HealthChangeMidScanIsANewLineAndSoIsTheWayBack) {
   SimOnPty sim(Model::G1);
-  const auto err_path = std::filesystem::temp_directory_path() / ("ydscope-health-err-" + std::to_string(::getpid()));
+  const test::TempDir dir("health-scan");
+  const auto err_path = dir / "stderr.txt";
   const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' scan --port " + sim.port() + " --laps 40 2>'" +
                               err_path.string() + "'";
   std::FILE* pipe = ::popen(command.c_str(), "r");
@@ -105,7 +105,6 @@ TEST(HealthCli, AG1HealthChangeMidScanIsANewLineAndSoIsTheWayBack) {
   const int status = ::pclose(pipe);
   std::ifstream err_file(err_path, std::ios::binary);
   const std::string err{std::istreambuf_iterator<char>(err_file), {}};
-  std::filesystem::remove(err_path);
 
   EXPECT_EQ(WEXITSTATUS(status), 3) << err;
   const auto err_lines = lines_of(err);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sim/host_port.h"
+#include "support/temp_dir.h"
 
 extern char** environ;
 
@@ -106,16 +107,8 @@ class Child {
   bool reaped_ = false;
 };
 
-std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("ydscope-cli-sim-test-" + std::to_string(::getpid()) + "-" +
-                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 TEST(CliSim, PtyReadyLinkAndCleanExitOnSigterm) {
-  const auto dir = temp_dir();
+  const test::TempDir dir("cli-sim");
   const std::string link = (dir / "lidar").string();
   Child child({"sim", "--model", "g6", "--pty", link, "--scene", "room", "--seed", "3"});
   const std::string line = child.read_line(10s);
@@ -134,7 +127,6 @@ TEST(CliSim, PtyReadyLinkAndCleanExitOnSigterm) {
   child.signal(SIGTERM);
   EXPECT_EQ(child.wait(10s), 0);
   EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(link)));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliSim, SigintAlsoExitsCleanlyOnTcpAndVerboseTellsWhatHappened) {
@@ -167,14 +159,13 @@ TEST(CliSim, UnknownModelListsTheValidOnes) {
 }
 
 TEST(CliSim, ExistingLinkPathIsRefusedAndKept) {
-  const auto dir = temp_dir();
+  const test::TempDir dir("cli-sim");
   const std::string link = (dir / "file").string();
   std::ofstream(link) << "keep";
   Child child({"sim", "--model", "G1", "--pty", link});
   EXPECT_EQ(child.wait(10s), 1);
   EXPECT_NE(child.read_stderr().find("already exists"), std::string::npos);
   EXPECT_TRUE(std::filesystem::is_regular_file(link));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliSim, NeedsExactlyOneTransport) {
@@ -262,7 +253,7 @@ namespace {
 
 // Issue 15: the vendor-SDK host mode, a chosen firmware and a USB-bridge delivery, through the pty.
 TEST(CliSim, HostCompatFirmwareAndDeliveryReachTheHost) {
-  const auto dir = temp_dir();
+  const test::TempDir dir("cli-sim");
   const std::string link = (dir / "ydlidar").string();
   Child child({"sim", "--model", "TG30", "--pty", link, "--host-compat", "ydlidar-sdk", "--firmware", "1.1",
                "--delivery", "burst:64:1000"});
@@ -283,7 +274,6 @@ TEST(CliSim, HostCompatFirmwareAndDeliveryReachTheHost) {
   host.close();
   child.signal(SIGTERM);
   EXPECT_EQ(child.wait(10s), 0);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(CliSim, BadHostCompatFirmwareOrDeliveryIsOneSentence) {

@@ -24,6 +24,7 @@
 #include "core/record/recording_writer.h"
 #include "core/sim/sim_server.h"
 #include "test_data.h"
+#include "support/temp_dir.h"
 
 extern char** environ;
 
@@ -40,15 +41,8 @@ struct CliRun {
 
 class RecordingCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-reccli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
   void TearDown() override {
     if (sim_) sim_->stop();
-    fs::remove_all(dir_);
   }
 
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
@@ -115,7 +109,7 @@ class RecordingCli : public ::testing::Test {
     return laps;
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"recording-cli"};
   std::unique_ptr<SimServer> sim_;
 };
 
