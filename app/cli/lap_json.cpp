@@ -7,6 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/export/lap_text.h"
 #include "core/text/json_string.h"
 
 namespace ydscope::cli {
@@ -15,45 +16,6 @@ JsonOut::~JsonOut() {
   try {
     flush();
   } catch (...) {
-  }
-}
-
-void JsonOut::integer(std::uint64_t value) {
-  std::array<char, 24> digits;
-  const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
-  text_.append(digits.data(), end);
-}
-
-void JsonOut::fixed(double value, int decimals) {
-  // Scaled-integer formatting: to_chars' exact fixed-precision path dominated jsonl output time,
-  // and points need only a few decimals. Ties round to even, as to_chars does; trailing zeros are trimmed.
-  static constexpr std::array<double, 7> kScale{1, 10, 100, 1e3, 1e4, 1e5, 1e6};
-  const int places = decimals < 0 ? 0 : (decimals > 6 ? 6 : decimals);
-  const double scaled = std::nearbyint(std::fabs(value) * kScale[static_cast<std::size_t>(places)]);
-  if (!std::isfinite(value) || scaled >= 9e15) {  // beyond exact integers: let to_chars handle it
-    std::array<char, 352> digits;
-    const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value,
-                                   std::chars_format::fixed, places).ptr;
-    text_.append(digits.data(), end);
-    return;
-  }
-  auto units = static_cast<std::uint64_t>(scaled);
-  if (units == 0) {
-    text_.push_back('0');
-    return;
-  }
-  if (value < 0) text_.push_back('-');
-  std::array<char, 8> fraction{};
-  int fraction_digits = places;
-  for (int i = places - 1; i >= 0; --i) {
-    fraction[static_cast<std::size_t>(i)] = static_cast<char>('0' + units % 10);
-    units /= 10;
-  }
-  while (fraction_digits > 0 && fraction[static_cast<std::size_t>(fraction_digits - 1)] == '0') --fraction_digits;
-  integer(units);
-  if (fraction_digits > 0) {
-    text_.push_back('.');
-    text_.append(fraction.data(), static_cast<std::size_t>(fraction_digits));
   }
 }
 
@@ -68,15 +30,6 @@ void JsonOut::flush() {
   text_.clear();
 }
 
-void write_point_fields(JsonOut& out, const LapPoint& point) {
-  // 359.99996 rounds to "360": print the same direction as 0 to stay in [0, 360).
-  const auto degrees = static_cast<double>(point.angle_deg);
-  out.fixed(degrees >= 359.99995 ? 0.0 : degrees, 4);
-  out.raw(",");
-  out.fixed(point.range_mm, 2);
-  out.raw(",");
-  out.integer(static_cast<std::uint64_t>(point.flag));
-}
 
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s) {
   out.raw(R"({"type":"lap","index":)");
@@ -88,7 +41,7 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::ui
   for (const LapPoint& point : lap.points) {
     out.raw(first ? "[" : ",[");
     first = false;
-    write_point_fields(out, point);
+    append_point_fields(out.buffer(), point);
     out.raw("]");
   }
   const bool trusted = lap.ct_info_trusted();

@@ -10,6 +10,7 @@
 
 #include "core/protocol/lap.h"
 #include "core/protocol/scan_decoder.h"
+#include "core/text/number_text.h"
 
 namespace ydscope::cli {
 
@@ -22,9 +23,11 @@ class JsonOut {
   ~JsonOut();  // flushes; a failure there is lost, so call flush() yourself to see it
 
   void raw(std::string_view text) { text_.append(text); }
-  void integer(std::uint64_t value);
+  void integer(std::uint64_t value) { append_integer(text_, value); }
   // value rounded to `decimals` places, trailing zeros (and a bare point) removed: 7161.25, 1000.
-  void fixed(double value, int decimals);
+  void fixed(double value, int decimals) { append_fixed(text_, value, decimals); }
+  // The text not yet written, for the shared writers of core/export/lap_text.h to append to.
+  std::string& buffer() { return text_; }
   // The value, or JSON null when there is none.
   void integer_or_null(const std::optional<std::uint64_t>& value) {
     if (value) integer(*value);
@@ -52,9 +55,6 @@ class JsonOut {
 // `health` what is known of it (the lap's own CT, or a live session's answer), t_s the lap's time
 // (LapPrinter says which). Commands print laps through LapPrinter (lap_output.h).
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s);
-// A point's angle,range,flag as every format prints them: the angle with 4 decimals in [0, 360),
-// the range in mm with up to 2.
-void write_point_fields(JsonOut& out, const LapPoint& point);
 // {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L
 //  [,"cut_points":C][,"start":"ISO 8601 UTC"]} and a newline; start: the wall-clock time of the
 // stream's start, when it is known.

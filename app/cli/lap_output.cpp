@@ -1,6 +1,7 @@
 #include "app/cli/lap_output.h"
 
 #include "app/common/arguments.h"
+#include "core/export/lap_text.h"
 
 namespace ydscope::cli {
 
@@ -27,17 +28,10 @@ void LapPrinter::print(const Lap& lap, std::optional<std::uint8_t> health) {
     return;
   }
   if (!header_written_) {
-    out_.raw("lap,t,angle_deg,range_mm,flag\n");
+    out_.raw(kLapCsvHeader);
     header_written_ = true;
   }
-  for (const LapPoint& point : lap.points) {
-    out_.integer(lap.index);
-    out_.raw(",");
-    out_.fixed(t_s, 6);
-    out_.raw(",");
-    write_point_fields(out_, point);
-    out_.raw("\n");
-  }
+  append_lap_csv_rows(out_.buffer(), lap.index, t_s, lap.points);
   out_.maybe_flush();
 }
 
