@@ -106,14 +106,12 @@ using InputFile = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 // when it cannot be read (a folder included). "-" is standard input (not closed).
 InputFile open_input(const std::string& path) {
   if (path == "-") return InputFile(stdin, [](std::FILE*) { return 0; });
+  require_existing_file(path, "input file");
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw std::runtime_error("'" + path + "' is a folder; pass a file or - for standard input");
   std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) {
-    if (errno == ENOENT) throw UsageError("input file '" + path + "' was not found");
-    throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
-  }
+  if (!file) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
   return InputFile(file, &std::fclose);
 }
 

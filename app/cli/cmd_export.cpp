@@ -61,7 +61,7 @@ int run_export(std::span<const std::string> raw) {
                        /*max_positionals=*/1);
   const std::string path = args.single_positional("REC.ydrec");
   const std::string out = args.required("mcap");
-  if (!std::filesystem::exists(path)) throw UsageError("recording '" + path + "' was not found");
+  require_existing_file(path, "recording");
   if (!is_recording_file(path))
     throw UsageError(path + " is not a ydscope recording (.ydrec); for raw lidar bytes use `ydscope-cli decode --model MODEL --mcap " + out + " " + path + "`");
   refuse_to_overwrite(out, args, "--mcap");

@@ -196,7 +196,7 @@ TEST_F(BadInputCli, DecodeChecksTheFileBeforeAskingForAModel) {
   EXPECT_EQ(run.err, "ydscope-cli decode: '" + dir_.string() + "' is a folder; pass a file or - for standard input\n");
   run = run_cli_apart("decode '" + path("missing.bin") + "'");
   EXPECT_EQ(run.status, 2);
-  EXPECT_EQ(run.err, "ydscope-cli decode: input file '" + path("missing.bin") + "' was not found\n");
+  EXPECT_EQ(run.err, "ydscope-cli decode: input file '" + path("missing.bin") + "' was not found; check the path\n");
   // A readable raw file still needs the model.
   test::write_file_bytes(path("raw.bin"), {0xAA, 0x55});
   run = run_cli_apart("decode '" + path("raw.bin") + "'");
