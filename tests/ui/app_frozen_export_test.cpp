@@ -10,8 +10,7 @@
 #include <sstream>
 
 #include "app_test_support.h"
-#include "private_display.h"
-#include "x11_input.h"
+#include "hands_on_app.h"
 
 namespace ydscope::test {
 namespace {
@@ -56,12 +55,10 @@ std::vector<std::uint64_t> laps_in(const std::string& csv) {
   return laps;
 }
 
-TEST(AppFrozenExport, ExportWhileFrozenSavesTheFrozenLaps) {
-  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
-  const PrivateDisplay display;  // before the hands: they open it
-  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
-  X11Hands hands;
-  ASSERT_TRUE(hands) << "cannot open the X display";
+class AppFrozenExport : public HandsOnApp {};
+
+TEST_F(AppFrozenExport, ExportWhileFrozenSavesTheFrozenLaps) {
+  X11Hands& hands = this->hands();
   const std::filesystem::path dir = fresh_temp_dir("ydscope-frozen-export");
   const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6"});
   ASSERT_TRUE(hands.find_window("ydscope", std::chrono::seconds(30)));

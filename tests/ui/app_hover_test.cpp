@@ -6,8 +6,7 @@
 #include <cstdlib>
 
 #include "app_test_support.h"
-#include "private_display.h"
-#include "x11_input.h"
+#include "hands_on_app.h"
 
 namespace ydscope::test {
 namespace {
@@ -32,12 +31,10 @@ int hover_words(const Image& image, Spot at) {
   return count_pixels(image, {at.x + 4, at.y - 50, at.x + 320, at.y - 4}, is_white_pixel);
 }
 
-TEST(AppHover, TheBoxFollowsAMovingPointerAndGoesWhenItRests) {
-  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
-  const PrivateDisplay display;  // before the hands: they open it
-  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
-  X11Hands hands;
-  ASSERT_TRUE(hands) << "cannot open the X display";
+class AppHover : public HandsOnApp {};
+
+TEST_F(AppHover, TheBoxFollowsAMovingPointerAndGoesWhenItRests) {
+  X11Hands& hands = this->hands();
   const std::filesystem::path dir = fresh_temp_dir("ydscope-hover");
   const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6", "--scene", "room"});
   ASSERT_TRUE(hands.find_window("ydscope", std::chrono::seconds(30)));
