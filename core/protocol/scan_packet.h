@@ -31,7 +31,7 @@ inline constexpr std::uint8_t kCtLapStart = 0x01;
 // Raw angle units: (raw >> 1) / 64 degrees.
 inline constexpr double kAngleUnitsPerDegree = 64.0;
 
-inline constexpr std::size_t packet_size(std::uint8_t lsn) { return kPacketHeaderSize + 2u * lsn; }
+inline constexpr std::size_t packet_size(std::uint8_t lsn) { return kPacketHeaderSize + std::size_t{2} * lsn; }
 inline constexpr bool is_lap_start(std::uint8_t ct) { return (ct & kCtLapStart) != 0; }
 inline constexpr bool angle_check_bit_ok(std::uint16_t raw_angle) { return (raw_angle & 1u) != 0; }
 // First-level angle in degrees, in [0, 512): the manuals' (raw >> 1) / 64.

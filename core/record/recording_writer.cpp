@@ -11,7 +11,7 @@
 namespace ydscope {
 namespace {
 
-constexpr std::size_t kBufferSize = 64 * 1024;
+constexpr std::size_t kBufferSize = std::size_t{64} * 1024;
 
 std::string write_error_sentence(const std::string& path, const std::string& what, int errno_value) {
   std::string sentence = "cannot " + what + " " + path + ": " + std::strerror(errno_value);
