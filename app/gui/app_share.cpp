@@ -15,6 +15,7 @@ void App::start_share() {
   if (share_) return;
   ShareOptions options;
   options.server.port = options_.share_port;
+  options.server.port_option = "--share-port";
   options.server.name = "ydscope" + (m.source_text.empty() ? std::string() : " on " + m.source_text);
   std::string error;
   share_ = SessionShare::start(session_, std::move(options), error);
