@@ -24,6 +24,7 @@ void App::start_share() {
     m.share = {};
     m.share.error = "Share did not start: " + error + ".";
     m.status_message = m.share.error;
+    m.show_source_tab = static_cast<int>(ui::SourceTab::Share);
     std::fprintf(stderr, "ydscope: %s\n", m.share.error.c_str());
     return;
   }

@@ -83,6 +83,8 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   }
   if (!v.live && !v.dim && !s.message.empty()) add_line(s.message, IM_COL32(255, 200, 120, 255), true);
   if (m.paused_view) add_line("frozen (P to resume)", IM_COL32(255, 255, 255, 220), true);
+  // Share was asked for and is not on: said until it starts (W tries again).
+  if (!m.share.error.empty()) add_line(m.share.error, severity_colour(Severity::Warning), true);
 
   // Badges in the top-right corner of the view, right to left: REC, SHARED, then health.
   float right = view_left + view_width - 16.0f;
