@@ -19,7 +19,7 @@
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/session_cli.h"
-#include "core/link/record_tap.h"
+#include "core/bridge/live_topics.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
@@ -92,57 +92,6 @@ CommandResult await(std::future<CommandResult>& result) {
   return result.get();
 }
 
-// rate: bytes per second since scanning started (the session's own rate updates once a second).
-// The live MCAP side of a recording: the session's records from its tap, into the export, on
-// this (the CLI's) thread; chunks flushed at least once a second.
-class LiveMcap {
- public:
-  LiveMcap(const std::string& path, McapExportOptions options)
-      : path_(path), tap_(std::make_shared<RecordTap>()) {
-    std::string error;
-    exporter_ = McapRecordingExport::create(path, std::move(options), error);
-    if (!exporter_) throw std::runtime_error(error);
-  }
-  std::shared_ptr<RecordTap> tap() const { return tap_; }
-  const std::string& path() const { return path_; }
-
-  // Takes what the tap holds (waiting up to `wait`) and writes it. False when the tap is closed and empty.
-  bool pump(std::chrono::milliseconds wait) {
-    const bool open = tap_->wait_and_take(records_, wait);
-    for (const TapRecord& r : records_) exporter_->record(r.type, r.payload, r.t_ns);
-    tap_->recycle(records_);
-    if (const auto dropped = tap_->dropped())
-      exporter_->encoder().set_extra_diagnostics({{"tap_dropped_records", std::to_string(dropped)}});
-    if (Clock::now() - last_flush_ >= std::chrono::milliseconds(900)) {
-      exporter_->flush();
-      last_flush_ = Clock::now();
-    }
-    if (exporter_->failed()) throw std::runtime_error("writing " + path_ + " failed: " + exporter_->error());
-    return open;
-  }
-  // After the session closed the tap: the rest of its records, then the summary.
-  void finish() {
-    while (pump(std::chrono::milliseconds(200))) {
-    }
-    if (!exporter_->finish()) throw std::runtime_error("writing " + path_ + " failed: " + exporter_->error());
-  }
-  std::string summary() const {
-    const auto& stats = exporter_->statistics();
-    return "wrote " + path_ + ": " + std::to_string(exporter_->encoder().laps()) + " laps, " +
-           std::to_string(stats.message_count) + " messages in " + std::to_string(stats.chunk_count) + " chunks, " +
-           std::to_string(exporter_->bytes_written()) + " bytes";
-  }
-  std::uint64_t laps() const { return exporter_->encoder().laps(); }
-  std::uint64_t dropped() const { return tap_->dropped(); }
-
- private:
-  std::string path_;
-  std::shared_ptr<RecordTap> tap_;
-  std::unique_ptr<McapRecordingExport> exporter_;
-  std::vector<TapRecord> records_;
-  Clock::time_point last_flush_ = Clock::now();
-};
-
 void show_progress(const std::string& out, double seconds, const CounterSnapshot& c, double rate) {
   std::fprintf(stderr, "\r\033[Krecording %s: %.1f s, %llu bytes from the device (%.1f kB/s), %llu laps", out.c_str(),
                seconds, static_cast<unsigned long long>(c.bytes_received), rate / 1000.0,
@@ -195,20 +144,26 @@ int run_record(std::span<const std::string> raw) {
   std::signal(SIGTERM, record_on_signal);
   // Recording starts right after the connect intent, so the start-up exchange is in the file too.
   session.connect(config);
-  std::unique_ptr<LiveMcap> live;
+  // The MCAP side is written from the session's tap on a thread of its own.
+  std::unique_ptr<LiveTopics> live;
   if (mcap_option) {
-    live = std::make_unique<LiveMcap>(*mcap_option, mcap_options);
-    run_and_wait([&](CommandCallback done) { session.start_tap(live->tap(), std::move(done)); });
+    LiveTopicsOptions options;
+    options.topics = mcap_options;
+    options.mcap_path = *mcap_option;
+    std::string error;
+    live = LiveTopics::start(session, std::move(options), error);
+    if (!live) throw std::runtime_error(error);
   }
   if (out_option) {
     const CommandResult start = run_and_wait([&](CommandCallback done) { session.start_recording(out, std::move(done)); });
     if (!start.ok) throw std::runtime_error(start.message);
   }
   const std::string shown = out_option ? out : *mcap_option;
-  // Between session checks: write what the tap holds, or just sleep.
+  // Between session checks; a failed MCAP write ends the recording like a failed .ydrec.
   const auto idle = [&](std::chrono::milliseconds wait) {
-    if (live) live->pump(wait);
-    else std::this_thread::sleep_for(wait);
+    std::this_thread::sleep_for(wait);
+    if (live)
+      if (const std::string failed = live->error(); !failed.empty()) throw std::runtime_error(failed);
   };
 
   std::string failure;
@@ -256,10 +211,7 @@ int run_record(std::span<const std::string> raw) {
 
   // Close the files first (flushed and complete), then stop the lidar.
   if (out_option) run_and_wait([&](CommandCallback done) { session.stop_recording(std::move(done)); });
-  if (live) {
-    run_and_wait([&](CommandCallback done) { session.stop_tap(std::move(done)); });
-    live->finish();
-  }
+  if (live && !live->stop()) throw std::runtime_error(live->error());
   session.disconnect();
   session.wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
                      std::chrono::seconds(3));
@@ -270,7 +222,7 @@ int run_record(std::span<const std::string> raw) {
     if (!summary) throw std::runtime_error(error);
     if (!failure.empty() && summary->device_bytes == 0 && summary->host_bytes == 0) {
       std::filesystem::remove(out);  // the port never opened: an empty recording helps nobody
-      if (live) std::filesystem::remove(live->path());
+      if (live) std::filesystem::remove(live->mcap_path());
       throw std::runtime_error(failure);
     }
     std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s%s\n", out.c_str(),
@@ -279,14 +231,14 @@ int run_record(std::span<const std::string> raw) {
                 health.summary_note().c_str());
     print_recording_warnings("ydscope-cli record", summary->damage);
   } else if (!failure.empty() && s.counters.bytes_received == 0 && s.counters.bytes_sent == 0) {
-    std::filesystem::remove(live->path());
+    std::filesystem::remove(live->mcap_path());
     throw std::runtime_error(failure);
   }
   if (live) {
-    std::printf("%s%s\n", live->summary().c_str(), out_option ? "" : health.summary_note().c_str());
+    std::printf("%s%s\n", live->file_summary().c_str(), out_option ? "" : health.summary_note().c_str());
     if (live->dropped())
       std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidar\n",
-                   live->path().c_str(), static_cast<unsigned long long>(live->dropped()));
+                   live->mcap_path().c_str(), static_cast<unsigned long long>(live->dropped()));
   }
   std::fflush(stdout);
   if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + shown);

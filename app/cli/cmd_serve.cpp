@@ -13,11 +13,7 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/session_cli.h"
-#include "app/cli/session_parameters.h"
-#include "core/bridge/foxglove_server.h"
-#include "core/bridge/ros_topic_channels.h"
-#include "core/export/mcap_recording_export.h"
-#include "core/link/record_tap.h"
+#include "core/bridge/session_share.h"
 
 namespace ydscope::cli {
 namespace {
@@ -91,97 +87,58 @@ foxglove::ServerOptions listen_options(const Arguments& args) {
   return options;
 }
 
-bool is_loopback(const std::string& host) { return host.rfind("127.", 0) == 0 || host == "::1" || host == "localhost"; }
-
 int run_serve(std::span<const std::string> raw) {
   const Arguments args(raw, with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds"})),
                        with_mcap_flags({"force"}));
   SessionConfig config = session_config_from(args, /*scan=*/true);
   config.reconnect = true;
-  foxglove::ServerOptions server_options = listen_options(args);
+  ShareOptions options;
+  options.server = listen_options(args);
   const auto seconds = args.number("seconds", 0.001, 1e9);
   const auto mcap_path = args.value("mcap");
   if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
-  McapExportOptions export_options = mcap_options_from(args);
-  export_options.ros.model = config.model;
-  server_options.name = "ydscope on " + config.address;
+  options.topics = mcap_options_from(args);
+  options.topics.ros.model = config.model;
+  options.mcap_path = mcap_path.value_or("");
+  options.server.name = "ydscope on " + config.address;
 
   Session session(4);
-  SessionParameters parameters(session);
-  foxglove::FoxgloveServer server(server_options, foxglove::ros_topic_channels(), &parameters);
-  std::string error;
-  if (!server.start(error)) throw std::runtime_error(error);
-  if (!is_loopback(server_options.host))
-    std::fprintf(stderr, "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
-                         "lidar and change its settings (there is no authentication)\n", server_options.host.c_str());
-
-  // Topics go to the clients, and to the MCAP file when asked, from this thread.
-  std::unique_ptr<McapRecordingExport> mcap;
-  std::unique_ptr<RosTopicEncoder> encoder;
-  const auto publish = [&server](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-    server.publish(foxglove::channel_id(topic), log_time, std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
-  };
-  if (mcap_path) {
-    mcap = McapRecordingExport::create(*mcap_path, export_options, error);
-    if (!mcap) throw std::runtime_error(error);
-    mcap->set_observer(publish);
-  } else {
-    encoder = std::make_unique<RosTopicEncoder>(export_options.ros);
-  }
-  RosTopicEncoder& topics = mcap ? mcap->encoder() : *encoder;
-
   std::signal(SIGINT, serve_on_signal);
   std::signal(SIGTERM, serve_on_signal);
-  auto tap = std::make_shared<RecordTap>();
+  // Clients and the MCAP file get the session's records from its tap, on a thread of their own.
+  std::string error;
+  auto share = SessionShare::start(session, options, error);
+  if (!share) throw std::runtime_error(error);
+  if (!is_loopback_host(share->host()))
+    std::fprintf(stderr, "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
+                         "lidar and change its settings (there is no authentication)\n", share->host().c_str());
   session.connect(config);
-  session.start_tap(tap);
-  std::printf("serving ws://%s:%u for %s\n", server_options.host.c_str(), static_cast<unsigned>(server.port()), config.address.c_str());
+  std::printf("serving %s for %s\n", share->address().c_str(), config.address.c_str());
   std::fflush(stdout);
 
   const auto start = Clock::now();
-  auto last_flush = Clock::now();
   LinkState last_state = LinkState::Idle;
-  std::vector<TapRecord> records;
   Lap lap;
   while (!stop_requested.load() && (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
-    tap->wait_and_take(records, std::chrono::milliseconds(20));
-    topics.set_filter(parameters.filter());
-    for (const TapRecord& r : records) {
-      if (mcap) mcap->record(r.type, r.payload, r.t_ns);
-      else topics.record(r.type, r.payload, r.t_ns, publish);
-    }
-    tap->recycle(records);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
     session.laps().drain_newest(lap);  // the served laps come from the tap; keep the queue empty
-    if (mcap && Clock::now() - last_flush >= std::chrono::milliseconds(900)) {
-      if (!mcap->flush()) throw std::runtime_error("writing " + *mcap_path + " failed: " + mcap->error());
-      last_flush = Clock::now();
-    }
+    if (const std::string failed = share->topics().error(); !failed.empty()) throw std::runtime_error(failed);
     const SessionSnapshot s = session.snapshot();
-    if (s.state != last_state) {
-      last_state = s.state;
-      const bool bad = s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled;
-      server.broadcast_status(bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
-                              std::string("lidar ") + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message));
-      if (bad) std::fprintf(stderr, "ydscope-cli serve: %s\n", describe_snapshot(s).c_str());
-    }
-    if (const auto dropped = tap->dropped()) topics.set_extra_diagnostics({{"tap_dropped_records", std::to_string(dropped)}});
+    if (s.state == last_state) continue;
+    last_state = s.state;
+    if (s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled)
+      std::fprintf(stderr, "ydscope-cli serve: %s\n", describe_snapshot(s).c_str());
   }
 
-  session.stop_tap();
-  for (const auto& c : server.clients())
+  for (const auto& c : share->clients())
     std::fprintf(stderr, "ydscope-cli serve: client %s: %llu messages sent, %llu dropped\n", c.peer.c_str(),
                  static_cast<unsigned long long>(c.sent), static_cast<unsigned long long>(c.dropped));
-  server.stop();
+  const bool written = share->stop();
   session.disconnect();
-  if (mcap) {
-    while (tap->wait_and_take(records, std::chrono::milliseconds(200))) {
-      for (const TapRecord& r : records) mcap->record(r.type, r.payload, r.t_ns);
-      tap->recycle(records);
-    }
-    if (!mcap->finish()) throw std::runtime_error("writing " + *mcap_path + " failed: " + mcap->error());
+  if (!written) throw std::runtime_error(share->topics().error());
+  if (mcap_path)
     std::fprintf(stderr, "ydscope-cli serve: wrote %s: %llu laps, %llu messages\n", mcap_path->c_str(),
-                 static_cast<unsigned long long>(topics.laps()), static_cast<unsigned long long>(mcap->statistics().message_count));
-  }
+                 static_cast<unsigned long long>(share->topics().laps()), static_cast<unsigned long long>(share->topics().messages()));
   return kExitOk;
 }
 

@@ -74,6 +74,9 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
 App::~App() {
   remove_key_callback();
   if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
+  // Files get their summaries and the clients a closed server before the source goes.
+  stop_recording();
+  stop_share();
   source_.stop();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
   // ImGui keeps only a pointer to our path string: save now and let it forget the path.
@@ -82,6 +85,8 @@ App::~App() {
 }
 
 std::string App::start_source() {
+  if (options_.share) model_.requests.push_back(ui::SetShare{true});  // carried out after the first frame
+  record_from_start_ = !options_.record.empty();
   ui::ConnectRequest request;
   start_clean();
   has_source_ = true;
@@ -296,6 +301,7 @@ void App::frame() {
   ImGui::Render();
   drew_ = render_if_changed(fb_scale, fb_w, fb_h);
   carry_out_requests(fb_w, fb_h);
+  follow_share_and_recording();
 }
 
 bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {

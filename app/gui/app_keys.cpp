@@ -45,6 +45,8 @@ void App::handle_keys() {
       case GLFW_KEY_P: model_.paused_view = !model_.paused_view; break;
       case GLFW_KEY_S: model_.requests.push_back(ui::SaveScreenshot{}); break;
       case GLFW_KEY_E: model_.requests.push_back(ui::ExportLapCsv{true}); break;
+      case GLFW_KEY_M: model_.requests.push_back(ui::ExportLapMcap{}); break;
+      case GLFW_KEY_W: model_.requests.push_back(ui::SetShare{!model_.share.on}); break;
       case GLFW_KEY_ESCAPE: view_->clear_ruler(); break;
       case GLFW_KEY_Q:
         if (ctrl) quit_ = true;

@@ -24,6 +24,7 @@ void App::update_model() {
       source_.auto_probe_done();
       model_.banner.clear();
     } else if (model_.now_s > kAutoProbeSeconds) {
+      leave_source();
       start_clean();
       model_.banner = source_.fall_back_to_sim();
       model_.source_text = source_.description();

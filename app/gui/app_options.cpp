@@ -9,8 +9,9 @@ namespace ydscope::gui {
 const char* const kAppHelp = kAppHelpText;
 
 AppOptions parse_app_options(std::span<const std::string> raw) {
-  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed"},
-                       {"fullscreen", "once"});
+  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed", "share-port",
+                        "record"},
+                       {"fullscreen", "once", "share"});
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
   if (int(port) + int(sim) + int(replay) > 1)
@@ -49,6 +50,11 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
     if (!parse_sector_spec(*sector, error)) throw UsageError("--sector: " + error);
     options.sector = sector;
   }
+  options.record = args.value("record").value_or("");
+  if (!options.record.empty() && options.record != "ydrec" && options.record != "mcap" && options.record != "both")
+    throw UsageError("--record takes ydrec, mcap or both, not '" + options.record + "'.");
+  options.share = args.has("share");
+  if (const auto share_port = args.integer("share-port", 0, 65535)) options.share_port = static_cast<std::uint16_t>(*share_port);
   if (options.model && !find_profile(*options.model) && !(options.source == SourceKind::Port && *options.model == "auto")) {
     throw UsageError("unknown model '" + *options.model + "'; choose one of " + std::string(model_names()) + ".");
   }

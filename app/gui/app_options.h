@@ -1,5 +1,6 @@
 #pragma once
 // The command line of `ydscope`: which source to show and the screenshot mode used by CI.
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,9 @@ struct AppOptions {
   std::string screenshot_path;       // --screenshot PNG
   int frames = 120;                  // --frames N with --screenshot
   std::optional<std::string> sector; // --sector "FROM:TO [MIN:MAX]": watch it from the start
+  std::string record;                // --record ydrec|mcap|both: record from the start (timestamped names)
+  bool share = false;                // --share: serve the source to Foxglove from the start
+  std::uint16_t share_port = 8765;   // --share-port N: where Share listens (127.0.0.1; 0 a free port)
 };
 
 // Throws UsageError (the shared parser's, app/common/arguments.h) with one sentence for a bad command line.

@@ -2,6 +2,7 @@
 // and mouse, in the order they came. Device commands go to the session with a callback that shows
 // their outcome beside the control that asked; source, replay and virtual-lidar requests go to the
 // LidarSource; view and file requests are done here.
+#include <chrono>
 #include <cstdio>
 #include <type_traits>
 #include <variant>
@@ -10,7 +11,9 @@
 #include "app/gui/screenshot.h"
 #include "ui/panels/panels.h"
 #include "ui/view/file_names.h"
+#include "core/link/recording_control.h"
 #include "ui/view/lap_csv.h"
+#include "ui/view/lap_mcap.h"
 
 namespace ydscope::gui {
 
@@ -30,11 +33,13 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         using R = std::decay_t<decltype(r)>;
         if constexpr (std::is_same_v<R, ui::ConnectRequest>) {
           if (r.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = r.address;
+          leave_source();
           source_.stop();
           start_clean();
           m.banner.clear();
           start(r);
         } else if constexpr (std::is_same_v<R, ui::Disconnect>) {
+          leave_source();
           source_.stop();
           start_clean();
           has_source_ = false;
@@ -61,9 +66,12 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         } else if constexpr (std::is_same_v<R, ui::RefreshHealth>) {
           session_.refresh_health(ui::track_command(m, CommandControl::Health));
         } else if constexpr (std::is_same_v<R, ui::StartRecording>) {
-          session_.start_recording(r.path, ui::track_command(m, CommandControl::Recording));
+          start_recording(r);
         } else if constexpr (std::is_same_v<R, ui::StopRecording>) {
-          session_.stop_recording(ui::track_command(m, CommandControl::Recording));
+          stop_recording();
+        } else if constexpr (std::is_same_v<R, ui::SetShare>) {
+          if (r.on) start_share();
+          else stop_share();
         } else if constexpr (std::is_same_v<R, ui::SetDistanceScale>) {
           session_.set_distance_scale(r.mm_per_count);
         } else if constexpr (std::is_same_v<R, ui::ResetView>) {
@@ -81,10 +89,9 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
           const std::size_t laps = r.every_shown_lap ? history_.size() : 1;
           const std::string path = timestamped_name("csv");
           const std::string error = save_text_file(path, ui::shown_laps_csv(history_, laps));
-          const std::string what = laps == 1 ? "lap " + std::to_string(history_.newest().index)
-                                             : std::to_string(laps) + " laps (" + std::to_string(history_.at_age(laps - 1).index) +
-                                                   " to " + std::to_string(history_.newest().index) + ")";
-          m.status_message = error.empty() ? "exported " + what + (m.paused_view ? " as frozen" : "") + " to " + path : error;
+          m.status_message = error.empty() ? "exported " + shown_laps_words(laps) + " to " + path : error;
+        } else if constexpr (std::is_same_v<R, ui::ExportLapMcap>) {
+          export_shown_laps_mcap();
         } else if constexpr (std::is_same_v<R, ui::WatchSector>) {
           m.sector_error = watch_sector(r.spec);
           if (!m.sector_error.empty()) return;
@@ -97,6 +104,32 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         }
       },
       request);
+}
+
+std::string App::shown_laps_words(std::size_t laps) const {
+  const std::string what = laps == 1 ? "lap " + std::to_string(history_.newest().index)
+                                     : std::to_string(laps) + " laps (" + std::to_string(history_.at_age(laps - 1).index) +
+                                           " to " + std::to_string(history_.newest().index) + ")";
+  return what + (model_.paused_view ? " as frozen" : "");
+}
+
+void App::export_shown_laps_mcap() {
+  ui::UiModel& m = model_;
+  if (history_.empty()) {
+    m.status_message = "no lap to export yet.";
+    return;
+  }
+  const SessionSnapshot& s = m.snap;
+  const Model model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
+  // The laps carry steady-clock receive times; the file wants wall-clock ones.
+  const auto wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch());
+  const auto steady = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch());
+  const std::string path = timestamped_name("mcap");
+  const ui::ShownLapsMcap saved = ui::save_shown_laps_mcap(
+      history_, history_.size(), model, recording_metadata_of(s, m.source_text, s.distance_scale > 0 ? std::optional(s.distance_scale) : std::nullopt), (wall_ns - steady).count(), path);
+  m.status_message = saved.error.empty() ? "exported " + shown_laps_words(saved.laps) + " to " + path + " (" +
+                                               std::to_string(saved.messages) + " messages on /scan and /points)"
+                                         : saved.error;
 }
 
 void App::follow_replay() {

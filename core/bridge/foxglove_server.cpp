@@ -329,7 +329,9 @@ bool FoxgloveServer::Impl::start(std::string& error) {
   if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) {
     error = "cannot listen on " + options_.host + ":" + std::to_string(options_.port) + ": " + ec.message() +
-            (ec == asio::error::address_in_use ? " (is another ydscope-cli serve running? pick another --listen port)" : "");
+            (ec == asio::error::address_in_use
+                 ? " (another program has it, perhaps another ydscope; choose another port with " + options_.port_option + ")"
+                 : "");
     return false;
   }
   port_ = acceptor_.local_endpoint().port();

@@ -44,6 +44,7 @@ struct ServerOptions {
   std::chrono::milliseconds handshake_timeout{30'000};
   std::chrono::milliseconds idle_timeout{300'000};
   std::string name = "ydscope";
+  std::string port_option = "--listen";  // named in the sentence when the port is in use
 };
 
 struct ServerChannel {

@@ -37,7 +37,7 @@ McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, Mca
 }
 
 McapRecordingExport::McapRecordingExport(McapSink& sink, McapExportOptions options)
-    : writer_(sink, options.mcap), encoder_(std::move(options.ros)) {
+    : writer_(sink, options.mcap), encoder_(options.ros), frame_(options.ros.frame) {
   std::uint16_t schema_ids[kRosTopicCount] = {};
   for (const RosTopicInfo& topic : ros_topics()) {
     const auto i = static_cast<std::size_t>(topic.topic);
@@ -83,6 +83,13 @@ void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_
     if (equals != std::string_view::npos) merged[std::string(line.substr(0, equals))] = std::string(line.substr(equals + 1));
   }
   writer_.write_metadata(kMcapRecordingMetadataName, merged);
+}
+
+void McapRecordingExport::lap(const Lap& lap, Model model, std::uint64_t stamp_ns, double scan_time_s) {
+  encode_laser_scan(lap, frame_, range_limits(model), stamp_ns, scan_time_s, scan_scratch_, message_);
+  emit(RosTopic::Scan, stamp_ns, message_);
+  encode_point_cloud(lap, frame_, stamp_ns, message_);
+  emit(RosTopic::Points, stamp_ns, message_);
 }
 
 bool McapRecordingExport::flush() { return writer_.flush_chunk(); }

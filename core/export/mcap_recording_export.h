@@ -37,6 +37,9 @@ class McapRecordingExport {
   // (key=value text). Records of unknown types are ignored, as readers of .ydrec do.
   void record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns);
   void metadata(const RecordingMetadata& changes, std::int64_t t_ns);
+  // A lap decoded elsewhere (the app's shown laps): its /scan and /points, stamped `stamp_ns`
+  // (ns since the Unix epoch); `scan_time_s` is the time since the previous lap's close (0: unknown).
+  void lap(const Lap& lap, Model model, std::uint64_t stamp_ns, double scan_time_s);
   // Closes the open chunk so what was written so far is readable (call at least once a second live).
   bool flush();
   // Last laps and diagnostics, summary and footer. False plus error() if anything failed.
@@ -59,6 +62,9 @@ class McapRecordingExport {
   std::unique_ptr<McapFileSink> file_;  // when the export owns its file
   McapWriter writer_;
   RosTopicEncoder encoder_;
+  RosFrameOptions frame_;
+  std::vector<float> scan_scratch_;  // lap()'s
+  std::vector<std::uint8_t> message_;
   std::uint16_t channel_[kRosTopicCount] = {};
   std::uint32_t sequence_[kRosTopicCount] = {};
   bool finished_ = false;

@@ -38,12 +38,11 @@ CommandResult RecordingControl::start_tap(std::shared_ptr<RecordTap> tap, const 
   return result;
 }
 
-CommandResult RecordingControl::stop_tap() {
+CommandResult RecordingControl::stop_tap(const std::shared_ptr<RecordTap>& tap) {
   CommandResult result;
   result.what = "stop the record tap";
   result.ok = true;
-  result.message = recorder_.tapping() ? "tap closed" : "no tap was open";
-  recorder_.stop_tap();
+  result.message = tap && recorder_.stop_tap(*tap) ? "tap closed" : "that tap was not open";
   update_wire_hook();
   return result;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // RecordingControl: the session's recording part, on the I/O thread. It owns the recorder (a
-// file, a live tap for MCAP and the bridge, either or both), points the link's wire hook at it
+// file, live taps for MCAP and the bridge, any of them), points the link's wire hook at it
 // while anything captures (so every byte is recorded as it crosses the link, whatever the UI
 // does), carries out the four recording intents, and says what the session knows as recording
 // metadata.
@@ -25,7 +25,7 @@ class RecordingControl {
   CommandResult start_file(const std::string& path, const RecordingMetadata& start);
   CommandResult stop_file();
   CommandResult start_tap(std::shared_ptr<RecordTap> tap, const RecordingMetadata& start);
-  CommandResult stop_tap();
+  CommandResult stop_tap(const std::shared_ptr<RecordTap>& tap);
 
   // Once a second while a file records: hands its bytes to the kernel. Empty, or the sentence
   // saying why the file stopped (a write error).

@@ -50,7 +50,9 @@ void Session::stop_recording(CommandCallback done) { impl_->post_stop_recording(
 void Session::start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
   impl_->post_start_tap(std::move(tap), std::move(done));
 }
-void Session::stop_tap(CommandCallback done) { impl_->post_stop_tap(std::move(done)); }
+void Session::stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
+  impl_->post_stop_tap(std::move(tap), std::move(done));
+}
 void Session::set_distance_scale(std::optional<double> mm_per_count) { impl_->post_distance_scale(mm_per_count); }
 SessionSnapshot Session::snapshot() const { return impl_->snapshot(); }
 SessionSnapshot Session::wait_until(const std::function<bool(const SessionSnapshot&)>& done,
@@ -196,8 +198,8 @@ void Session::Impl::post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallba
   });
 }
 
-void Session::Impl::post_stop_tap(CommandCallback done) {
-  asio::post(io_, [this, done = std::move(done)] { finish(recording_.stop_tap(), done); });
+void Session::Impl::post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
+  asio::post(io_, [this, tap = std::move(tap), done = std::move(done)] { finish(recording_.stop_tap(tap), done); });
 }
 
 void Session::Impl::post_distance_scale(std::optional<double> scale) {

@@ -82,9 +82,9 @@ class Session {
   void start_recording(std::string path, CommandCallback done = {});
   void stop_recording(CommandCallback done = {});
   // Every record a recording would hold, live, into `tap` (for MCAP and the WebSocket bridge),
-  // beside or without a file recording. stop_tap() closes the tap.
+  // beside or without a file recording, and beside other taps. stop_tap(tap) closes that tap.
   void start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done = {});
-  void stop_tap(CommandCallback done = {});
+  void stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done = {});
   // Empty: back to the model profile's scale. Applies from the next decoded byte.
   void set_distance_scale(std::optional<double> mm_per_count);
 

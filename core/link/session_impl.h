@@ -45,7 +45,7 @@ class Session::Impl {
   void post_start_recording(std::string path, CommandCallback done);
   void post_stop_recording(CommandCallback done);
   void post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
-  void post_stop_tap(CommandCallback done);
+  void post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
   void post_distance_scale(std::optional<double> scale);
   SessionSnapshot snapshot() const;
   SessionSnapshot wait_until(const std::function<bool(const SessionSnapshot&)>& done,

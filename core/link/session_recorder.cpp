@@ -11,22 +11,23 @@ namespace ydscope {
 SessionRecorder::SessionRecorder() = default;
 SessionRecorder::~SessionRecorder() {
   stop();
-  stop_tap();
+  for (Tap& t : taps_) t.tap->close();
 }
 
 void SessionRecorder::start_tap(std::shared_ptr<RecordTap> tap, RecordingMetadata metadata) {
-  stop_tap();
-  tap_ = std::move(tap);
-  tap_start_ns_ = link_clock_ns();
+  stop_tap(*tap);  // the same tap twice would get every record twice
   if (!metadata.start_wall_time) metadata.start_wall_time = iso8601_utc_now();
   const std::string text = metadata.encode();
-  tap_->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}, 0);
+  tap->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}, 0);
+  taps_.push_back({std::move(tap), link_clock_ns()});
 }
 
-void SessionRecorder::stop_tap() {
-  if (!tap_) return;
-  tap_->close();
-  tap_.reset();
+bool SessionRecorder::stop_tap(const RecordTap& tap) {
+  const auto it = std::find_if(taps_.begin(), taps_.end(), [&](const Tap& t) { return t.tap.get() == &tap; });
+  if (it == taps_.end()) return false;
+  it->tap->close();
+  taps_.erase(it);
+  return true;
 }
 
 bool SessionRecorder::start(const std::string& path, const RecordingMetadata& metadata, std::string& error) {
@@ -46,8 +47,9 @@ void SessionRecorder::stop() {
 }
 
 void SessionRecorder::bytes(bool outgoing, std::span<const std::uint8_t> data, std::int64_t now_ns) {
-  if (tap_ && !data.empty())
-    tap_->push(outgoing ? RecordType::HostToDevice : RecordType::DeviceToHost, data, std::max<std::int64_t>(0, now_ns - tap_start_ns_));
+  if (!data.empty())
+    for (const Tap& t : taps_)
+      t.tap->push(outgoing ? RecordType::HostToDevice : RecordType::DeviceToHost, data, std::max<std::int64_t>(0, now_ns - t.start_ns));
   if (!writer_) return;
   if (!writer_->append(outgoing ? Direction::HostToDevice : Direction::DeviceToHost, data, now_ns)) {
     error_ = writer_->error();
@@ -56,10 +58,12 @@ void SessionRecorder::bytes(bool outgoing, std::span<const std::uint8_t> data, s
 }
 
 void SessionRecorder::metadata(const RecordingMetadata& metadata) {
-  if (tap_) {
+  if (!taps_.empty()) {
     const std::string text = metadata.encode();
-    tap_->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()},
-               std::max<std::int64_t>(0, link_clock_ns() - tap_start_ns_));
+    const std::int64_t now = link_clock_ns();
+    for (const Tap& t : taps_)
+      t.tap->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()},
+                  std::max<std::int64_t>(0, now - t.start_ns));
   }
   if (!writer_) return;
   if (!writer_->update_metadata(metadata, link_clock_ns())) {

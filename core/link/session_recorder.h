@@ -1,11 +1,14 @@
 #pragma once
 // SessionRecorder: the session's use of the recording writer, and of a live RecordTap. It lives
 // on the I/O thread, so every byte read or written is recorded as it crosses the link and nothing
-// can be lost to the UI. The file and the tap are independent: either, both or neither.
+// can be lost to the UI. The file and the taps are independent: any of them, or none. Several
+// taps, because their consumers come and go on their own (the app shares its source over the
+// Foxglove bridge while an MCAP recording of it starts and stops).
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/record/recording_metadata.h"
 
@@ -23,12 +26,13 @@ class SessionRecorder {
   bool start(const std::string& path, const RecordingMetadata& metadata, std::string& error);
   void stop();
   bool active() const { return writer_ != nullptr; }
-  // The tap gets a metadata record (`metadata` plus its start time) and then every record.
+  // Adds a tap: it gets a metadata record (`metadata` plus its start time) and then every record.
   void start_tap(std::shared_ptr<RecordTap> tap, RecordingMetadata metadata);
-  void stop_tap();  // closes the tap
-  bool tapping() const { return tap_ != nullptr; }
+  // Closes `tap` and forgets it; false when it was not one of ours.
+  bool stop_tap(const RecordTap& tap);
+  bool tapping() const { return !taps_.empty(); }
   // Anything wants the link's bytes.
-  bool capturing() const { return writer_ || tap_; }
+  bool capturing() const { return writer_ || !taps_.empty(); }
   const std::string& path() const { return path_; }
 
   void bytes(bool outgoing, std::span<const std::uint8_t> data, std::int64_t now_ns);
@@ -41,8 +45,11 @@ class SessionRecorder {
 
  private:
   std::unique_ptr<RecordingWriter> writer_;
-  std::shared_ptr<RecordTap> tap_;
-  std::int64_t tap_start_ns_ = 0;
+  struct Tap {
+    std::shared_ptr<RecordTap> tap;
+    std::int64_t start_ns = 0;  // its records' times count from here
+  };
+  std::vector<Tap> taps_;
   std::string path_;
   std::string error_;
 };

@@ -122,6 +122,21 @@ TEST(CommandLine, TheAppFollowsTheSameRules) {
   EXPECT_EQ(app("--sim=G9").status, 2);
   EXPECT_EQ(app("--sim G1 --replay x.ydrec").status, 2);
 }
+
+// Share and record from the command line: a mistake is one sentence and exit 2, before any window.
+TEST(CommandLine, TheAppsShareAndRecordOptionsRefuseMistakes) {
+  const auto app = [](const std::string& arguments) { return run_program(YDSCOPE_APP_PATH, arguments); };
+  EXPECT_EQ(app("--record mov").err, "ydscope: --record takes ydrec, mcap or both, not 'mov'.\n");
+  EXPECT_EQ(app("--record mov").status, 2);
+  const auto port = app("--share --share-port 70000");
+  EXPECT_EQ(port.status, 2);
+  EXPECT_NE(port.err.find("--share-port"), std::string::npos) << port.err;
+  EXPECT_EQ(port.err.find('\n'), port.err.size() - 1) << "one line: " << port.err;
+  EXPECT_EQ(app("--shares").err, "ydscope: unknown option --shares; did you mean --share?\n");
+  const auto help = app("--help").out;
+  for (const char* option : {"--share ", "--share-port N", "--record FORMAT", "W share on/off", "M the shown laps as MCAP"})
+    EXPECT_NE(help.find(option), std::string::npos) << option;
+}
 #endif
 
 }  // namespace

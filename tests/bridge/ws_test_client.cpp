@@ -107,6 +107,7 @@ std::optional<WsMessage> WsTestClient::read(std::chrono::milliseconds timeout) {
     message.subscription = static_cast<std::uint32_t>(little_endian(bytes + 1, 4));
     message.log_time_ns = little_endian(bytes + 5, 8);
     message.payload_bytes = data.size() - 13;
+    message.payload.assign(bytes + 13, bytes + data.size());
   }
   return message;
 }

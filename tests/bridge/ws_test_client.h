@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -25,6 +26,7 @@ struct WsMessage {
   std::uint32_t subscription = 0; // binary Message Data
   std::uint64_t log_time_ns = 0;
   std::size_t payload_bytes = 0;
+  std::vector<std::uint8_t> payload;  // the message (CDR), to decode
 };
 
 class WsTestClient {

@@ -14,6 +14,7 @@
 #include "core/protocol/scan_packet.h"
 #include "export/cdr_test_reader.h"
 #include "export/mcap_test_reader.h"
+#include "export/point_cloud_reader.h"
 
 namespace ydscope {
 namespace {
@@ -174,21 +175,11 @@ TEST(McapRecordingExport, CarriesExactlyTheLapsTheDecoderGives) {
     EXPECT_GE(m.log_time, 1'796'155'200'500'000'000ull);  // 2026-12-01T20:00:00.5Z
     if (m.channel_id == ids["/points"]) {
       const Lap& lap = expected.at(clouds++);
-      test::CdrReader r(m.data);
-      r.i32();
-      r.u32();
-      r.str();
-      r.u32();
-      ASSERT_EQ(r.u32(), lap.points.size());
-      for (int i = 0; i < 6; ++i) r.str(), r.u32(), r.u8(), r.u32();
-      r.u8(), r.u32(), r.u32(), r.u32();
-      const std::uint8_t* data = r.take(lap.points.size() * kPointStep);
+      const auto points = test::point_cloud_points(m.data);
+      ASSERT_EQ(points.size(), lap.points.size());
       for (std::size_t i = 0; i < lap.points.size(); ++i) {
-        float range_m, angle;
-        std::memcpy(&range_m, data + i * kPointStep + 12, 4);
-        std::memcpy(&angle, data + i * kPointStep + 16, 4);
-        EXPECT_EQ(angle, lap.points[i].angle_deg);
-        EXPECT_FLOAT_EQ(range_m, lap.points[i].range_mm / 1000.0f);
+        EXPECT_EQ(points[i].angle_deg, lap.points[i].angle_deg);
+        EXPECT_FLOAT_EQ(points[i].range_m, lap.points[i].range_mm / 1000.0f);
       }
     } else if (m.channel_id == ids["/scan"]) {
       ++scans;

@@ -1,4 +1,5 @@
-// Connection: where the bytes come from (a port, the virtual lidar, a recording) and recording.
+// Connection: where the bytes come from (a port, the virtual lidar, a recording), recording, and
+// sharing the source with Foxglove.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -184,37 +185,74 @@ void replay_section(UiModel& m) {
   }
 }
 
+// One line per file being written: its size and where it is.
+void recording_file_line(const std::string& path) {
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  ImGui::TextDisabled("%.2f MB", ec ? 0.0 : static_cast<double>(bytes) / 1e6);
+  ImGui::SameLine();
+  wrapped_text(path.c_str());
+}
+
 void record_section(UiModel& m, const SessionSnapshot& s) {
-  if (s.recording) {
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(s.recording_path, ec);
+  if (m.recording()) {
     ImGui::TextColored({1.0f, 0.35f, 0.35f, 1.0f}, "\xE2\x80\xA2 REC");
     ImGui::SameLine();
-    ImGui::Text("%.1f s, %.2f MB", m.now_s - m.record_started_s, ec ? 0.0 : static_cast<double>(bytes) / 1e6);
-    wrapped_text(s.recording_path.c_str());
+    ImGui::Text("%.1f s", m.now_s - m.record_started_s);
+    if (s.recording) recording_file_line(s.recording_path);
+    if (m.mcap_recording.active) recording_file_line(m.mcap_recording.path);
     if (ImGui::Button("Stop recording")) m.requests.push_back(StopRecording{});
     command_feedback_line(m, CommandControl::Recording);
   } else {
+    constexpr const char* kFormats[] = {".ydrec (every byte)", ".mcap (ROS 2 topics)", ".ydrec + .mcap"};
+    constexpr const char* kHints[] = {"ydscope-<date>-<time>.ydrec", "ydscope-<date>-<time>.mcap", "ydscope-<date>-<time>.ydrec"};
+    m.record_format = std::clamp(m.record_format, 0, 2);
+    ImGui::Combo("format", &m.record_format, kFormats, IM_ARRAYSIZE(kFormats));
     // Empty means a new timestamped name at each start, so no recording overwrites another.
-    ImGui::InputTextWithHint("file", "ydscope-<date>-<time>.ydrec", m.record_text, sizeof m.record_text);
+    ImGui::InputTextWithHint("file", kHints[m.record_format], m.record_text, sizeof m.record_text);
     const bool connected = link_state_connected(s.state);
     if (!connected) ImGui::BeginDisabled();
     if (ImGui::Button("Start recording")) {
-      const std::string path = m.record_text[0] ? std::string(m.record_text) : timestamped_name("ydrec");
+      const RecordingPaths paths = recording_paths(static_cast<RecordFormat>(m.record_format), m.record_text);
       std::error_code ec;
-      if (std::filesystem::exists(path, ec)) {
+      std::string taken;
+      for (const std::string* path : {&paths.ydrec, &paths.mcap})
+        if (!path->empty() && taken.empty() && std::filesystem::exists(*path, ec)) taken = *path;
+      if (!taken.empty()) {
         const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
         m.feedback->finished(CommandControl::Recording, ticket, false,
-                             path + " already exists; choose another name, or clear the field for a timestamped one.");
+                             taken + " already exists; choose another name, or clear the field for a timestamped one.");
       } else {
-        m.requests.push_back(StartRecording{path});
+        m.requests.push_back(StartRecording{paths.ydrec, paths.mcap});
       }
       m.record_started_s = m.now_s;
     }
     if (!connected) ImGui::EndDisabled();
     command_feedback_line(m, CommandControl::Recording);
-    help_marker("Every byte in both directions, with timestamps, written by the I/O thread; replay it from the Replay tab.");
+    help_marker(".ydrec: every byte in both directions, with timestamps, written by the I/O thread; replay it from the "
+                "Replay tab. .mcap: /scan, /points, /diagnostics and the link bytes as ROS 2 messages, for Foxglove "
+                "and ros2 bag (chunks flushed every second).");
   }
+}
+
+// The current source, live to Foxglove: the same topics and parameters as `ydscope-cli serve`.
+void share_section(UiModel& m) {
+  bool on = m.share.on;
+  if (ImGui::Checkbox("share with Foxglove (W)", &on)) m.requests.push_back(SetShare{on});
+  if (m.share.on) {
+    ImGui::TextColored({0.45f, 0.75f, 1.0f, 1.0f}, "serving");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(m.share.address.c_str());
+    ImGui::TextDisabled("%zu client%s connected", m.share.clients, m.share.clients == 1 ? "" : "s");
+  } else if (!m.share.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.6f, 0.35f, 1.0f});
+    wrapped_text(m.share.error.c_str());
+    ImGui::PopStyleColor();
+  }
+  help_marker("In Foxglove: Open connection > Foxglove WebSocket > the address above. Serves /scan, /points, "
+              "/diagnostics and the link bytes, follows a change of source, and lets the Parameters panel set "
+              "scan_hz, ranging_khz, power_down_protection and the G1 filters through the same commands as this "
+              "window. Only this machine can connect (127.0.0.1); --share-port picks the port.");
 }
 
 }  // namespace
@@ -295,8 +333,12 @@ void draw_connection_panel(UiModel& m) {
       replay_section(m);
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Record")) {
+    if (ImGui::BeginTabItem("Record", nullptr, tab_flags(static_cast<int>(SourceTab::Record)))) {
       record_section(m, s);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Share", nullptr, tab_flags(static_cast<int>(SourceTab::Share)))) {
+      share_section(m);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();

@@ -157,6 +157,9 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   char every[48];
   std::snprintf(every, sizeof every, "All %zu shown laps", m.laps_on_screen);
   if (ImGui::Button(every)) m.requests.push_back(ExportLapCsv{true});
+  ImGui::TextDisabled("MCAP");
+  ImGui::SameLine();
+  if (ImGui::Button("Shown laps as /scan, /points")) m.requests.push_back(ExportLapMcap{});
   if (!m.status_message.empty()) wrapped_text(m.status_message.c_str());
 }
 

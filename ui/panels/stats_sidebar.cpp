@@ -98,7 +98,8 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
       ImGui::TabItemButton("keys", ImGuiTabItemFlags_Trailing);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Tab: hide the panels   F11: full-screen   R: reset view   A: auto-range\n"
-                          "P: freeze   S: screenshot   E: shown laps as CSV   Esc: clear the ruler   Ctrl+Q: quit\n"
+                          "P: freeze   S: screenshot   E: shown laps as CSV   M: as MCAP   W: share on/off\n"
+                          "Esc: clear the ruler   Ctrl+Q: quit\n"
                           "Wheel: zoom   drag: pan   double-click: reset   right-click twice: ruler\n"
                           "Shift+drag: watch a sector");
       ImGui::EndTabBar();

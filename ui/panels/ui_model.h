@@ -45,6 +45,24 @@ inline constexpr float kMinReplaySpeedShown = 0.25f;
 inline constexpr float kMaxReplaySpeedShown = 8.0f;
 
 enum class SidebarTab { Lidar, View, Statistics };
+// The Connection panel's tabs: the first three are ConnectRequest::Kind's.
+enum class SourceTab { Port, Virtual, Replay, Record, Share };
+
+// The Share toggle: the current source served to Foxglove (filled by the app).
+struct ShareState {
+  bool on = false;
+  std::string address;      // "ws://127.0.0.1:8765" while on
+  std::size_t clients = 0;  // connected now
+  std::string error;        // why the last start failed ("cannot listen on ...: address in use")
+};
+
+// A live MCAP recording (the session's own .ydrec recording is in the snapshot).
+struct McapRecordingState {
+  bool active = false;
+  std::string path;
+  std::uint64_t bytes = 0;
+  std::uint64_t laps = 0;
+};
 
 struct UiModel {
   // ---- filled by the app each frame -------------------------------------------------------------
@@ -79,15 +97,21 @@ struct UiModel {
   bool paused_view = false;               // the view holds the current laps
   ViewState view_state;                   // live, or dimmed with the reason in words
   std::vector<HealthAlert> alerts;        // worst first, for the status line and the badge
+  ShareState share;
+  McapRecordingState mcap_recording;
   bool booth = false;                     // the full-screen view: large type and a legend
   ColourLegend legend;                    // what the colours mean, for the booth view
   // Outcomes of device commands for the panel beside the control that issued them. Shared with
   // the session's completion callbacks, which run on the I/O thread.
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();
-  // Opens the Connection tab of the current source once: 0 port, 1 virtual, 2 replay; -1 none.
+  // Opens a tab of the Connection panel once (SourceTab: 0 port, 1 virtual, 2 replay, then the
+  // Record and Share tabs); -1 none.
   int show_source_tab = -1;
   // Opens a sidebar tab once (SidebarTab); -1 none.
   int show_sidebar_tab = -1;
+
+  // A .ydrec or an MCAP recording runs (the REC badge).
+  bool recording() const { return snap.recording || mcap_recording.active; }
 
   // ---- requests from the panels, keys and mouse, carried out in order and cleared by the app -----
   std::vector<UiRequest> requests;
@@ -109,6 +133,7 @@ struct UiModel {
   char replay_text[512] = "";
   int replay_model_choice = 0;  // 0 = as the recording says, then model_names() order
   char record_text[512] = "";
+  int record_format = 0;  // RecordFormat (ui/view/file_names.h)
   char sector_text[64] = "";
   std::string sector_error;  // why the typed sector was refused
   double record_started_s = 0.0;

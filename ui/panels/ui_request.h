@@ -54,12 +54,21 @@ struct SetRangingKhz {
   std::uint16_t khz = 0;
 };
 struct RefreshHealth {};
+// Either file, or both at once: every byte as .ydrec (the session writes it), and the live topics
+// as MCAP (written beside the I/O thread).
 struct StartRecording {
-  std::string path;
+  std::string path;       // .ydrec; empty: none
+  std::string mcap_path;  // .mcap; empty: none
 };
-struct StopRecording {};
+struct StopRecording {};  // whichever run
 struct SetDistanceScale {
   std::optional<double> mm_per_count;  // empty: back to the model's own
+};
+
+// ---- out to Foxglove ----------------------------------------------------------------------------
+// Serve the current source over the Foxglove WebSocket protocol, or stop serving it.
+struct SetShare {
+  bool on = false;
 };
 
 // ---- the view and files -----------------------------------------------------------------------
@@ -68,6 +77,7 @@ struct SaveScreenshot {};
 struct ExportLapCsv {
   bool every_shown_lap = false;  // else the newest lap on screen
 };
+struct ExportLapMcap {};  // every shown lap, as /scan and /points
 struct WatchSector {
   std::string spec;  // "260:280 [1500:2500]"
 };
@@ -77,6 +87,7 @@ struct UnwatchSector {
 
 using UiRequest = std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim,
                                ReplugSim, SetScanHz, SetRangingKhz, RefreshHealth, StartRecording, StopRecording,
-                               SetDistanceScale, ResetView, SaveScreenshot, ExportLapCsv, WatchSector, UnwatchSector>;
+                               SetDistanceScale, SetShare, ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap,
+                               WatchSector, UnwatchSector>;
 
 }  // namespace ydscope::ui

@@ -83,14 +83,21 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   }
   if (!v.live && !v.dim && !s.message.empty()) add_line(s.message, IM_COL32(255, 200, 120, 255), true);
   if (m.paused_view) add_line("frozen (P to resume)", IM_COL32(255, 255, 255, 220), true);
+  // Share was asked for and is not on: said until it starts (W tries again).
+  if (!m.share.error.empty()) add_line(m.share.error, severity_colour(Severity::Warning), true);
 
-  // Badges in the top-right corner of the view, right to left: REC, then health.
+  // Badges in the top-right corner of the view, right to left: REC, SHARED, then health.
   float right = view_left + view_width - 16.0f;
   const float top = 14.0f;
-  if (s.recording) {
+  if (m.recording()) {
     char rec[48];
     std::snprintf(rec, sizeof rec, "\xE2\x80\xA2 REC  %.0f s", std::max(0.0, m.now_s - m.record_started_s));
     right -= badge(draw, {right, top}, rec, IM_COL32(200, 30, 40, 235), IM_COL32(255, 255, 255, 255)) + 10.0f;
+  }
+  if (m.share.on) {
+    char shared[48];
+    std::snprintf(shared, sizeof shared, "SHARED  %zu client%s", m.share.clients, m.share.clients == 1 ? "" : "s");
+    right -= badge(draw, {right, top}, shared, IM_COL32(30, 90, 170, 235), IM_COL32(255, 255, 255, 255)) + 10.0f;
   }
   if (!m.alerts.empty()) {
     const bool error = m.alerts.front().severity == Severity::Error;
@@ -102,7 +109,7 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   if (!m.banner.empty() && banner_alpha > 0.0f) {
     const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str(), nullptr, false, wrap - 28.0f);
     const float x = view_left + std::max(16.0f, (view_width - size.x) * 0.5f);
-    const float by = 44.0f + (s.recording || !m.alerts.empty() ? line : 0.0f);
+    const float by = 44.0f + (m.recording() || m.share.on || !m.alerts.empty() ? line : 0.0f);
     const auto alpha = [banner_alpha](int a) { return static_cast<ImU32>(static_cast<float>(a) * banner_alpha); };
     draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, alpha(215)), 8.0f);
     draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x, by}, IM_COL32(210, 230, 255, alpha(255)), m.banner.c_str(),

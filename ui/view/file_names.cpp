@@ -28,4 +28,22 @@ std::string timestamped_name(const char* extension, const std::filesystem::path&
   return timestamped_name_at(std::time(nullptr), extension, where);
 }
 
+RecordingPaths recording_paths(RecordFormat format, const std::string& typed, const std::filesystem::path& dir) {
+  const bool ydrec = format != RecordFormat::Mcap, mcap = format != RecordFormat::Ydrec;
+  RecordingPaths paths;
+  if (typed.empty()) {
+    if (ydrec) paths.ydrec = timestamped_name("ydrec", dir);
+    if (mcap) paths.mcap = timestamped_name("mcap", dir);
+    return paths;
+  }
+  if (!(ydrec && mcap)) {
+    (ydrec ? paths.ydrec : paths.mcap) = typed;
+    return paths;
+  }
+  std::filesystem::path name(typed);
+  paths.ydrec = name.extension() == ".mcap" ? std::filesystem::path(name).replace_extension(".ydrec").string() : typed;
+  paths.mcap = name.replace_extension(".mcap").string();
+  return paths;
+}
+
 }  // namespace ydscope::ui

@@ -13,4 +13,15 @@ std::string timestamped_name(const char* extension, const std::filesystem::path&
 // The same for a given time, for tests.
 std::string timestamped_name_at(std::time_t when, const char* extension, const std::filesystem::path& dir);
 
+// What the Record tab writes: every byte as .ydrec, the live topics as MCAP, or both at once.
+enum class RecordFormat { Ydrec, Mcap, Both };
+struct RecordingPaths {
+  std::string ydrec;  // empty: not written
+  std::string mcap;
+};
+// Where a recording in `format` goes. `typed` (the Record tab's field) names the file; with both,
+// the MCAP is the same name with .mcap for its extension (and the .ydrec keeps its own, or takes
+// .ydrec when .mcap was typed). Empty `typed`: timestamped names in `dir`.
+RecordingPaths recording_paths(RecordFormat format, const std::string& typed, const std::filesystem::path& dir = {});
+
 }  // namespace ydscope::ui

@@ -1,11 +1,9 @@
-#include "app/cli/session_parameters.h"
+#include "core/bridge/session_parameters.h"
 
 #include <cmath>
 
-namespace ydscope::cli {
+namespace ydscope::foxglove {
 namespace {
-
-using foxglove::Parameter;
 
 std::optional<double> number_of(const Parameter& p) {
   if (const double* d = std::get_if<double>(&p.value)) return *d;
@@ -75,4 +73,4 @@ void SessionParameters::set(const Parameter& parameter, SetDone done) {
                "'; this server has scan_hz, ranging_khz, power_down_protection, filter_specular and filter_ambient");
 }
 
-}  // namespace ydscope::cli
+}  // namespace ydscope::foxglove

@@ -1,0 +1,118 @@
+// App, getting the lidar out of the window while it runs: Share serves the current source to
+// Foxglove (the server and topics `ydscope-cli serve` uses, core/bridge/session_share.h), and the
+// Record tab writes .ydrec, MCAP or both. Both follow the source: a recording is of one source and
+// ends when it changes; the share keeps its clients and serves the new source once it is up.
+#include <cstdio>
+
+#include "app/gui/app.h"
+#include "ui/panels/panels.h"
+#include "ui/view/file_names.h"
+
+namespace ydscope::gui {
+
+void App::start_share() {
+  ui::UiModel& m = model_;
+  if (share_) return;
+  ShareOptions options;
+  options.server.port = options_.share_port;
+  options.server.port_option = "--share-port";
+  options.server.name = "ydscope" + (m.source_text.empty() ? std::string() : " on " + m.source_text);
+  std::string error;
+  share_ = SessionShare::start(session_, std::move(options), error);
+  if (!share_) {
+    // One sentence where the user looks; the toggle stays off.
+    m.share = {};
+    m.share.error = "Share did not start: " + error + ".";
+    m.status_message = m.share.error;
+    m.show_source_tab = static_cast<int>(ui::SourceTab::Share);
+    std::fprintf(stderr, "ydscope: %s\n", m.share.error.c_str());
+    return;
+  }
+  m.share.on = true;
+  m.share.error.clear();
+  m.share.address = share_->address();
+  m.share.clients = 0;
+  m.show_source_tab = static_cast<int>(ui::SourceTab::Share);  // where the address is
+  m.status_message = "sharing on " + m.share.address + " (Foxglove: Open connection > Foxglove WebSocket)";
+  // Scripts and tests read where to connect from here, as from `ydscope-cli serve`.
+  std::printf("sharing %s\n", m.share.address.c_str());
+  std::fflush(stdout);
+}
+
+void App::stop_share() {
+  if (!share_) return;
+  share_->stop();
+  share_.reset();
+  model_.share = {};
+  model_.status_message = "sharing stopped";
+}
+
+void App::start_recording(const ui::StartRecording& request) {
+  ui::UiModel& m = model_;
+  using ui::CommandControl;
+  if (!request.path.empty()) session_.start_recording(request.path, ui::track_command(m, CommandControl::Recording));
+  if (request.mcap_path.empty()) return;
+  LiveTopicsOptions options;
+  options.mcap_path = request.mcap_path;
+  std::string error;
+  mcap_recording_ = LiveTopics::start(session_, std::move(options), error);
+  if (!mcap_recording_) {
+    const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
+    m.feedback->finished(CommandControl::Recording, ticket, false, error);
+    return;
+  }
+  m.mcap_recording = {true, request.mcap_path, 0, 0};
+  if (request.path.empty()) {  // else the .ydrec's outcome is the one shown
+    const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
+    m.feedback->finished(CommandControl::Recording, ticket, true, "recording ROS 2 topics to " + request.mcap_path);
+  }
+}
+
+void App::stop_recording(const std::string& why) {
+  ui::UiModel& m = model_;
+  using ui::CommandControl;
+  if (m.snap.recording) session_.stop_recording(ui::track_command(m, CommandControl::Recording));
+  if (!mcap_recording_) return;
+  const bool written = mcap_recording_->stop();
+  const std::string said = written ? mcap_recording_->file_summary() + why : mcap_recording_->error();
+  mcap_recording_.reset();
+  m.mcap_recording = {};
+  const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
+  m.feedback->finished(CommandControl::Recording, ticket, written, said);
+  m.status_message = said;
+}
+
+void App::leave_source() {
+  if (model_.recording()) stop_recording(" (the source changed)");
+  if (share_) share_->topics().detach();
+}
+
+void App::follow_share_and_recording() {
+  ui::UiModel& m = model_;
+  if (record_from_start_ && link_state_connected(m.snap.state)) {
+    // --record: as the Record tab's Start with an empty name, once there is something to record.
+    record_from_start_ = false;
+    const auto format = options_.record == "mcap" ? ui::RecordFormat::Mcap
+                        : options_.record == "both" ? ui::RecordFormat::Both : ui::RecordFormat::Ydrec;
+    m.record_format = static_cast<int>(format);
+    const ui::RecordingPaths paths = ui::recording_paths(format, "");
+    m.record_started_s = m.now_s;
+    m.show_source_tab = static_cast<int>(ui::SourceTab::Record);
+    start_recording({paths.ydrec, paths.mcap});
+  }
+  if (mcap_recording_) {
+    m.mcap_recording.bytes = mcap_recording_->bytes_written();
+    m.mcap_recording.laps = mcap_recording_->laps();
+    if (!mcap_recording_->error().empty()) stop_recording();
+  }
+  if (!share_) return;
+  // The new source is served once it scans, so its model and times start the new topics.
+  if (!share_->topics().attached() && has_source_ && m.snap.state == LinkState::Scanning) share_->topics().attach();
+  const auto now = std::chrono::steady_clock::now();
+  if (now - share_polled_ >= std::chrono::milliseconds(500)) {
+    share_polled_ = now;
+    m.share.clients = share_->clients().size();
+  }
+}
+
+}  // namespace ydscope::gui
