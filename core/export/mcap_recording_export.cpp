@@ -24,19 +24,19 @@ const McapMetadataMap& ros2_channel_metadata() {
   return metadata;
 }
 
-std::unique_ptr<McapRecordingExport> McapRecordingExport::create(const std::string& path, McapExportOptions options,
+std::unique_ptr<McapRecordingExport> McapRecordingExport::create(const std::string& path, const McapExportOptions& options,
                                                                  std::string& error) {
   auto file = McapFileSink::create(path, error);
   if (!file) return nullptr;
-  return std::unique_ptr<McapRecordingExport>(new McapRecordingExport(std::move(file), std::move(options)));
+  return std::unique_ptr<McapRecordingExport>(new McapRecordingExport(std::move(file), options));
 }
 
-McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, McapExportOptions options)
-    : McapRecordingExport(*file, std::move(options)) {
+McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options)
+    : McapRecordingExport(*file, options) {
   file_ = std::move(file);
 }
 
-McapRecordingExport::McapRecordingExport(McapSink& sink, McapExportOptions options)
+McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions& options)
     : writer_(sink, options.mcap), encoder_(options.ros), frame_(options.ros.frame) {
   std::uint16_t schema_ids[kRosTopicCount] = {};
   for (const RosTopicInfo& topic : ros_topics()) {

@@ -28,10 +28,10 @@ inline constexpr const char* kMcapRecordingMetadataName = "ydscope.recording";
 class McapRecordingExport {
  public:
   // Creates `path`; null plus one sentence in `error` when it cannot be created.
-  static std::unique_ptr<McapRecordingExport> create(const std::string& path, McapExportOptions options,
+  static std::unique_ptr<McapRecordingExport> create(const std::string& path, const McapExportOptions& options,
                                                      std::string& error);
   // Writes into `sink`, which must outlive the export (tests and fuzzing use a memory sink).
-  McapRecordingExport(McapSink& sink, McapExportOptions options);
+  McapRecordingExport(McapSink& sink, const McapExportOptions& options);
 
   // One record as a .ydrec holds it: link bytes (either direction) or a metadata payload
   // (key=value text). Records of unknown types are ignored, as readers of .ydrec do.
@@ -56,7 +56,7 @@ class McapRecordingExport {
   void set_observer(Observer observer) { observer_ = std::move(observer); }
 
  private:
-  McapRecordingExport(std::unique_ptr<McapFileSink> file, McapExportOptions options);
+  McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options);
   void emit(RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
 
   std::unique_ptr<McapFileSink> file_;  // when the export owns its file
