@@ -1,0 +1,93 @@
+#include "core/frame/pose.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace ydscope {
+namespace {
+
+std::optional<double> parse_number(std::string_view text) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    return std::nullopt;
+  return value;
+}
+
+std::string shortest(double value) {
+  std::array<char, 32> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return ec == std::errc() ? std::string(buffer.data(), end) : std::string("0");
+}
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+}  // namespace
+
+CommonPoint Pose::to_common(const LapPoint& point) const {
+  const double a = radians(point.angle_deg);
+  const double r = point.range_mm;
+  // In the lidar's own frame; the upside-down mount mirrors x (a -> 360 - a).
+  const double lx = upside_down ? -r * std::sin(a) : r * std::sin(a);
+  const double ly = r * std::cos(a);
+  const double c = std::cos(radians(yaw_deg));
+  const double s = std::sin(radians(yaw_deg));
+  return {static_cast<float>(lx * c - ly * s + x_m * 1000.0), static_cast<float>(lx * s + ly * c + y_m * 1000.0)};
+}
+
+void Pose::to_common(const Lap& lap, std::vector<CommonPoint>& out) const {
+  out.resize(lap.points.size());
+  for (std::size_t i = 0; i < lap.points.size(); ++i) out[i] = to_common(lap.points[i]);
+}
+
+double Pose::common_angle_deg(double device_angle_deg) const {
+  // Clockwise angles: the counter-clockwise yaw subtracts.
+  const double mirrored = upside_down ? -device_angle_deg : device_angle_deg;
+  const double angle = std::fmod(mirrored - yaw_deg, 360.0);
+  return angle < 0 ? angle + 360.0 : angle;
+}
+
+std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
+  const std::string quoted = "'" + std::string(text) + "'";
+  std::vector<std::string_view> fields;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    fields.push_back(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (fields.size() < 3 || fields.size() > 4) {
+    error = "a pose is x,y,yaw or x,y,yaw,flip (metres, metres, degrees), such as 0.2,-0.15,90, not " + quoted;
+    return std::nullopt;
+  }
+  const auto x = parse_number(fields[0]);
+  const auto y = parse_number(fields[1]);
+  const auto yaw = parse_number(fields[2]);
+  if (!x || !y || !yaw) {
+    error = "a pose's x, y and yaw are numbers (metres, metres, degrees), such as 0.2,-0.15,90, not " + quoted;
+    return std::nullopt;
+  }
+  if (std::abs(*x) > kMaxPoseOffsetM || std::abs(*y) > kMaxPoseOffsetM) {
+    error = "a pose's x and y are metres, within " + shortest(kMaxPoseOffsetM) + " of the origin, not " + quoted +
+            " (millimetres given as metres?)";
+    return std::nullopt;
+  }
+  if (std::abs(*yaw) > 360.0) {
+    error = "a pose's yaw is degrees from -360 to 360, not " + quoted;
+    return std::nullopt;
+  }
+  if (fields.size() == 4 && fields[3] != "flip") {
+    error = "the fourth field of a pose can only be flip (mounted upside down), not " + quoted;
+    return std::nullopt;
+  }
+  return Pose{*x, *y, *yaw, fields.size() == 4};
+}
+
+std::string format_pose(const Pose& pose) {
+  return shortest(pose.x_m) + "," + shortest(pose.y_m) + "," + shortest(pose.yaw_deg) + (pose.upside_down ? ",flip" : "");
+}
+
+}  // namespace ydscope
