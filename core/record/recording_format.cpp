@@ -25,10 +25,10 @@ bool is_recording(std::span<const std::uint8_t> first_bytes) {
          std::equal(kRecordingMagic.begin(), kRecordingMagic.end(), first_bytes.begin());
 }
 
-std::array<std::uint8_t, kFileHeaderSize> encode_file_header() {
+std::array<std::uint8_t, kFileHeaderSize> encode_file_header(std::uint16_t version) {
   std::array<std::uint8_t, kFileHeaderSize> bytes{};
   std::copy(kRecordingMagic.begin(), kRecordingMagic.end(), bytes.begin());
-  write_u16_le(bytes.data() + 12, kRecordingVersion);
+  write_u16_le(bytes.data() + 12, version);
   write_u16_le(bytes.data() + 14, static_cast<std::uint16_t>(kFileHeaderSize));
   return bytes;
 }
@@ -45,6 +45,7 @@ std::array<std::uint8_t, kRecordHeaderSize> encode_record_header(const RecordHea
   std::array<std::uint8_t, kRecordHeaderSize> bytes{};
   bytes[0] = header.type;
   bytes[1] = header.flags;
+  write_u16_le(bytes.data() + 2, header.source);
   write_u32_le(bytes.data() + 4, header.length);
   write_i64_le(bytes.data() + 8, header.t_ns);
   return bytes;
@@ -54,6 +55,7 @@ RecordHeader parse_record_header(std::span<const std::uint8_t, kRecordHeaderSize
   RecordHeader header;
   header.type = bytes[0];
   header.flags = bytes[1];
+  header.source = read_u16_le(bytes.data() + 2);
   header.length = read_u32_le(bytes.data() + 4);
   header.t_ns = read_i64_le(bytes.data() + 8);
   return header;

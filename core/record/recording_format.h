@@ -3,18 +3,19 @@
 // its receive/send time, plus the session's metadata. Append-only, so a program killed mid-way
 // leaves a readable file; plain C++ (no Boost) so the decoder CLI and tests can read it.
 //
-// Layout (all integers little-endian; format version 1):
+// Layout (all integers little-endian; format versions 1 and 2, which differ only where said):
 //
 //   File header, 16 bytes
 //     0  12  magic "YDSCOPE-REC" followed by one 0x00 byte
-//    12   2  u16 format version (1)
+//    12   2  u16 format version: 1 one source, 2 several (see "Sources" below)
 //    14   2  u16 header size in bytes (16); readers skip to this offset, so later versions may
 //            append header fields without breaking version-1 readers
 //
 //   Then records, back to back, until the end of the file. Record header, 16 bytes:
 //     0   1  u8  type: 1 device->host bytes, 2 host->device bytes, 3 metadata
 //     1   1  u8  flags, 0 (readers ignore them)
-//     2   2  u16 reserved, 0
+//     2   2  u16 version 1: reserved, 0 (readers ignore it); version 2: the source id, below
+//            kMaxRecordingSources (a larger one is corruption)
 //     4   4  u32 payload length in bytes, at most 1 MiB (kMaxRecordPayload)
 //     8   8  i64 time in nanoseconds since the recording started, from a monotonic clock
 //            (steady clock: never jumps with wall-clock changes); non-decreasing in a file.
@@ -39,7 +40,18 @@
 //     hardware         device-info hardware version, decimal
 //     serial           device-info serial number as text
 //     software         the program that wrote the file, "ydscope 0.1.0"
+//   Keys of version 2, in each source's metadata (see below; optional as well):
+//     name             what the user called the source: "front", "g1" (--name)
+//     pose             where it sits in the common frame, "x,y,yaw[,flip]" (core/frame/pose.h)
 //   Unknown keys are kept and shown, never an error.
+//
+//   Sources (version 2): one file holds several lidars recorded at once, each a source with its
+//   own id (0, 1, ...) in every record's header and its own metadata: a metadata record says
+//   what the source of its header is, and later ones of that source add or replace keys. The
+//   file starts with one metadata record per source, in id order, all at t=0, so a reader knows
+//   every source before the first link byte. Times are one timeline for the whole file (every
+//   source's records in time order). Writers write version 1 when there is one source, so a
+//   single lidar's file reads as it always did; version 2 only when there are several.
 //
 //   Readers skip records of unknown types (their length says how far), so new types can be
 //   added without a version change. A length above kMaxRecordPayload or a type of 0 means the
@@ -59,7 +71,11 @@ namespace ydscope {
 
 inline constexpr std::array<std::uint8_t, 12> kRecordingMagic = {'Y', 'D', 'S', 'C', 'O', 'P',
                                                                  'E', '-', 'R', 'E', 'C', 0};
+// The version of one source's file, and of several sources' (the newest; readers read both).
 inline constexpr std::uint16_t kRecordingVersion = 1;
+inline constexpr std::uint16_t kMultiSourceVersion = 2;
+// Version 2's source ids run from 0 up to this, exclusive.
+inline constexpr std::uint16_t kMaxRecordingSources = 64;
 inline constexpr std::size_t kFileHeaderSize = 16;
 // Room a later version-1 writer may take for more header fields; a larger size is damage.
 inline constexpr std::size_t kMaxFileHeaderSize = 4096;
@@ -86,12 +102,13 @@ struct RecordHeader {
   std::uint8_t flags = 0;
   std::uint32_t length = 0;
   std::int64_t t_ns = 0;
+  std::uint16_t source = 0;  // version 2 (bytes 2-3); the reserved 0 of version 1
 };
 
 // True when `first_bytes` starts with the magic (needs at least its 12 bytes).
 bool is_recording(std::span<const std::uint8_t> first_bytes);
 
-std::array<std::uint8_t, kFileHeaderSize> encode_file_header();
+std::array<std::uint8_t, kFileHeaderSize> encode_file_header(std::uint16_t version = kRecordingVersion);
 // The version and header size of a file header as written; empty when the magic does not match.
 // Readers check both (see kMaxFileHeaderSize).
 struct FileHeader {

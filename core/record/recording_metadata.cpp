@@ -81,6 +81,8 @@ std::string RecordingMetadata::encode() const {
   if (hardware) line("hardware", std::to_string(*hardware));
   if (serial) line("serial", *serial);
   if (software) line("software", *software);
+  if (name) line("name", *name);
+  if (pose) line("pose", format_pose(*pose));
   for (const auto& [key, value] : extra) line(key, value);
   return out;
 }
@@ -135,6 +137,12 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
       metadata.serial = value;
     } else if (key == "software") {
       metadata.software = value;
+    } else if (key == "name") {
+      metadata.name = value;
+    } else if (key == "pose") {
+      std::string why;
+      if (auto parsed = parse_pose(value, why)) metadata.pose = parsed;
+      else warn("metadata pose ignored: " + why);
     } else {
       metadata.extra[key] = value;
     }
@@ -153,6 +161,8 @@ void RecordingMetadata::merge(const RecordingMetadata& later) {
   take(hardware, later.hardware);
   take(serial, later.serial);
   take(software, later.software);
+  take(name, later.name);
+  take(pose, later.pose);
   for (const auto& [key, value] : later.extra) extra[key] = value;
 }
 

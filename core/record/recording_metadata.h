@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/frame/pose.h"
+
 namespace ydscope {
 
 struct RecordingMetadata {
@@ -23,6 +25,9 @@ struct RecordingMetadata {
   std::optional<std::uint32_t> hardware;
   std::optional<std::string> serial;
   std::optional<std::string> software;
+  // Version 2, per source: what the user called it and where it sits in the common frame.
+  std::optional<std::string> name;
+  std::optional<Pose> pose;
   std::map<std::string, std::string> extra;  // keys this version does not know, kept verbatim
 
   // key=value lines of the fields that are set (the payload of a metadata record).

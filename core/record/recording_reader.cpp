@@ -42,10 +42,11 @@ std::string header_problem(const std::string& path, const std::array<std::uint8_
            "-byte file header: the recording was cut off before anything was recorded";
   const auto header = parse_file_header(head);
   kind = RecordingOpenFailure::Unsupported;
-  const std::string reads = "this ydscope reads version " + std::to_string(kRecordingVersion);
+  const std::string reads = "this ydscope reads versions " + std::to_string(kRecordingVersion) + " and " +
+                            std::to_string(kMultiSourceVersion);
   if (header->version == 0)
     return path + " says it is a version 0 recording, which does not exist (" + reads + "): the file is damaged";
-  if (header->version > kRecordingVersion)
+  if (header->version > kMultiSourceVersion)
     return path + " is a version " + std::to_string(header->version) + " recording; " + reads + ", update ydscope";
   const bool past_end = header->header_size > file_size;
   if (header->header_size < kFileHeaderSize || header->header_size > kMaxFileHeaderSize || past_end)
@@ -89,10 +90,11 @@ std::unique_ptr<RecordingReader> RecordingReader::open(const std::string& path, 
   reader->version_ = header->version;
   reader->first_record_offset_ = header->header_size;
   reader->rewind();
-  // Merge the leading metadata record now so metadata() is useful before iterating; then start
-  // over so callers still see every record, metadata included.
+  // Merge the leading metadata records now (one, or one per source in version 2) so metadata()
+  // is useful before iterating; then start over so callers still see every record.
   RecordView first;
-  reader->next(first);
+  while (reader->next(first) && first.type == RecordType::Metadata && reader->version_ >= kMultiSourceVersion) {
+  }
   reader->rewind();
   return reader;
 }
@@ -158,6 +160,13 @@ bool RecordingReader::next(RecordView& out) {
                std::to_string(header.length) + ")" + intact;
       return false;
     }
+    // Version 1 leaves the field reserved: whatever it holds, there is one source.
+    const std::uint16_t source = version_ >= kMultiSourceVersion ? header.source : 0;
+    if (source >= kMaxRecordingSources) {
+      error_ = path_ + " is corrupt" + at + " (source " + std::to_string(source) + "; at most " +
+               std::to_string(kMaxRecordingSources) + " sources)" + intact;
+      return false;
+    }
     payload_.resize(header.length);
     if (std::fread(payload_.data(), 1, header.length, file_) != header.length) {
       warning_ = path_ + " ends inside a record" + at + " (the recorder was probably stopped abruptly)" + intact;
@@ -171,11 +180,13 @@ bool RecordingReader::next(RecordView& out) {
     out.t_ns = checked_time(header.t_ns, record_offset);
     out.payload = payload_;
     out.file_offset = record_offset;
+    out.source = source;
+    if (source >= sources_.size()) sources_.resize(source + 1u);
     // Each metadata record is merged once: after a rewind, an early record must not undo a
     // later one, nor repeat its warnings.
     if (out.type == RecordType::Metadata && record_offset >= metadata_merged_to_) {
       const std::string_view text(reinterpret_cast<const char*>(payload_.data()), payload_.size());
-      metadata_.merge(RecordingMetadata::parse(text, &metadata_warnings_));
+      sources_[source].merge(RecordingMetadata::parse(text, &metadata_warnings_));
       metadata_merged_to_ = offset_;
     }
     return true;
@@ -205,13 +216,25 @@ std::optional<RecordingSummary> summarize_recording(const std::string& path, std
   auto reader = RecordingReader::open(path, error, failure);
   if (!reader) return std::nullopt;
   RecordingSummary summary;
+  summary.version = reader->version();
   RecordView record;
   while (reader->next(record)) {
     ++summary.records;
     summary.duration_ns = record.t_ns;
-    if (record.type == RecordType::DeviceToHost) summary.device_bytes += record.payload.size();
-    if (record.type == RecordType::HostToDevice) summary.host_bytes += record.payload.size();
+    if (record.source >= summary.sources.size()) summary.sources.resize(record.source + 1u);
+    SourceSummary& source = summary.sources[record.source];
+    if (record.type == RecordType::DeviceToHost) {
+      summary.device_bytes += record.payload.size();
+      source.device_bytes += record.payload.size();
+    }
+    if (record.type == RecordType::HostToDevice) {
+      summary.host_bytes += record.payload.size();
+      source.host_bytes += record.payload.size();
+    }
   }
+  summary.sources.resize(std::max(summary.sources.size(), reader->source_count()));
+  for (std::size_t i = 0; i < summary.sources.size(); ++i)
+    summary.sources[i].metadata = i < reader->source_count() ? reader->source_metadata(i) : RecordingMetadata{};
   summary.metadata = reader->metadata();
   summary.warning = reader->warning();
   summary.error = reader->error();

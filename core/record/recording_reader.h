@@ -21,6 +21,7 @@ struct RecordView {
   std::int64_t t_ns = 0;                  // since the recording started; checked (see time_warning())
   std::span<const std::uint8_t> payload;  // valid until the next call to next() or rewind()
   std::uint64_t file_offset = 0;          // of the record header, for messages
+  std::uint16_t source = 0;               // version 2: whose record; always 0 in version 1
 };
 
 // Why a recording did not open. The CLI exits 2 (usage) for Unsupported: the file is a
@@ -49,8 +50,13 @@ class RecordingReader {
   // Back to the first record (metadata() keeps what was merged so far).
   void rewind();
 
-  // Metadata merged from every metadata record read so far (the first record is read by open()).
-  const RecordingMetadata& metadata() const { return metadata_; }
+  // Metadata merged from every metadata record read so far (open() reads the leading ones): of
+  // source 0, which is the only one of a version-1 file.
+  const RecordingMetadata& metadata() const { return sources_.front(); }
+  // Version 2: every source's, by id (open() has read each one's first metadata record). A
+  // version-1 file has one source.
+  std::size_t source_count() const { return sources_.size(); }
+  const RecordingMetadata& source_metadata(std::size_t source) const { return sources_.at(source); }
   // Damaged metadata fields that were skipped.
   const std::vector<std::string>& metadata_warnings() const { return metadata_warnings_; }
   bool truncated() const { return !warning_.empty(); }
@@ -82,7 +88,7 @@ class RecordingReader {
   std::uint64_t offset_ = 0;
   std::uint64_t records_read_ = 0;
   std::vector<std::uint8_t> payload_;
-  RecordingMetadata metadata_;
+  std::vector<RecordingMetadata> sources_{1};
   std::uint64_t metadata_merged_to_ = 0;  // file offset up to which metadata records are merged
   std::vector<std::string> metadata_warnings_;
   std::string warning_;
@@ -98,9 +104,18 @@ class RecordingReader {
 // True when the file at `path` starts with the recording magic (false if it cannot be read).
 bool is_recording_file(const std::string& path);
 
+// One source's part of a recording.
+struct SourceSummary {
+  RecordingMetadata metadata;
+  std::uint64_t device_bytes = 0;
+  std::uint64_t host_bytes = 0;
+};
+
 // Totals of a whole recording, read in one pass (metadata fully merged).
 struct RecordingSummary {
-  RecordingMetadata metadata;
+  RecordingMetadata metadata;  // source 0's
+  std::vector<SourceSummary> sources;  // by id; one for a version-1 file
+  std::uint16_t version = 0;
   std::uint64_t records = 0;
   std::uint64_t device_bytes = 0;
   std::uint64_t host_bytes = 0;

@@ -43,59 +43,84 @@ std::string recording_output_problem(const std::string& path) {
   return {};
 }
 
-RecordingWriter::RecordingWriter(std::FILE* file, std::string path, std::int64_t start_ns)
-    : file_(file), path_(std::move(path)), start_ns_(start_ns) {}
+RecordingWriter::RecordingWriter(std::FILE* file, std::string path, std::int64_t start_ns, std::size_t sources)
+    : file_(file), path_(std::move(path)), start_ns_(start_ns), sources_(sources) {}
 
 RecordingWriter::~RecordingWriter() { close(); }
 
 std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path, RecordingMetadata metadata,
                                                          std::int64_t start_ns, std::string& error) {
+  std::vector<RecordingMetadata> sources;
+  sources.push_back(std::move(metadata));
+  return create_sources(path, std::move(sources), start_ns, error);
+}
+
+std::unique_ptr<RecordingWriter> RecordingWriter::create_sources(const std::string& path, std::vector<RecordingMetadata> sources,
+                                                         std::int64_t start_ns, std::string& error) {
+  if (sources.empty() || sources.size() > kMaxRecordingSources) {
+    error = "cannot record " + std::to_string(sources.size()) + " sources to " + path + ": from 1 to " +
+            std::to_string(kMaxRecordingSources) + " fit in one recording";
+    return nullptr;
+  }
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) {
     error = write_error_sentence(path, "create recording", errno);
     return nullptr;
   }
   std::setvbuf(file, nullptr, _IOFBF, kBufferSize);
-  std::unique_ptr<RecordingWriter> writer(new RecordingWriter(file, path, start_ns));
-  const auto header = encode_file_header();
+  std::unique_ptr<RecordingWriter> writer(new RecordingWriter(file, path, start_ns, sources.size()));
+  const auto header = encode_file_header(sources.size() == 1 ? kRecordingVersion : kMultiSourceVersion);
   if (std::fwrite(header.data(), 1, header.size(), file) != header.size()) {
     error = write_error_sentence(path, "write recording", errno);
     return nullptr;
   }
   writer->file_size_ = header.size();
-  if (!metadata.start_wall_time) metadata.start_wall_time = iso8601_utc_now();
-  if (!writer->update_metadata(metadata, start_ns)) {
-    error = writer->error();
-    return nullptr;
+  const std::string now = iso8601_utc_now();  // one t=0 for every source
+  for (std::size_t id = 0; id < sources.size(); ++id) {
+    if (!sources[id].start_wall_time) sources[id].start_wall_time = now;
+    if (!writer->update_metadata(sources[id], start_ns, static_cast<std::uint16_t>(id))) {
+      error = writer->error();
+      return nullptr;
+    }
   }
   return writer;
 }
 
-bool RecordingWriter::append(Direction direction, std::span<const std::uint8_t> bytes, std::int64_t t_ns) {
+bool RecordingWriter::append(Direction direction, std::span<const std::uint8_t> bytes, std::int64_t t_ns,
+                             std::uint16_t source) {
   if (bytes.empty()) return !failed() && file_ != nullptr;
-  if (!write_record(static_cast<RecordType>(direction), bytes, t_ns)) return false;
+  if (!write_record(static_cast<RecordType>(direction), bytes, t_ns, source)) return false;
   (direction == Direction::DeviceToHost ? device_bytes_ : host_bytes_) += bytes.size();
   if (last_t_ns_ - last_flush_t_ns_ >= kFlushInterval) return flush();
   return true;
 }
 
-bool RecordingWriter::update_metadata(const RecordingMetadata& changes, std::int64_t t_ns) {
+bool RecordingWriter::update_metadata(const RecordingMetadata& changes, std::int64_t t_ns, std::uint16_t source) {
   const std::string text = changes.encode();
   const std::span<const std::uint8_t> payload(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
-  if (!write_record(RecordType::Metadata, payload, t_ns)) return false;
-  metadata_.merge(changes);
+  if (!write_record(RecordType::Metadata, payload, t_ns, source)) return false;
+  sources_[source].merge(changes);
   return flush();
 }
 
-bool RecordingWriter::write_record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns) {
-  if (!file_ || failed()) return false;
+bool RecordingWriter::known_source(std::uint16_t source) {
+  if (source < sources_.size()) return true;
+  error_ = "cannot write source " + std::to_string(source) + " to " + path_ + ", which records " +
+           std::to_string(sources_.size()) + (sources_.size() == 1 ? " source" : " sources");
+  return false;
+}
+
+bool RecordingWriter::write_record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns,
+                                   std::uint16_t source) {
+  if (!file_ || failed() || !known_source(source)) return false;
   // A read larger than the format allows is split, keeping every byte.
   while (payload.size() > kMaxRecordPayload) {
-    if (!write_record(type, payload.first(kMaxRecordPayload), t_ns)) return false;
+    if (!write_record(type, payload.first(kMaxRecordPayload), t_ns, source)) return false;
     payload = payload.subspan(kMaxRecordPayload);
   }
   RecordHeader header;
   header.type = static_cast<std::uint8_t>(type);
+  header.source = source;
   header.length = static_cast<std::uint32_t>(payload.size());
   header.t_ns = std::max(last_t_ns_, t_ns - start_ns_);
   const auto head = encode_record_header(header);

@@ -12,6 +12,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/record/recording_format.h"
 #include "core/record/recording_metadata.h"
@@ -35,15 +36,21 @@ class RecordingWriter {
   // check recording_output_problem() first.
   static std::unique_ptr<RecordingWriter> create(const std::string& path, RecordingMetadata metadata,
                                                  std::int64_t start_ns, std::string& error);
+  // Several sources recorded at once, each with its metadata (name, pose, ...), by id: a
+  // version-2 file, its metadata records first, one per source. With one source this is the
+  // create() above: version 1, as a single lidar's file always was.
+  static std::unique_ptr<RecordingWriter> create_sources(const std::string& path, std::vector<RecordingMetadata> sources,
+                                                 std::int64_t start_ns, std::string& error);
   ~RecordingWriter();  // close()
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;
 
   // One record of link bytes seen at `t_ns` (same clock as start_ns; earlier times are clamped
   // so the file's times never go backwards). Empty spans are not recorded.
-  bool append(Direction direction, std::span<const std::uint8_t> bytes, std::int64_t t_ns);
+  // `source`: whose bytes, below source_count().
+  bool append(Direction direction, std::span<const std::uint8_t> bytes, std::int64_t t_ns, std::uint16_t source = 0);
   // A metadata record with the fields that changed (e.g. device info); flushed at once.
-  bool update_metadata(const RecordingMetadata& changes, std::int64_t t_ns);
+  bool update_metadata(const RecordingMetadata& changes, std::int64_t t_ns, std::uint16_t source = 0);
   // Hands buffered records to the kernel (a periodic timer may call it while the link is quiet).
   bool flush();
   // Flushes and closes the file; later calls do nothing. Returns false if anything failed.
@@ -52,8 +59,10 @@ class RecordingWriter {
   bool failed() const { return !error_.empty(); }
   const std::string& error() const { return error_; }
   const std::string& path() const { return path_; }
-  // Everything recorded so far, merged.
-  const RecordingMetadata& metadata() const { return metadata_; }
+  // Everything recorded so far, merged: source 0's, and each source's.
+  const RecordingMetadata& metadata() const { return sources_.front(); }
+  const RecordingMetadata& source_metadata(std::size_t source) const { return sources_.at(source); }
+  std::size_t source_count() const { return sources_.size(); }
   std::uint64_t bytes(Direction direction) const;
   std::uint64_t records() const { return records_; }
   std::uint64_t file_size() const { return file_size_; }
@@ -61,8 +70,9 @@ class RecordingWriter {
   std::int64_t duration_ns() const { return last_t_ns_; }
 
  private:
-  RecordingWriter(std::FILE* file, std::string path, std::int64_t start_ns);
-  bool write_record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns);
+  RecordingWriter(std::FILE* file, std::string path, std::int64_t start_ns, std::size_t sources);
+  bool write_record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns, std::uint16_t source);
+  bool known_source(std::uint16_t source);
   void fail(const std::string& what, int errno_value);
 
   std::FILE* file_;
@@ -74,7 +84,7 @@ class RecordingWriter {
   std::uint64_t host_bytes_ = 0;
   std::uint64_t records_ = 0;
   std::uint64_t file_size_ = 0;
-  RecordingMetadata metadata_;
+  std::vector<RecordingMetadata> sources_;
   std::string error_;
 };
 

@@ -159,9 +159,9 @@ TEST_F(BadRecordings, HeadersSayWhatIsReallyWrong) {
        " has an impossible file-header size of 65535 bytes in a 41-byte file (version 1 writes 16): the file is "
        "damaged"},
       {"version0", version_0.bytes(), RecordingOpenFailure::Unsupported,
-       " says it is a version 0 recording, which does not exist (this ydscope reads version 1): the file is damaged"},
+       " says it is a version 0 recording, which does not exist (this ydscope reads versions 1 and 2): the file is damaged"},
       {"version7", version_7.bytes(), RecordingOpenFailure::Unsupported,
-       " is a version 7 recording; this ydscope reads version 1, update ydscope"},
+       " is a version 7 recording; this ydscope reads versions 1 and 2, update ydscope"},
   };
   for (const Case& c : cases) {
     const std::string file = write(c.name + ".ydrec", c.bytes);

@@ -207,10 +207,10 @@ TEST_F(RecordingFileTest, NewerVersionIsRefusedWithAHint) {
   ASSERT_TRUE(writer) << error;
   writer->close();
   Bytes bytes = file_bytes(path("v.ydrec"));
-  bytes[12] = 2;
+  bytes[12] = kMultiSourceVersion + 1;  // version 2 (several sources) reads; 3 is from the future
   write_bytes(path("v.ydrec"), bytes);
   EXPECT_FALSE(RecordingReader::open(path("v.ydrec"), error));
-  EXPECT_NE(error.find("version 2 recording"), std::string::npos) << error;
+  EXPECT_NE(error.find("version 3 recording"), std::string::npos) << error;
 }
 
 TEST_F(RecordingFileTest, UnknownRecordTypesAreSkippedAndBadLengthsAreCorrupt) {

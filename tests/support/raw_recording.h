@@ -34,9 +34,11 @@ class RawRecording {
     bytes_.assign(header.begin(), header.end());
     add(RecordType::Metadata, 0, std::vector<std::uint8_t>(metadata.begin(), metadata.end()));
   }
-  void add(RecordType type, std::int64_t t_ns, const std::vector<std::uint8_t>& payload) {
+  // `source`: the header's u16 at byte 2 (version 2's source id, version 1's reserved field).
+  void add(RecordType type, std::int64_t t_ns, const std::vector<std::uint8_t>& payload, std::uint16_t source = 0) {
     RecordHeader header;
     header.type = static_cast<std::uint8_t>(type);
+    header.source = source;
     header.length = static_cast<std::uint32_t>(payload.size());
     header.t_ns = t_ns;
     const auto head = encode_record_header(header);
