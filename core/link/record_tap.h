@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -20,13 +21,17 @@ namespace ydscope {
 
 struct TapRecord {
   RecordType type = RecordType::DeviceToHost;
-  std::int64_t t_ns = 0;  // since the tap started (its metadata's start_wall_time)
+  std::int64_t t_ns = 0;  // since the tap started (its metadata's start_wall_time), or its epoch
   std::vector<std::uint8_t> payload;
 };
 
 class RecordTap {
  public:
   explicit RecordTap(std::size_t max_queued_bytes = 64u << 20) : max_bytes_(max_queued_bytes) {}
+  // Times counted from `epoch_ns` (link_clock_ns()) instead of the tap's start: several sessions'
+  // taps then share one timeline (one recording of several lidars).
+  RecordTap(std::size_t max_queued_bytes, std::int64_t epoch_ns) : max_bytes_(max_queued_bytes), epoch_ns_(epoch_ns) {}
+  const std::optional<std::int64_t>& epoch_ns() const { return epoch_ns_; }
 
   // Producer. False when the record was dropped because the consumer is too far behind.
   bool push(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns);
@@ -50,6 +55,7 @@ class RecordTap {
   std::size_t max_bytes_;
   std::uint64_t dropped_ = 0;
   bool closed_ = false;
+  const std::optional<std::int64_t> epoch_ns_;
 };
 
 }  // namespace ydscope

@@ -19,7 +19,8 @@ void SessionRecorder::start_tap(std::shared_ptr<RecordTap> tap, RecordingMetadat
   if (!metadata.start_wall_time) metadata.start_wall_time = iso8601_utc_now();
   const std::string text = metadata.encode();
   tap->push(RecordType::Metadata, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}, 0);
-  taps_.push_back({std::move(tap), link_clock_ns()});
+  const std::int64_t start_ns = tap->epoch_ns().value_or(link_clock_ns());  // a shared epoch: one timeline
+  taps_.push_back({std::move(tap), start_ns});
 }
 
 bool SessionRecorder::stop_tap(const RecordTap& tap) {

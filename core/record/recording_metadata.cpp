@@ -166,6 +166,10 @@ void RecordingMetadata::merge(const RecordingMetadata& later) {
   for (const auto& [key, value] : later.extra) extra[key] = value;
 }
 
+std::string source_label(const RecordingMetadata& metadata, std::size_t id) {
+  return metadata.name && !metadata.name->empty() ? *metadata.name : "source" + std::to_string(id);
+}
+
 std::string iso8601_utc_now() { return iso8601_utc(std::chrono::system_clock::now()); }
 
 std::string iso8601_utc(std::chrono::system_clock::time_point now) {

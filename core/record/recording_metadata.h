@@ -41,6 +41,9 @@ struct RecordingMetadata {
   friend bool operator==(const RecordingMetadata&, const RecordingMetadata&) = default;
 };
 
+// What source `id` of a recording is called: its name, else "source<id>".
+std::string source_label(const RecordingMetadata& metadata, std::size_t id);
+
 // "2026-11-22T02:20:00.123Z" for the current wall-clock time.
 std::string iso8601_utc_now();
 // The same for any moment: "2026-12-02T05:21:16.123Z".

@@ -62,12 +62,22 @@ RecordingPlan plan_recording(const std::string& path, RecordingUse use, const st
       return plan;
     }
   }
-  plan.profile = recording_model(model_option, plan.summary.metadata, path, plan.refusal_text);
-  if (!plan.profile) {
-    plan.refusal = RecordingRefusal::NeedsModel;
-    return plan;
+  // Each source decodes with its own model and scale; --model and --distance-scale set them all.
+  for (std::size_t id = 0; id < plan.summary.sources.size(); ++id) {
+    const RecordingMetadata& metadata = plan.summary.sources[id].metadata;
+    SourcePlan source{source_label(metadata, id), nullptr, std::nullopt};
+    const std::string named = plan.several_sources() ? path + "'s source " + source.name : path;
+    source.profile = recording_model(model_option, metadata, named, plan.refusal_text);
+    if (!source.profile) {
+      plan.refusal = RecordingRefusal::NeedsModel;
+      plan.sources.clear();
+      return plan;
+    }
+    source.distance_scale = recording_distance_scale(scale_option, model_option.has_value(), metadata);
+    plan.sources.push_back(std::move(source));
   }
-  plan.distance_scale = recording_distance_scale(scale_option, model_option.has_value(), plan.summary.metadata);
+  plan.profile = plan.sources.front().profile;
+  plan.distance_scale = plan.sources.front().distance_scale;
   return plan;
 }
 
