@@ -1,5 +1,6 @@
 // ydscope-cli decode: raw lidar bytes (a file or stdin) -> laps as JSON lines, or just the counts.
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "app/cli/lap_output.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
+#include "app/cli/source_playback.h"
 #include "core/protocol/function_ref.h"
 #include "core/protocol/interference_filter.h"
 #include "core/protocol/model_profile.h"
@@ -199,8 +201,10 @@ int run_decode(std::span<const std::string> raw) {
   const std::string path = args.single_positional("FILE (or - for standard input)");
   const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
+  const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
   const auto recording = path != "-" && is_recording_file(path)
-                             ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model")))
+                             ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"),
+                                                                     scale_option))
                              : std::nullopt;
   const std::string model = recording ? "" : args.required("model");
   const ModelProfile* profile = recording ? recording->profile : find_profile(model);
@@ -213,7 +217,15 @@ int run_decode(std::span<const std::string> raw) {
   if (mcap && path == "-") throw UsageError("--mcap needs a FILE, not standard input");
   const LapFormat format = parse_lap_format(args.value("format"), mcap ? LapFormat::Summary : LapFormat::Jsonl);
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
-  const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
+  if (recording && recording->several_sources()) {
+    if (mcap)
+      throw UsageError(path + " holds several lidars; make their MCAP with ydscope-cli export " + path +
+                       " --mcap " + *mcap);
+    print_recording_warnings("ydscope-cli decode", recording->warnings());
+    const std::atomic<bool> never{false};
+    print_source_laps(path, *recording, format, /*speed=*/0, filter, never);
+    return kExitOk;
+  }
   const auto scale = recording ? recording_distance_scale(scale_option, args.value("model").has_value(),
                                                           recording->summary.metadata)
                                : scale_option;

@@ -18,6 +18,8 @@
 #include "app/cli/health_watch.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
+#include "app/cli/record_sources.h"
+#include "app/cli/source_options.h"
 #include "app/cli/session_cli.h"
 #include "core/bridge/live_topics.h"
 #include "core/protocol/scan_decoder.h"
@@ -29,6 +31,8 @@ namespace {
 
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli record --port PATH (--out FILE | --mcap OUT.mcap | both) [--model auto|MODEL]
                           [--baud B|auto] [--seconds S] [--force] [MCAP options]
+       ydscope-cli record --port PATH [--name NAME] [--pose X,Y,YAW[,flip]] --port PATH ...
+                          --out FILE [--model ...] [--baud ...] [--seconds S] [--force]
 
 Connects to the lidar, starts it scanning and records every byte in both directions (the start-up
 commands and replies, then the scan stream) with its time, and the device's details, into FILE
@@ -41,21 +45,33 @@ With --mcap, the same session goes live into an MCAP file as well (or instead): 
 and flushed at least once a second, so a killed recorder leaves an MCAP whose flushed chunks a
 streaming reader recovers (it lacks the summary; `ydscope-cli export` of the .ydrec makes a full one).
 
+Several lidars: give --port once for each; all go into one FILE (recording format version 2),
+every lap tagged with its lidar's name by replay and decode. Each lidar has a session of its own
+and reconnects by itself: one that stops is said in one line on stderr and the others keep
+recording. --seconds counts from when every lidar scans (or was said to be in trouble).
+
 options:
-  --port PATH      serial port (see `ydscope-cli ports`) or tcp://host:port
+  --port PATH      serial port (see `ydscope-cli ports`) or tcp://host:port; repeat for several lidars
+  --name NAME      several lidars: each one's name (letters, digits, _), once per --port in the
+                   same order (default lidar0, lidar1, ...)
+  --pose X,Y,YAW[,flip]  several lidars: where each sits in the common frame, once per --port:
+                   metres, metres, degrees counter-clockwise, flip when mounted upside down
+                   (default 0,0,0)
   --out FILE       the recording to write (.ydrec by convention): a regular file in a folder
                    that exists (not a device such as /dev/null: a recording is read back); an
                    existing file is refused unless --force is given
   --mcap OUT.mcap  the MCAP file to write live; an existing file is refused unless --force
-  --model MODEL    auto (default: detect from the device info), G1, G6, TG15, TG30, TG50
-  --baud B         line rate, or auto to probe (default: the model's, 230400 when auto)
+  --model MODEL    auto (default: detect from the device info), G1, G6, TG15, TG30, TG50; with
+                   several --port, once for all or once per --port
+  --baud B         line rate, or auto to probe (default: the model's, 230400 when auto); like --model
   --seconds S      stop after S seconds of scanning (default: until Ctrl-C)
   --force          overwrite FILE and OUT.mcap
 )" YDSCOPE_MCAP_OPTIONS_HELP R"(
 On a terminal, progress (time, bytes, laps) is shown on stderr and updated in place. Ctrl-C ends
 the recording cleanly: the file is closed, the lidar stopped and the summary printed.
 
-output: one summary line on stdout per file, read back from the finished .ydrec (L: laps decoded
+output: one summary line on stdout per file (several lidars: a line for the file, then one per
+lidar: "  NAME: MODEL on PORT, B bytes from the device, H bytes to it, L laps"), read back from the finished .ydrec (L: laps decoded
 from it) and counted while writing the MCAP:
   recorded FILE: S s, B bytes from the device, H bytes to it, L laps
   wrote OUT.mcap: L laps, M messages in C chunks, B bytes
@@ -67,13 +83,16 @@ one line on stderr when it first shows and again whenever it changes, back to ok
 
 exit status: 0 recorded (a health warning does not change this); 3 recorded, but the lidar
 reported a health error; 1 the device or the file failed (one sentence on stderr; what was
-recorded until then stays in FILE); 2 usage error.
+recorded until then stays in FILE; several lidars: one of them never scanned); 2 usage error
+(a bad --pose or --name, a port that does not exist).
 
 examples:
   ydscope-cli record --port /dev/ttyUSB0 --out bench.ydrec --seconds 10
   ydscope-cli record --port tcp://192.168.1.20:2000 --model G6 --out g6.ydrec
   ydscope-cli record --port /dev/ttyUSB0 --mcap bench.mcap --seconds 60
   ydscope-cli record --port /dev/ttyUSB0 --out bench.ydrec --mcap bench.mcap
+  ydscope-cli record --port /dev/ttyUSB0 --name front --pose 0.2,0,0 \
+                     --port /dev/ttyUSB1 --name back --pose -0.2,0,180,flip --out robot.ydrec
 )";
 
 std::atomic<bool> interrupted{false};
@@ -121,8 +140,18 @@ CommandResult run_and_wait(const std::function<void(CommandCallback)>& post) {
 }
 
 int run_record(std::span<const std::string> raw) {
-  const Arguments args(raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap"})),
-                       with_mcap_flags({"force"}));
+  const Arguments args(raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap", "name", "pose"})),
+                       with_mcap_flags({"force"}), 0, source_repeatable_options());
+  if (args.values("port").size() > 1) {
+    if (const auto out = args.value("out")) refuse_to_overwrite(*out, args, "--out");
+    std::signal(SIGINT, record_on_signal);
+    std::signal(SIGTERM, record_on_signal);
+    return record_sources(args, interrupted);
+  }
+  for (const std::string& option : source_repeatable_options())
+    if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
+  if (args.value("name") || args.value("pose"))
+    throw UsageError("--name and --pose place one of several lidars; give them with two or more --port");
   const auto out_option = args.value("out");
   const auto mcap_option = args.value("mcap");
   if (!out_option && !mcap_option) throw UsageError("say where to record: --out FILE.ydrec, --mcap FILE.mcap, or both");

@@ -1,6 +1,8 @@
 // ydscope-cli replay: a recording's device bytes, played back through the replay link with their
 // original timing (or faster), decoded into laps as `decode` prints them.
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <functional>
 #include <stdexcept>
@@ -15,6 +17,7 @@
 #include "app/cli/lap_json.h"
 #include "app/cli/lap_output.h"
 #include "app/cli/recording_input.h"
+#include "app/cli/source_playback.h"
 #include "core/link/replay_link.h"
 #include "core/protocol/scan_decoder.h"
 
@@ -52,6 +55,9 @@ examples:
 
 constexpr std::size_t kReadBuffer = 4096;
 
+std::atomic<bool> interrupted{false};
+extern "C" void replay_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
+
 int run_replay(std::span<const std::string> raw) {
   const Arguments args(raw, {"speed", "format", "model", "distance-scale"}, {}, /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (a .ydrec recording)");
@@ -62,11 +68,17 @@ int run_replay(std::span<const std::string> raw) {
                      *args.value("speed") + "'");
   const LapFormat format = parse_lap_format(args.value("format"), LapFormat::Jsonl);
 
-  const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"));
+  const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
+  const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"), scale_option);
   print_recording_warnings("ydscope-cli replay", plan.warnings());
+  if (plan.several_sources()) {
+    std::signal(SIGINT, replay_on_signal);
+    std::signal(SIGTERM, replay_on_signal);
+    print_source_laps(path, plan, format, speed, {}, interrupted);
+    return kExitOk;
+  }
   const ModelProfile& profile = *plan.profile;
-  const auto scale = recording_distance_scale(args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale),
-                                              args.value("model").has_value(), plan.summary.metadata);
+  const auto scale = plan.distance_scale;
 
   boost::asio::io_context io;
   std::string error;

@@ -31,8 +31,21 @@ void JsonOut::flush() {
 }
 
 
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s) {
-  out.raw(R"({"type":"lap","index":)");
+namespace {
+void write_type(JsonOut& out, std::string_view type, std::optional<std::string_view> source) {
+  out.raw(R"({"type":)");
+  out.string(type);
+  if (source) {
+    out.raw(R"(,"source":)");
+    out.string(*source);
+  }
+}
+}  // namespace
+
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s,
+               std::optional<std::string_view> source) {
+  write_type(out, "lap", source);
+  out.raw(R"(,"index":)");
   out.integer(lap.index);
   out.raw(R"(,"t":)");
   out.fixed(t_s, 6);
@@ -63,13 +76,16 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::ui
   out.maybe_flush();
 }
 
-void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start) {
-  write_summary_fields(out, counters, start);
+void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start,
+                   std::optional<std::string_view> source) {
+  write_summary_fields(out, counters, start, source);
   out.raw("}\n");
 }
 
-void write_summary_fields(JsonOut& out, const DecoderCounters& c, const std::optional<std::string>& start) {
-  out.raw(R"({"type":"summary","bytes":)");
+void write_summary_fields(JsonOut& out, const DecoderCounters& c, const std::optional<std::string>& start,
+                          std::optional<std::string_view> source) {
+  write_type(out, "summary", source);
+  out.raw(R"(,"bytes":)");
   out.integer(c.bytes);
   out.raw(R"(,"packets":)");
   out.integer(c.packets);

@@ -54,12 +54,17 @@ class JsonOut {
 // {"type":"lap",...} and a newline; g1_info: the model carries CT information (scan_hz, health),
 // `health` what is known of it (the lap's own CT, or a live session's answer), t_s the lap's time
 // (LapPrinter says which). Commands print laps through LapPrinter (lap_output.h).
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s);
+// `source`: the lidar of a several-lidar recording, as a "source" field after "type"; none for one.
+void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s,
+               std::optional<std::string_view> source = std::nullopt);
 // {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L
 //  [,"cut_points":C][,"start":"ISO 8601 UTC"]} and a newline; start: the wall-clock time of the
 // stream's start, when it is known.
-void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start);
+// `source` as in write_lap: one summary per source of a several-lidar recording.
+void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start,
+                   std::optional<std::string_view> source = std::nullopt);
 // The same without the closing brace and newline, for a summary with more fields.
-void write_summary_fields(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start);
+void write_summary_fields(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start,
+                          std::optional<std::string_view> source = std::nullopt);
 
 }  // namespace ydscope::cli

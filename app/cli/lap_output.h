@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "app/cli/lap_json.h"
 #include "core/protocol/lap.h"
@@ -29,11 +30,16 @@ class LapPrinter {
   // With the health the lap's own CT reports (decode, replay), or the one a live session knows.
   void print(const Lap& lap);
   void print(const Lap& lap, std::optional<std::uint8_t> health);
+  // A lap of one source of a several-lidar recording: JSON gets a "source" field, CSV a first
+  // column "source" (its header says so); t counts from the first lap of any source.
+  void print_from(std::string_view source, bool g1_info, const Lap& lap);
 
   // The summary line follows the laps in jsonl and summary; a CSV holds only its rows.
   bool wants_summary() const { return format_ != LapFormat::Csv; }
 
  private:
+  void print(const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, std::optional<std::string_view> source);
+
   JsonOut& out_;
   LapFormat format_;
   bool g1_info_;

@@ -1,5 +1,6 @@
 #include "app/cli/session_cli.h"
 
+#include <charconv>
 #include <stdexcept>
 
 #include "core/link/device_probe.h"
@@ -18,22 +19,31 @@ std::set<std::string> session_value_options(std::set<std::string> more) {
 }
 
 SessionConfig session_config_from(const Arguments& args, bool scan) {
+  return session_config_for(args.required("port"), args.value("model"), args.value("baud"), scan);
+}
+
+SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model_option,
+                                 const std::optional<std::string>& baud_option, bool scan) {
   SessionConfig config;
-  config.address = args.required("port");
+  config.address = address;
   std::string error;
   if (!parse_link_address(config.address, error)) throw UsageError(error);
-  const std::string model = args.value("model").value_or("auto");
+  const std::string model = model_option.value_or("auto");
   if (model != "auto") {
     const ModelProfile* profile = find_profile(model);
     if (!profile)
       throw UsageError("unknown model '" + model + "'; valid models are auto, " + std::string(model_names()));
     config.model = profile->model;
   }
-  const std::string baud = args.value("baud").value_or("");
+  const std::string baud = baud_option.value_or("");
   if (baud == "auto") {
     config.probe_baud = true;
   } else if (!baud.empty()) {
-    config.baud = static_cast<std::uint32_t>(*args.integer("baud", 50, 4'000'000));
+    std::uint32_t parsed = 0;
+    const auto [end, ec] = std::from_chars(baud.data(), baud.data() + baud.size(), parsed);
+    if (ec != std::errc() || end != baud.data() + baud.size() || parsed < 50 || parsed > 4'000'000)
+      throw UsageError("--baud must be a whole number from 50 to 4000000, not '" + baud + "'");
+    config.baud = parsed;
   }
   config.scan = scan;
   config.reconnect = false;  // a command-line run reports a fault instead of waiting it out

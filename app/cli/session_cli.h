@@ -16,6 +16,9 @@ std::set<std::string> session_value_options(std::set<std::string> more);
 
 // --port PATH|tcp://host:port (required), --model auto|MODEL, --baud B|auto. UsageError on mistakes.
 SessionConfig session_config_from(const Arguments& args, bool scan);
+// The same from the texts of one port's options (several lidars: source_options.h).
+SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model,
+                                 const std::optional<std::string>& baud, bool scan);
 
 // Connects and waits for the device to be Ready (or Scanning when config.scan); throws
 // std::runtime_error with the session's sentence when it fails.

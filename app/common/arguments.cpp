@@ -79,7 +79,7 @@ class OptionNames {
 }  // namespace
 
 Arguments::Arguments(std::span<const std::string> args, std::set<std::string> value_options,
-                     std::set<std::string> flags, std::size_t max_positionals) {
+                     std::set<std::string> flags, std::size_t max_positionals, std::set<std::string> repeatable) {
   const OptionNames names(value_options, flags);
   bool options_ended = false;
   const auto add_positional = [&](const std::string& arg) {
@@ -118,14 +118,17 @@ Arguments::Arguments(std::span<const std::string> args, std::set<std::string> va
         if (inline_value) throw UsageError("option --" + name + " takes no value");
         flags_seen_.insert(name);
       } else if (value_options.count(name)) {
-        if (values_.count(name)) throw UsageError("option --" + name + " is given twice");
+        if (values_.count(name) && !repeatable.count(name)) throw UsageError("option --" + name + " is given twice");
+        std::string value;
         if (inline_value) {
-          values_[name] = *inline_value;
+          value = *inline_value;
         } else if (i + 1 < args.size() && !(looks_like_option(args[i + 1]) && args[i + 1].rfind("--", 0) == 0)) {
-          values_[name] = args[++i];
+          value = args[++i];
         } else {
           throw UsageError("option --" + name + " needs a value (--" + name + " VALUE or --" + name + "=VALUE)");
         }
+        values_.emplace(name, value);  // the first stays
+        repeated_[name].push_back(std::move(value));
       } else {
         names.unknown(arg.substr(0, arg.find('=')), name);
       }
@@ -141,6 +144,11 @@ std::optional<std::string> Arguments::value(const std::string& name) const {
   const auto it = values_.find(name);
   if (it == values_.end()) return std::nullopt;
   return it->second;
+}
+
+std::vector<std::string> Arguments::values(const std::string& name) const {
+  const auto it = repeated_.find(name);
+  return it == repeated_.end() ? std::vector<std::string>{} : it->second;
 }
 
 std::string Arguments::required(const std::string& name) const {

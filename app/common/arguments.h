@@ -25,13 +25,16 @@ class Arguments {
  public:
   // value_options take a value; flags do not (names without the leading "--"). At most
   // max_positionals arguments that are not options are accepted.
+  // `repeatable` value options may be given more than once (record --port A --port B); value()
+  // gives the first, values() all in order. Any other option given twice is a mistake.
   Arguments(std::span<const std::string> args, std::set<std::string> value_options,
-            std::set<std::string> flags, std::size_t max_positionals = 0);
+            std::set<std::string> flags, std::size_t max_positionals = 0, std::set<std::string> repeatable = {});
 
   bool help_requested() const { return help_; }
   bool version_requested() const { return version_; }
   bool has(const std::string& name) const;
   std::optional<std::string> value(const std::string& name) const;
+  std::vector<std::string> values(const std::string& name) const;
   std::string required(const std::string& name) const;
   // Numeric values with a range check; the error names the option and the accepted range.
   std::optional<double> number(const std::string& name, double min, double max) const;
@@ -42,6 +45,7 @@ class Arguments {
 
  private:
   std::map<std::string, std::string> values_;
+  std::map<std::string, std::vector<std::string>> repeated_;  // every value of a repeatable option
   std::set<std::string> flags_seen_;
   std::vector<std::string> positionals_;
   bool help_ = false;

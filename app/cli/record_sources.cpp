@@ -1,0 +1,208 @@
+#include "app/cli/record_sources.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <future>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/cli/cli_command.h"
+#include "app/cli/health_watch.h"
+#include "app/cli/recording_input.h"
+#include "app/cli/source_options.h"
+#include "core/link/sources_recording.h"
+#include "core/record/recording_reader.h"
+#include "core/record/source_decoders.h"
+
+namespace ydscope::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A lidar that stalls or drops gets this long to come back (the session reconnects by itself)
+// before the recording waits on without it; it keeps trying all along.
+constexpr std::chrono::seconds kSettlePatience{60};
+
+bool scanning(LinkState state) { return state == LinkState::Scanning || state == LinkState::CommandInProgress; }
+
+// One lidar of the recording, as the CLI watches it.
+struct Source {
+  SourceSpec spec;
+  std::unique_ptr<Session> session;
+  std::unique_ptr<HealthWatch> health;
+  bool ever_scanned = false;
+  bool down_said = false;  // its stop was said; its return will be
+  std::string last_problem;
+};
+
+CommandResult wait_for(const std::function<void(CommandCallback)>& post) {
+  std::promise<CommandResult> promise;
+  auto result = promise.get_future();
+  post([&promise](const CommandResult& r) { promise.set_value(r); });
+  return result.get();
+}
+
+// "NAME (PORT)": how every line names a lidar.
+std::string who(const SourceSpec& spec) { return spec.name + " (" + spec.config.address + ")"; }
+
+// Says a lidar's stop once, and its return once.
+void watch(Source& source, const SessionSnapshot& s, bool tty) {
+  const char* clear = tty ? "\r\033[K" : "";
+  if (scanning(s.state)) {
+    if (source.down_said)
+      std::fprintf(stderr, "%sydscope-cli record: %s is scanning again\n", clear, who(source.spec).c_str());
+    source.ever_scanned = true;
+    source.down_said = false;
+    return;
+  }
+  const bool trouble = s.state == LinkState::Stalled || s.state == LinkState::Reconnecting || s.state == LinkState::Failed;
+  if (!trouble) return;
+  if (!s.message.empty()) source.last_problem = s.message;
+  if (source.down_said) return;
+  source.down_said = true;
+  std::fprintf(stderr, "%sydscope-cli record: %s %s: %s; the other lidars keep recording\n", clear,
+               who(source.spec).c_str(), source.ever_scanned ? "stopped" : "is not scanning",
+               s.message.empty() ? std::string(link_state_name(s.state)).c_str() : s.message.c_str());
+}
+
+void show_progress(const std::string& out, double seconds, const std::vector<Source>& sources) {
+  std::string line;
+  for (const Source& source : sources) {
+    const SessionSnapshot s = source.session->snapshot();
+    line += ", " + source.spec.name + " " + std::to_string(s.counters.laps) + " laps" +
+            (scanning(s.state) ? "" : " (" + std::string(link_state_name(s.state)) + ")");
+  }
+  std::fprintf(stderr, "\r\033[Krecording %s: %.1f s%s", out.c_str(), seconds, line.c_str());
+  std::fflush(stderr);
+}
+
+// Per source: ", L laps" decoded from the finished file, as a replay will give them.
+std::vector<std::uint64_t> laps_per_source(const std::string& path, const RecordingSummary& summary) {
+  std::vector<SourcePlan> plans;
+  for (std::size_t id = 0; id < summary.sources.size(); ++id) {
+    const RecordingMetadata& metadata = summary.sources[id].metadata;
+    plans.push_back({source_label(metadata, id), metadata.model ? find_profile(*metadata.model) : nullptr,
+                     metadata.distance_scale});
+  }
+  SourceDecoders decoders(plans);
+  std::string error;
+  auto reader = RecordingReader::open(path, error);
+  if (!reader) throw std::runtime_error(error);
+  RecordView record;
+  while (reader->next(record)) decoders.feed(record, [](std::size_t, const Lap&) {});
+  decoders.finish([](std::size_t, const Lap&) {});
+  std::vector<std::uint64_t> laps;
+  for (std::size_t id = 0; id < decoders.size(); ++id)
+    laps.push_back(decoders.decoder(id) ? decoders.decoder(id)->counters().laps : 0);
+  return laps;
+}
+
+}  // namespace
+
+int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) {
+  if (args.value("mcap"))
+    throw UsageError("record --mcap takes one --port; record several lidars to --out FILE and make their MCAP with "
+                     "ydscope-cli export FILE --mcap OUT.mcap");
+  const std::string out = args.required("out");
+  const auto seconds = args.number("seconds", 0.001, 1e7);
+  std::vector<Source> sources;
+  std::vector<RecordingMetadata> metadata;
+  for (SourceSpec& spec : source_specs_from(args, /*scan=*/true)) {
+    spec.config.reconnect = true;  // one lidar's fault must not end the others' recording
+    metadata.push_back(source_metadata(spec));
+    sources.push_back({std::move(spec), nullptr, nullptr});
+  }
+  if (const std::string problem = recording_output_problem(out); !problem.empty()) throw UsageError(problem);
+  const bool tty = ::isatty(STDERR_FILENO) == 1;
+
+  std::string error;
+  auto recording = SourcesRecording::create(out, std::move(metadata), error);
+  if (!recording) throw std::runtime_error(error);
+  for (std::size_t id = 0; id < sources.size(); ++id) {
+    Source& source = sources[id];
+    source.session = std::make_unique<Session>(4);
+    source.health = std::make_unique<HealthWatch>("ydscope-cli record: " + source.spec.name);
+    source.health->clear_line_first(tty);
+    // The tap right after the connect intent (both run in order on its I/O thread), so the
+    // start-up exchange is in the file too.
+    source.session->connect(source.spec.config);
+    wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
+  }
+
+  const auto start = Clock::now();
+  std::optional<Clock::time_point> scan_start;
+  auto last_progress = Clock::time_point{};
+  Lap lap;
+  std::string failure;
+  while (!interrupted.load()) {
+    if (!recording->pump(std::chrono::milliseconds(50))) {
+      failure = recording->error();
+      break;
+    }
+    bool settled = true;
+    for (Source& source : sources) {
+      if (source.session->laps().drain_newest(lap) > 0) source.health->observe_lap(lap);
+      const SessionSnapshot s = source.session->snapshot();
+      source.health->observe_answer(s.health);
+      watch(source, s, tty);
+      settled = settled && (source.ever_scanned || source.down_said);
+    }
+    // --seconds counts from when every lidar scans (or was said to be in trouble).
+    if (!scan_start && (settled || Clock::now() - start > kSettlePatience)) scan_start = Clock::now();
+    const double elapsed = scan_start ? std::chrono::duration<double>(Clock::now() - *scan_start).count() : 0.0;
+    if (seconds && scan_start && elapsed >= *seconds) break;
+    if (tty && Clock::now() - last_progress >= std::chrono::milliseconds(250)) {
+      show_progress(out, elapsed, sources);
+      last_progress = Clock::now();
+    }
+  }
+  if (tty) std::fputs("\r\033[K", stderr);
+
+  // Close the file first (every tap's last records in it), then stop the lidars.
+  for (Source& source : sources) wait_for([&](CommandCallback done) { source.session->stop_tap(std::move(done)); });
+  if (!recording->finish() && failure.empty()) failure = recording->error();
+  for (Source& source : sources) source.session->disconnect();
+  for (Source& source : sources)
+    source.session->wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
+                               std::chrono::seconds(3));
+  if (recording->dropped())
+    std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidars\n",
+                 out.c_str(), static_cast<unsigned long long>(recording->dropped()));
+
+  const auto summary = summarize_recording(out, error);
+  if (!summary) throw std::runtime_error(error);
+  if (summary->device_bytes == 0 && summary->host_bytes == 0) {
+    std::filesystem::remove(out);  // no port ever opened: an empty recording helps nobody
+    throw std::runtime_error(failure.empty() ? "no lidar answered; nothing was recorded" : failure);
+  }
+  const auto laps = laps_per_source(out, *summary);
+  std::printf("recorded %s: %.1f s, %zu lidars\n", out.c_str(), static_cast<double>(summary->duration_ns) / 1e9,
+              sources.size());
+  bool health_error = false;
+  for (std::size_t id = 0; id < sources.size(); ++id) {
+    const SourceSummary& s = summary->sources.at(id);
+    std::printf("  %s: %s on %s, %llu bytes from the device, %llu bytes to it, %llu laps%s\n",
+                sources[id].spec.name.c_str(), s.metadata.model.value_or("unknown model").c_str(),
+                sources[id].spec.config.address.c_str(), static_cast<unsigned long long>(s.device_bytes),
+                static_cast<unsigned long long>(s.host_bytes), static_cast<unsigned long long>(laps[id]),
+                sources[id].health->summary_note().c_str());
+    health_error = health_error || sources[id].health->worst() == HealthLevel::Error;
+  }
+  print_recording_warnings("ydscope-cli record", summary->damage);
+  std::fflush(stdout);
+  if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + out);
+  for (const Source& source : sources)
+    if (!source.ever_scanned)
+      throw std::runtime_error(who(source.spec) + " never scanned (" +
+                               (source.last_problem.empty() ? "no reason given" : source.last_problem) +
+                               "); the other lidars are in " + out);
+  return health_error ? kExitLidarFault : kExitOk;
+}
+
+}  // namespace ydscope::cli

@@ -1,0 +1,152 @@
+// ydscope-cli record with several --port, as a user runs it against three virtual lidars: one
+// recording holds them all, and replay and decode print every lidar's laps tagged with its name.
+// Mistakes in naming or placing the lidars are one sentence and exit status 2.
+#include <unistd.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/record/recording_reader.h"
+#include "link/cli_run_support.h"
+#include "link/raw_recording.h"
+#include "link/session_test_support.h"
+
+namespace ydscope {
+namespace {
+
+namespace fs = std::filesystem;
+using test::count;
+using test::run_cli_apart;
+
+class SeveralLidarsCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("ydscope-several-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+// Lines of `text` that start with `prefix`, by the value of their "source" field.
+std::map<std::string, std::size_t> tagged(const std::string& text, const std::string& prefix) {
+  std::map<std::string, std::size_t> by_source;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line = text.substr(at, end - at);
+    if (line.rfind(prefix, 0) == 0) {
+      const std::size_t from = line.find("\"source\":\"");
+      const std::string source =
+          from == std::string::npos ? "(none)" : line.substr(from + 10, line.find('"', from + 10) - from - 10);
+      ++by_source[source];
+    }
+    at = end + 1;
+  }
+  return by_source;
+}
+
+TEST_F(SeveralLidarsCli, RecordsThreeLidarsAndReplaysEachOnesLapsTagged) {
+  test::SimOnPty g1(Model::G1);
+  test::SimOnPty g6(Model::G6);
+  test::SimOnPty tg30(Model::TG30);
+  const std::string out = path("three.ydrec");
+  const auto record = run_cli_apart("record --port '" + g1.port() + "' --name left --pose 0.1,0.2,90 --port '" +
+                                    g6.port() + "' --name mid --pose 0,0,0 --port '" + tg30.port() +
+                                    "' --name right --pose 0,-0.3,180,flip --out '" + out + "' --seconds 2");
+  ASSERT_EQ(record.status, 0) << record.out << record.err;
+  EXPECT_NE(record.out.find("recorded " + out + ": "), std::string::npos) << record.out;
+  EXPECT_NE(record.out.find(", 3 lidars\n"), std::string::npos) << record.out;
+  EXPECT_NE(record.out.find("  left: G1 on "), std::string::npos) << record.out;
+  EXPECT_NE(record.out.find("  mid: G6 on "), std::string::npos) << record.out;
+  EXPECT_NE(record.out.find("  right: TG30 on "), std::string::npos) << record.out;
+
+  // The file: version 2, each source's name, pose and detected model.
+  std::string error;
+  auto reader = RecordingReader::open(out, error);
+  ASSERT_TRUE(reader) << error;
+  EXPECT_EQ(reader->version(), kMultiSourceVersion);
+  ASSERT_EQ(reader->source_count(), 3u);
+  EXPECT_EQ(reader->source_metadata(0).pose, (Pose{0.1, 0.2, 90, false}));
+  EXPECT_EQ(reader->source_metadata(2).pose, (Pose{0, -0.3, 180, true}));
+  EXPECT_EQ(reader->source_metadata(2).port, tg30.port());
+  const auto summary = summarize_recording(out, error);
+  ASSERT_TRUE(summary) << error;
+  EXPECT_EQ(summary->sources.at(0).metadata.model, "G1");
+  EXPECT_EQ(summary->sources.at(1).metadata.model, "G6");
+  EXPECT_EQ(summary->sources.at(2).metadata.model, "TG30");
+  EXPECT_TRUE(summary->damage.empty());
+
+  const auto replay = run_cli_apart("replay '" + out + "' --speed 0");
+  ASSERT_EQ(replay.status, 0) << replay.err;
+  const auto laps = tagged(replay.out, "{\"type\":\"lap\"");
+  EXPECT_EQ(laps.count("(none)"), 0u) << "a lap without its source";
+  for (const char* name : {"left", "mid", "right"}) {
+    ASSERT_GT(laps.count(name), 0u) << name << " has no laps:\n" << replay.out.substr(0, 400);
+    // Two seconds of a 5-12 Hz lidar: a handful of whole laps at least.
+    EXPECT_GE(laps.at(name), 5u) << name;
+    const std::string summary_line = "{\"type\":\"summary\",\"source\":\"" + std::string(name) +
+                                     "\",\"bytes\":";
+    EXPECT_EQ(count(replay.out, summary_line), 1u) << replay.out.substr(replay.out.size() - 600);
+    EXPECT_NE(record.out.find(std::string(name) + ": ") , std::string::npos);
+    // record counted the laps a replay gives.
+    EXPECT_NE(record.out.find(", " + std::to_string(laps.at(name)) + " laps"), std::string::npos)
+        << name << " " << laps.at(name) << "\n" << record.out;
+  }
+  // decode prints the same lines as replay, and CSV gets a source column.
+  const auto decode = run_cli_apart("decode '" + out + "'");
+  ASSERT_EQ(decode.status, 0) << decode.err;
+  EXPECT_EQ(decode.out, replay.out);
+  const auto csv = run_cli_apart("decode '" + out + "' --format csv");
+  ASSERT_EQ(csv.status, 0) << csv.err;
+  EXPECT_EQ(csv.out.rfind("source,lap,t,angle_deg,range_mm,flag\n", 0), 0u) << csv.out.substr(0, 80);
+  for (const char* name : {"\nleft,0,", "\nmid,0,", "\nright,0,"})
+    EXPECT_NE(csv.out.find(name), std::string::npos) << name;
+}
+
+TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
+  test::SimOnPty g6(Model::G6);
+  const std::string port = "'" + g6.port() + "'";
+  const std::string out = " --out '" + path("x.ydrec") + "' --seconds 1";
+  const std::pair<std::string, std::string> cases[] = {
+      {"record --port " + port + " --port /dev/ydscope-no-such-port" + out, "there is no port /dev/ydscope-no-such-port"},
+      {"record --port " + port + " --pose 1,2 --port tcp://127.0.0.1:9 --pose 0,0,0" + out, "'1,2'"},
+      {"record --port " + port + " --name a --port tcp://127.0.0.1:9 --name a" + out, "--name a is given to two ports"},
+      {"record --port " + port + " --name 1st --port tcp://127.0.0.1:9 --name b" + out, "--name '1st'"},
+      {"record --port " + port + " --port " + port + out, "is given twice"},
+      {"record --port " + port + " --pose 0,0,0 --port tcp://127.0.0.1:9" + out, "once per --port (2 ports)"},
+      {"record --port " + port + " --port tcp://127.0.0.1:9 --mcap '" + path("x.mcap") + "'", "ydscope-cli export"},
+      {"record --port " + port + " --name front" + out, "--name and --pose"},
+  };
+  for (const auto& [arguments, says] : cases) {
+    const auto run = run_cli_apart(arguments);
+    EXPECT_EQ(run.status, 2) << arguments << "\n" << run.err;
+    EXPECT_EQ(count(run.err, "\n"), 1u) << run.err;
+    EXPECT_NE(run.err.find(says), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(path("x.ydrec"))) << arguments;
+  }
+}
+
+TEST_F(SeveralLidarsCli, ASourceWithoutAModelIsNamedAndNeedsModel) {
+  test::RawRecording raw(2, 16, "name=front\nmodel=G6\n");
+  raw.add(RecordType::Metadata, 0, {'n', 'a', 'm', 'e', '=', 'b', 'a', 'c', 'k', '\n'}, 1);
+  raw.write(path("two.ydrec"));
+  const auto run = run_cli_apart("decode '" + path("two.ydrec") + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.err, "ydscope-cli decode: " + path("two.ydrec") +
+                         "'s source back does not say which lidar made it; pass --model (G1, G6, TG15, TG30, TG50)\n");
+  // --model decodes every source as that model; no bytes give two empty summaries, tagged.
+  const auto forced = run_cli_apart("decode '" + path("two.ydrec") + "' --model G6");
+  EXPECT_EQ(forced.status, 0) << forced.err;
+  EXPECT_EQ(count(forced.out, "{\"type\":\"summary\",\"source\":\"back\""), 1u) << forced.out;
+  EXPECT_EQ(count(forced.out, "{\"type\":\"summary\",\"source\":\"front\""), 1u) << forced.out;
+}
+
+}  // namespace
+}  // namespace ydscope
