@@ -3,6 +3,7 @@
 // say reaches the decoder too.
 // Checks besides "no crash, no sanitizer report":
 // - every record's payload is at most kMaxRecordPayload and records advance through the file;
+// - a record's source is one the reader knows (always 0 in version 1);
 // - a read ends cleanly, truncated or corrupt, never two of them;
 // - rewind() gives the same records again, and summarize_recording() agrees with the iteration;
 // - metadata that parsed encodes and parses back to the same fields;
@@ -63,6 +64,9 @@ Pass read_all(RecordingReader& reader, ScanDecoder* decoder) {
   while (reader.next(record)) {
     FUZZ_CHECK(record.payload.size() <= kMaxRecordPayload, "record payload above the format's limit");
     FUZZ_CHECK(pass.records == 0 || record.file_offset > last_offset, "records did not advance through the file");
+    FUZZ_CHECK(record.source < kMaxRecordingSources && record.source < reader.source_count(),
+               "a record of a source the reader does not know");
+    FUZZ_CHECK(reader.version() >= kMultiSourceVersion || record.source == 0, "a version-1 record with a source");
     last_offset = record.file_offset;
     ++pass.records;
     pass.last_t_ns = record.t_ns;
@@ -115,7 +119,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const ModelProfile* profile = reader->metadata().model ? find_profile(*reader->metadata().model) : nullptr;
   ScanDecoder& decoder = decoder_for(profile ? *profile : profile_for(Model::G6), reader->metadata().distance_scale);
   const Pass first = read_all(*reader, &decoder);
-  check_metadata_round_trip(reader->metadata());
+  for (std::size_t source = 0; source < reader->source_count(); ++source)
+    check_metadata_round_trip(reader->source_metadata(source));
 
   reader->rewind();
   const Pass second = read_all(*reader, nullptr);

@@ -5,7 +5,9 @@ virtual lidar. Run by hand when the formats change; the outputs are committed.
     ydscope-cli sim --model G1 --pty /tmp/lidar &
     ydscope-cli record --port /tmp/lidar --out /tmp/g1.ydrec --seconds 0.4
     (the same for G6 and TG30)
-    fuzz/make_seeds.py /tmp/g1.ydrec /tmp/g6.ydrec /tmp/tg30.ydrec
+    ydscope-cli record --port /tmp/g1 --port /tmp/g6 --port /tmp/tg30 --out /tmp/several.ydrec \
+        --seconds 0.3         (three sims at once: format version 2, for the recording target only)
+    fuzz/make_seeds.py /tmp/g1.ydrec /tmp/g6.ydrec /tmp/tg30.ydrec /tmp/several.ydrec
 
 The real captures (tests/data/captures) and assets/demo-g6.ydrec are added by scripts/fuzz at run
 time instead of being copied here.
@@ -62,6 +64,9 @@ def write(target, name, data):
 def main(paths):
     for path in map(pathlib.Path, paths):
         data = path.read_bytes()
+        if struct.unpack_from("<H", data, 12)[0] == 2:  # several lidars: their bytes interleave
+            write("recording", "sim-several.ydrec", data)
+            continue
         model = model_of(data)
         device = b"".join(p for kind, p in records(data) if kind == 1)
         # Scan targets: byte 0 is the chunking (fuzz_input.h), then the stream as the device sent it.
