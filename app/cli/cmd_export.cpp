@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
@@ -36,6 +37,11 @@ channel CDR with a ros2msg schema) that Foxglove, `ros2 bag play` and the MCAP t
 
 The laps are the ones `ydscope-cli decode REC.ydrec` prints. Times are the recording's start
 wall-clock time plus each record's time.
+
+A recording of several lidars (`record` with several --port) puts each lidar's topics under its
+name, /NAME/scan, /NAME/points, /NAME/diagnostics, /NAME/ydscope/device_bytes and host_bytes,
+with NAME as their frame_id, and adds /tf_static (tf2_msgs/msg/TFMessage): every lidar's pose
+as a transform from the common frame "ydscope" to NAME (an upside-down lidar rolled 180 degrees).
 
 options:
   --mcap OUT.mcap    the file to write; an existing file is refused unless --force is given
@@ -74,21 +80,32 @@ int run_export(std::span<const std::string> raw) {
   std::string error;
   auto reader = RecordingReader::open(path, error);
   if (!reader) throw std::runtime_error(error);
-  auto exporter = McapRecordingExport::create(out, options, error);
+  // Several lidars: each under its name, decoded as its own model, and /tf_static.
+  std::vector<McapSource> sources;
+  if (plan.several_sources())
+    for (std::size_t id = 0; id < plan.sources.size(); ++id)
+      sources.push_back({plan.sources[id].name, plan.summary.sources[id].metadata.pose.value_or(Pose{}),
+                         plan.sources[id].profile->model});
+  auto exporter = McapRecordingExport::create(out, options, error, std::move(sources));
   if (!exporter) throw std::runtime_error(error);
+  const auto laps = [&] {
+    std::uint64_t total = 0;
+    for (std::size_t id = 0; id < exporter->source_count(); ++id) total += exporter->encoder(id).laps();
+    return total;
+  };
 
   const bool tty = ::isatty(STDERR_FILENO) == 1;
   const double total = static_cast<double>(std::filesystem::file_size(path));
   auto last_progress = Clock::now();
   RecordView record;
   while (reader->next(record)) {
-    exporter->record(record.type, record.payload, record.t_ns);
+    exporter->record(record.type, record.payload, record.t_ns, record.source);
     if (exporter->failed()) break;
     if (tty && Clock::now() - last_progress > std::chrono::milliseconds(200)) {
       last_progress = Clock::now();
       std::fprintf(stderr, "\r\033[Kexporting %s: %.0f%% (%.0f s of recording, %llu laps)", path.c_str(),
                    100.0 * static_cast<double>(record.file_offset) / total, static_cast<double>(record.t_ns) / 1e9,
-                   static_cast<unsigned long long>(exporter->encoder().laps()));
+                   static_cast<unsigned long long>(laps()));
       std::fflush(stderr);
     }
   }
@@ -97,7 +114,7 @@ int run_export(std::span<const std::string> raw) {
   if (!ok) throw std::runtime_error("writing " + out + " failed: " + exporter->error());
   const auto& stats = exporter->statistics();
   std::printf("exported %s -> %s: %llu laps, %llu messages in %u chunks, %llu bytes\n", path.c_str(), out.c_str(),
-              static_cast<unsigned long long>(exporter->encoder().laps()),
+              static_cast<unsigned long long>(laps()),
               static_cast<unsigned long long>(stats.message_count), stats.chunk_count,
               static_cast<unsigned long long>(exporter->bytes_written()));
   std::fflush(stdout);

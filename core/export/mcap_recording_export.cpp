@@ -2,6 +2,8 @@
 
 #include <string_view>
 
+#include "core/export/ros_tf.h"
+
 namespace ydscope {
 
 const McapMetadataMap& ros2_channel_metadata() {
@@ -25,19 +27,21 @@ const McapMetadataMap& ros2_channel_metadata() {
 }
 
 std::unique_ptr<McapRecordingExport> McapRecordingExport::create(const std::string& path, const McapExportOptions& options,
-                                                                 std::string& error) {
+                                                                 std::string& error, std::vector<McapSource> sources) {
   auto file = McapFileSink::create(path, error);
   if (!file) return nullptr;
-  return std::unique_ptr<McapRecordingExport>(new McapRecordingExport(std::move(file), options));
+  return std::unique_ptr<McapRecordingExport>(
+      new McapRecordingExport(std::move(file), options, std::move(sources)));
 }
 
-McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options)
-    : McapRecordingExport(*file, options) {
+McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options,
+                                         std::vector<McapSource> sources)
+    : McapRecordingExport(*file, options, std::move(sources)) {
   file_ = std::move(file);
 }
 
-McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions& options)
-    : writer_(sink, options.mcap), encoder_(options.ros), frame_(options.ros.frame) {
+McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions& options, std::vector<McapSource> sources)
+    : writer_(sink, options.mcap), sources_(std::move(sources)), frame_(options.ros.frame) {
   std::uint16_t schema_ids[kRosTopicCount] = {};
   for (const RosTopicInfo& topic : ros_topics()) {
     const auto i = static_cast<std::size_t>(topic.topic);
@@ -51,28 +55,71 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
       schema_ids[i] = writer_.add_schema(topic.schema->name, "ros2msg",
                                          {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
     }
-    channel_[i] = writer_.add_channel(schema_ids[i], topic.name, "cdr", ros2_channel_metadata());
+  }
+  const std::size_t count = sources_.empty() ? 1 : sources_.size();
+  for (std::size_t id = 0; id < count; ++id) {
+    Lane lane;
+    RosExportOptions ros = options.ros;
+    const std::string prefix = sources_.empty() ? "" : "/" + sources_[id].name;
+    if (!sources_.empty()) {
+      ros.frame.frame_id = sources_[id].name;
+      if (sources_[id].model) ros.model = sources_[id].model;
+    }
+    lane.encoder = std::make_unique<RosTopicEncoder>(std::move(ros));
+    lane.metadata_name = std::string(kMcapRecordingMetadataName) + (sources_.empty() ? "" : "." + sources_[id].name);
+    for (const RosTopicInfo& topic : ros_topics()) {
+      const auto i = static_cast<std::size_t>(topic.topic);
+      lane.channel[i] = writer_.add_channel(schema_ids[i], prefix + std::string(topic.name), "cdr", ros2_channel_metadata());
+    }
+    lanes_.push_back(std::move(lane));
+  }
+  if (!sources_.empty()) {
+    const RosSchema& tf = tf_message_schema();
+    const std::uint16_t schema = writer_.add_schema(tf.name, "ros2msg",
+                                                    {reinterpret_cast<const std::uint8_t*>(tf.text.data()), tf.text.size()});
+    tf_channel_ = writer_.add_channel(schema, "/tf_static", "cdr", ros2_channel_metadata());
   }
 }
 
-void McapRecordingExport::emit(RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+void McapRecordingExport::emit(Lane& lane, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
   const auto i = static_cast<std::size_t>(topic);
-  if (observer_) observer_(topic, log_time, cdr);
-  writer_.write_message(channel_[i], sequence_[i]++, log_time, log_time, cdr);
+  if (observer_) observer_(static_cast<std::size_t>(&lane - lanes_.data()), topic, log_time, cdr);
+  writer_.write_message(lane.channel[i], lane.sequence[i]++, log_time, log_time, cdr);
 }
 
-void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns) {
+void McapRecordingExport::write_tf_static() {
+  if (sources_.empty() || tf_written_) return;
+  tf_written_ = true;
+  std::vector<RosTransform> transforms;
+  for (const McapSource& source : sources_)
+    transforms.push_back(ros_transform_of(source.pose, lanes_.front().encoder->frame(), kCommonFrameId, source.name));
+  // At the recording's start: a static transform holds from then on.
+  const auto& start = lanes_.front().encoder->recording_metadata().start_wall_time;
+  const std::uint64_t stamp = start ? parse_iso8601_utc_ns(*start).value_or(0) : 0;
+  std::vector<std::uint8_t> cdr;
+  encode_tf_message(transforms, stamp, cdr);
+  writer_.write_message(tf_channel_, 0, stamp, stamp, cdr);
+}
+
+void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns,
+                                 std::uint16_t source) {
+  if (source >= lanes_.size()) return;
   if (type == RecordType::Metadata)
-    return metadata(RecordingMetadata::parse({reinterpret_cast<const char*>(payload.data()), payload.size()}), t_ns);
-  encoder_.record(type, payload, t_ns, [this](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-    emit(topic, log_time, cdr);
+    return metadata(RecordingMetadata::parse({reinterpret_cast<const char*>(payload.data()), payload.size()}), t_ns,
+                    source);
+  write_tf_static();  // every source's metadata came first: the start time is known
+  Lane& lane = lanes_[source];
+  lane.encoder->record(type, payload, t_ns, [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+    emit(lane, topic, log_time, cdr);
   });
 }
 
-void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_t) {
-  encoder_.metadata(changes);
+void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_t, std::uint16_t source) {
+  if (source >= lanes_.size()) return;
+  Lane& lane = lanes_[source];
+  lane.encoder->metadata(changes);
   McapMetadataMap merged;
-  const std::string text = encoder_.recording_metadata().encode();
+  const std::string text = lane.encoder->recording_metadata().encode();
   // Keys and values exactly as the .ydrec metadata payload spells them (escapes kept).
   std::string_view rest = text;
   while (!rest.empty()) {
@@ -82,14 +129,14 @@ void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_
     const std::size_t equals = line.find('=');
     if (equals != std::string_view::npos) merged[std::string(line.substr(0, equals))] = std::string(line.substr(equals + 1));
   }
-  writer_.write_metadata(kMcapRecordingMetadataName, merged);
+  writer_.write_metadata(lane.metadata_name, merged);
 }
 
 void McapRecordingExport::lap(const Lap& lap, Model model, std::uint64_t stamp_ns, double scan_time_s) {
   encode_laser_scan(lap, frame_, range_limits(model), stamp_ns, scan_time_s, scan_scratch_, message_);
-  emit(RosTopic::Scan, stamp_ns, message_);
+  emit(lanes_.front(), RosTopic::Scan, stamp_ns, message_);
   encode_point_cloud(lap, frame_, stamp_ns, message_);
-  emit(RosTopic::Points, stamp_ns, message_);
+  emit(lanes_.front(), RosTopic::Points, stamp_ns, message_);
 }
 
 bool McapRecordingExport::flush() { return writer_.flush_chunk(); }
@@ -97,9 +144,11 @@ bool McapRecordingExport::flush() { return writer_.flush_chunk(); }
 bool McapRecordingExport::finish() {
   if (!finished_) {
     finished_ = true;
-    encoder_.finish([this](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-      emit(topic, log_time, cdr);
-    });
+    write_tf_static();
+    for (Lane& lane : lanes_)
+      lane.encoder->finish([&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+        emit(lane, topic, log_time, cdr);
+      });
   }
   const bool written = writer_.close();
   const bool closed = !file_ || file_->close();

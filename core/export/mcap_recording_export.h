@@ -5,15 +5,24 @@
 // written up front; each metadata record becomes an MCAP Metadata record "ydscope.recording"
 // with every key merged so far (the last one is complete), so the link-byte channels decode
 // again exactly like a .ydrec. Not thread-safe.
+//
+// Several lidars (a version-2 recording): each source's topics go under its name (/NAME/scan,
+// /NAME/points, /NAME/diagnostics, /NAME/ydscope/device_bytes, ...), its messages carry its name
+// as frame_id, its metadata is the MCAP Metadata record "ydscope.recording.NAME", and /tf_static
+// (tf2_msgs/msg/TFMessage) holds every pose as a transform from the common frame "ydscope" to the
+// source's frame (core/export/ros_tf.h), written once before the first lap.
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/export/mcap_sink.h"
 #include "core/export/mcap_writer.h"
 #include "core/export/ros_topic_encoder.h"
+#include "core/frame/pose.h"
 #include "core/record/recording_format.h"
 
 namespace ydscope {
@@ -25,20 +34,30 @@ struct McapExportOptions {
 
 inline constexpr const char* kMcapRecordingMetadataName = "ydscope.recording";
 
+// One of several lidars in an export: its name (a ROS namespace) and where it sits.
+struct McapSource {
+  std::string name;
+  Pose pose;
+  std::optional<Model> model;  // decode as; empty: options.ros.model, else the recording's
+};
+
 class McapRecordingExport {
  public:
   // Creates `path`; null plus one sentence in `error` when it cannot be created.
+  // `sources`: empty for one lidar (topics as ever), else several, by source id.
   static std::unique_ptr<McapRecordingExport> create(const std::string& path, const McapExportOptions& options,
-                                                     std::string& error);
+                                                     std::string& error, std::vector<McapSource> sources = {});
   // Writes into `sink`, which must outlive the export (tests and fuzzing use a memory sink).
-  McapRecordingExport(McapSink& sink, const McapExportOptions& options);
+  McapRecordingExport(McapSink& sink, const McapExportOptions& options, std::vector<McapSource> sources = {});
 
   // One record as a .ydrec holds it: link bytes (either direction) or a metadata payload
-  // (key=value text). Records of unknown types are ignored, as readers of .ydrec do.
-  void record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns);
-  void metadata(const RecordingMetadata& changes, std::int64_t t_ns);
+  // (key=value text). Records of unknown types, or of a source the export was not made with, are
+  // ignored, as readers of .ydrec skip what they do not know.
+  void record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns, std::uint16_t source = 0);
+  void metadata(const RecordingMetadata& changes, std::int64_t t_ns, std::uint16_t source = 0);
   // A lap decoded elsewhere (the app's shown laps): its /scan and /points, stamped `stamp_ns`
   // (ns since the Unix epoch); `scan_time_s` is the time since the previous lap's close (0: unknown).
+  // One lidar's export only: source 0's channels.
   void lap(const Lap& lap, Model model, std::uint64_t stamp_ns, double scan_time_s);
   // Closes the open chunk so what was written so far is readable (call at least once a second live).
   bool flush();
@@ -50,23 +69,35 @@ class McapRecordingExport {
   const std::string& error() const { return writer_.failed() || !file_ ? writer_.error() : file_->error(); }
   const McapStatistics& statistics() const { return writer_.statistics(); }
   std::uint64_t bytes_written() const { return writer_.bytes_written(); }
-  RosTopicEncoder& encoder() { return encoder_; }
+  RosTopicEncoder& encoder(std::size_t source = 0) { return *lanes_.at(source).encoder; }
+  std::size_t source_count() const { return lanes_.size(); }
   // Also sees every message written (the bridge serves them while they are recorded).
-  using Observer = std::function<void(RosTopic, std::uint64_t log_time, std::span<const std::uint8_t> cdr)>;
+  // `source`: 0 for one lidar, else the source id.
+  using Observer =
+      std::function<void(std::size_t source, RosTopic, std::uint64_t log_time, std::span<const std::uint8_t> cdr)>;
   void set_observer(Observer observer) { observer_ = std::move(observer); }
 
  private:
-  McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options);
-  void emit(RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
+  // One source's encoder and channels.
+  struct Lane {
+    std::unique_ptr<RosTopicEncoder> encoder;
+    std::uint16_t channel[kRosTopicCount] = {};
+    std::uint32_t sequence[kRosTopicCount] = {};
+    std::string metadata_name;
+  };
+  McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options, std::vector<McapSource> sources);
+  void emit(Lane& lane, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
+  void write_tf_static();
 
   std::unique_ptr<McapFileSink> file_;  // when the export owns its file
   McapWriter writer_;
-  RosTopicEncoder encoder_;
+  std::vector<Lane> lanes_;
+  std::vector<McapSource> sources_;     // several lidars; empty for one
+  std::uint16_t tf_channel_ = 0;
+  bool tf_written_ = false;
   RosFrameOptions frame_;
   std::vector<float> scan_scratch_;  // lap()'s
   std::vector<std::uint8_t> message_;
-  std::uint16_t channel_[kRosTopicCount] = {};
-  std::uint32_t sequence_[kRosTopicCount] = {};
   bool finished_ = false;
   Observer observer_;
 };

@@ -83,12 +83,38 @@ const RosSchema kUInt8MultiArray{"std_msgs/msg/UInt8MultiArray",
                                  "uint32 size\n"
                                  "uint32 stride\n"};
 
+// /tf_static: where each of several lidars sits (ros_tf.h).
+const RosSchema kTfMessage{"tf2_msgs/msg/TFMessage",
+                           "geometry_msgs/TransformStamped[] transforms\n"
+                           YDSCOPE_MSG_SEPARATOR
+                           "MSG: geometry_msgs/TransformStamped\n"
+                           "std_msgs/Header header\n"
+                           "string child_frame_id\n"
+                           "Transform transform\n"
+                           YDSCOPE_HEADER_DEPENDENCIES
+                           YDSCOPE_MSG_SEPARATOR
+                           "MSG: geometry_msgs/Transform\n"
+                           "Vector3 translation\n"
+                           "Quaternion rotation\n"
+                           YDSCOPE_MSG_SEPARATOR
+                           "MSG: geometry_msgs/Vector3\n"
+                           "float64 x\n"
+                           "float64 y\n"
+                           "float64 z\n"
+                           YDSCOPE_MSG_SEPARATOR
+                           "MSG: geometry_msgs/Quaternion\n"
+                           "float64 x 0\n"
+                           "float64 y 0\n"
+                           "float64 z 0\n"
+                           "float64 w 1\n"};
+
 #undef YDSCOPE_HEADER_DEPENDENCIES
 #undef YDSCOPE_MSG_SEPARATOR
 
 }  // namespace
 
 const RosSchema& laser_scan_schema() { return kLaserScan; }
+const RosSchema& tf_message_schema() { return kTfMessage; }
 const RosSchema& point_cloud2_schema() { return kPointCloud2; }
 const RosSchema& diagnostic_array_schema() { return kDiagnosticArray; }
 const RosSchema& uint8_multi_array_schema() { return kUInt8MultiArray; }

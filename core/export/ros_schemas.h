@@ -16,5 +16,7 @@ const RosSchema& point_cloud2_schema();
 const RosSchema& diagnostic_array_schema();
 // std_msgs/msg/UInt8MultiArray: the raw link bytes, in a type every ROS 2 install has.
 const RosSchema& uint8_multi_array_schema();
+// tf2_msgs/msg/TFMessage: /tf_static, where each of several lidars sits.
+const RosSchema& tf_message_schema();
 
 }  // namespace ydscope

@@ -73,6 +73,7 @@ class RosTopicEncoder {
   void set_extra_diagnostics(std::vector<std::pair<std::string, std::string>> values) { extra_ = std::move(values); }
 
   const RecordingMetadata& recording_metadata() const { return metadata_; }
+  const RosFrameOptions& frame() const { return options_.frame; }
   // Empty before the model is known.
   std::optional<DecoderCounters> counters() const;
   std::uint64_t laps() const { return laps_; }

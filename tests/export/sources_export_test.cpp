@@ -1,0 +1,150 @@
+// Several lidars in ROS terms: each pose as the /tf_static transform that carries the lidar's own
+// /points onto where the app draws them, and an export of two sources, each under its name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <numbers>
+#include <vector>
+
+#include "core/export/mcap_recording_export.h"
+#include "core/export/ros_tf.h"
+#include "core/protocol/scan_packet.h"
+#include "export/cdr_test_reader.h"
+#include "export/mcap_test_reader.h"
+
+namespace ydscope {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The ROS point a lidar at the origin pose puts at view point (x, y): the common frame is that
+// lidar's laser frame (ros_tf.h), found here through the angle rule alone.
+void view_to_ros(double x, double y, const RosFrameOptions& frame, double& rx, double& ry) {
+  const double r = std::hypot(x, y);
+  const double angle_deg = std::atan2(x, y) * 180.0 / kPi;  // clockwise from forward
+  const double a = ros_angle_rad(static_cast<float>(angle_deg < 0 ? angle_deg + 360.0 : angle_deg), frame);
+  rx = r * std::cos(a);
+  ry = r * std::sin(a);
+}
+
+// p' = q p q* + t, with the rotation written out as a matrix.
+void apply(const RosTransform& t, const double p[3], double out[3]) {
+  const double x = t.rotation[0], y = t.rotation[1], z = t.rotation[2], w = t.rotation[3];
+  const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                          {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                          {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+  for (int r = 0; r < 3; ++r) out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + t.translation[r];
+}
+
+TEST(RosTf, EachTransformCarriesTheLidarsPointsWhereThePosePutsThem) {
+  const Pose poses[] = {{0, 0, 0, false}, {1.5, -0.5, 30, false}, {-0.2, 0.3, -120, true}, {0, 0, 180, true}};
+  RosFrameOptions frames[4];
+  frames[1].reversion = false;
+  frames[2].inverted = false;
+  frames[3].reversion = frames[3].inverted = false;
+  for (const RosFrameOptions& frame : frames) {
+    for (const Pose& pose : poses) {
+      const RosTransform t = ros_transform_of(pose, frame, kCommonFrameId, "front");
+      EXPECT_NEAR(std::hypot(std::hypot(t.rotation[0], t.rotation[1]), std::hypot(t.rotation[2], t.rotation[3])), 1.0, 1e-12);
+      for (const float angle : {0.0f, 37.5f, 90.0f, 200.0f, 359.0f}) {
+        SCOPED_TRACE(format_pose(pose) + " at " + std::to_string(angle) + (frame.reversion ? " rev" : "") +
+                     (frame.inverted ? " inv" : ""));
+        const LapPoint point{angle, 2000.0f, PointFlag::None};
+        // /points of this lidar: its laser frame, metres.
+        const double a = ros_angle_rad(angle, frame);
+        const double laser[3] = {2.0 * std::cos(a), 2.0 * std::sin(a), 0};
+        double common[3];
+        apply(t, laser, common);
+        // Where the app draws the point, in the common frame's ROS axes.
+        const CommonPoint view = pose.to_common(point);
+        double rx = 0, ry = 0;
+        view_to_ros(view.x_mm / 1000.0, view.y_mm / 1000.0, frame, rx, ry);
+        EXPECT_NEAR(common[0], rx, 1e-5);
+        EXPECT_NEAR(common[1], ry, 1e-5);
+        EXPECT_NEAR(common[2], 0.0, 1e-9);
+      }
+    }
+  }
+  const RosTransform identity = ros_transform_of({}, {}, kCommonFrameId, "front");
+  EXPECT_NEAR(identity.rotation[3], 1.0, 1e-12);
+}
+
+// Two G6 laps' worth of bytes.
+std::vector<std::uint8_t> g6_bytes() {
+  std::vector<std::uint8_t> out;
+  for (int lap = 0; lap < 3; ++lap) {
+    append_scan_packet({kCtLapStart, encode_raw_angle(0), encode_raw_angle(0), std::vector<std::uint16_t>{0}}, out);
+    for (int i = 0; i < 12; ++i)
+      append_scan_packet({0, encode_raw_angle(i * 30.0 + 0.2), encode_raw_angle(i * 30.0 + 29.8),
+                          std::vector<std::uint16_t>(20, static_cast<std::uint16_t>(4000 + 40 * lap))},
+                         out);
+  }
+  return out;
+}
+
+TEST(McapRecordingExport, SeveralSourcesEachUnderItsNameWithTfStatic) {
+  McapMemorySink sink;
+  McapRecordingExport exporter(sink, {}, {{"front", {0.2, 0, 0, false}, Model::G6}, {"back", {-0.2, 0, 180, true}, {}}});
+  for (std::uint16_t source = 0; source < 2; ++source) {
+    RecordingMetadata metadata;
+    metadata.model = "G6";
+    metadata.start_wall_time = "2026-12-02T09:00:00Z";
+    exporter.metadata(metadata, 0, source);
+  }
+  const auto bytes = g6_bytes();
+  exporter.record(RecordType::DeviceToHost, bytes, 1000, 0);
+  exporter.record(RecordType::DeviceToHost, bytes, 2000, 1);
+  exporter.record(RecordType::DeviceToHost, bytes, 3000, 7);  // a source it was not made with: ignored
+  ASSERT_TRUE(exporter.finish()) << exporter.error();
+
+  const auto contents = test::read_mcap(sink.bytes());
+  ASSERT_TRUE(contents.complete);
+  std::map<std::string, std::uint16_t> ids;
+  for (const auto& [id, channel] : contents.channels) ids[channel.topic] = id;
+  for (const char* topic : {"/front/scan", "/front/points", "/front/diagnostics", "/front/ydscope/device_bytes",
+                            "/back/scan", "/back/points", "/back/ydscope/host_bytes", "/tf_static"})
+    EXPECT_EQ(ids.count(topic), 1u) << topic;
+  EXPECT_EQ(ids.count("/scan"), 0u);
+  EXPECT_EQ(contents.schemas.at(contents.channels.at(ids["/tf_static"]).schema_id).name, "tf2_msgs/msg/TFMessage");
+
+  std::map<std::string, std::size_t> messages;
+  for (const auto& m : contents.messages) {
+    const std::string& topic = contents.channels.at(m.channel_id).topic;
+    ++messages[topic];
+    if (topic == "/front/points" || topic == "/back/points") {
+      test::CdrReader r(m.data);
+      r.i32();
+      r.u32();
+      EXPECT_EQ(r.str(), topic.substr(1, topic.find('/', 1) - 1));  // frame_id: the source's name
+    }
+    if (topic != "/tf_static") continue;
+    EXPECT_EQ(m.log_time, 1'796'202'000'000'000'000ull);  // the recording's start
+    test::CdrReader r(m.data);
+    ASSERT_EQ(r.u32(), 2u);
+    for (const char* child : {"front", "back"}) {
+      r.i32();
+      r.u32();
+      EXPECT_EQ(r.str(), kCommonFrameId);
+      EXPECT_EQ(r.str(), child);
+      double v[7];
+      for (double& x : v) std::memcpy(&x, r.take(8, 8), 8);
+      const RosTransform expected = ros_transform_of(std::string(child) == "front" ? Pose{0.2, 0, 0, false}
+                                                                                    : Pose{-0.2, 0, 180, true},
+                                                     {}, kCommonFrameId, child);
+      for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(v[i], expected.translation[i]);
+      for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(v[3 + i], expected.rotation[i]);
+    }
+    EXPECT_TRUE(r.at_end());
+  }
+  EXPECT_EQ(messages["/tf_static"], 1u);
+  EXPECT_EQ(messages["/front/points"], 2u);
+  EXPECT_EQ(messages["/back/points"], 2u);
+  EXPECT_EQ(exporter.encoder(0).laps(), 2u);
+  EXPECT_EQ(exporter.encoder(1).laps(), 2u);
+  EXPECT_EQ(contents.metadata.size(), 2u);  // one per source's metadata record
+}
+
+}  // namespace
+}  // namespace ydscope
