@@ -12,7 +12,9 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/mcap_output.h"
+#include "app/cli/serve_sources.h"
 #include "app/cli/session_cli.h"
+#include "app/cli/source_options.h"
 #include "core/bridge/session_share.h"
 
 namespace ydscope::cli {
@@ -21,6 +23,7 @@ namespace {
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli serve --port PATH|tcp://HOST:PORT [--listen HOST:PORT] [--mcap FILE]
                          [--model auto|MODEL] [--baud B|auto] [--queue N] [--seconds S]
                          [--force] [MCAP options]
+       ydscope-cli serve --port PATH [--name NAME] [--pose X,Y,YAW[,flip]] --port PATH ... [options]
 
 Connects to the lidar and keeps it scanning (reconnecting after faults, like the app), and serves
 it live to Foxglove over the Foxglove WebSocket protocol (subprotocol foxglove.websocket.v1):
@@ -37,8 +40,17 @@ Parameters (Foxglove's Parameters panel, or any client's setParameters):
   filter_specular        bool, drop G1 points flagged as specular reflection (flag 2)
   filter_ambient         bool, drop G1 points flagged as ambient light (flag 3)
 
+Several lidars (--port once for each): each scans in a session of its own and is served under
+its name, /NAME/scan, /NAME/points, /NAME/diagnostics, /NAME/ydscope/device_bytes and
+host_bytes (frame_id NAME), plus /tf_static (tf2_msgs/msg/TFMessage, sent every second): every
+pose as the transform from the common frame "ydscope" to NAME. Parameters are NAME/scan_hz and
+so on; --mcap records the same topics. One lidar's fault is a status message naming it.
+
 options:
-  --port PATH        serial port (see `ydscope-cli ports`) or tcp://host:port
+  --port PATH        serial port (see `ydscope-cli ports`) or tcp://host:port; repeat for several
+  --name NAME        several lidars: each one's name, once per --port in order (default lidar0, ...)
+  --pose X,Y,YAW[,flip]  several lidars: each one's place, once per --port (metres, metres,
+                     degrees counter-clockwise; flip when mounted upside down; default 0,0,0)
   --listen HOST:PORT where to accept WebSocket clients (default 127.0.0.1:8765, this machine
                      only). Any other address serves the lidar to the network, without any
                      authentication: a warning says so. Port 0 picks a free port.
@@ -88,8 +100,19 @@ foxglove::ServerOptions listen_options(const Arguments& args) {
 }
 
 int run_serve(std::span<const std::string> raw) {
-  const Arguments args(raw, with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds"})),
-                       with_mcap_flags({"force"}));
+  const Arguments args(raw,
+                       with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose"})),
+                       with_mcap_flags({"force"}), 0, source_repeatable_options());
+  if (args.values("port").size() > 1) {
+    const foxglove::ServerOptions options = listen_options(args);
+    std::signal(SIGINT, serve_on_signal);
+    std::signal(SIGTERM, serve_on_signal);
+    return serve_sources(args, options, stop_requested);
+  }
+  for (const std::string& option : source_repeatable_options())
+    if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
+  if (args.value("name") || args.value("pose"))
+    throw UsageError("--name and --pose place one of several lidars; give them with two or more --port");
   SessionConfig config = session_config_from(args, /*scan=*/true);
   config.reconnect = true;
   ShareOptions options;
