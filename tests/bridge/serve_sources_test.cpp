@@ -19,6 +19,7 @@
 
 #include "bridge/ws_test_client.h"
 #include "core/sim/sim_server.h"
+#include "support/temp_dir.h"
 
 extern char** environ;
 
@@ -34,8 +35,8 @@ std::string slurp(const fs::path& file) {
 }
 
 TEST(ServeSources, EachLidarUnderItsNameAndEveryPoseOnTfStatic) {
-  const fs::path dir = fs::temp_directory_path() / ("ydscope-serve-sources-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test::TempDir temp("serve-sources");
+  const fs::path& dir = temp.path();
   std::vector<std::unique_ptr<SimServer>> sims;
   for (const auto& [model, link] : {std::pair{Model::G1, "g1"}, std::pair{Model::G6, "g6"}}) {
     SimServerOptions options;
@@ -99,7 +100,6 @@ TEST(ServeSources, EachLidarUnderItsNameAndEveryPoseOnTfStatic) {
   ::waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "err");
   sims.clear();
-  fs::remove_all(dir);
 }
 
 }  // namespace

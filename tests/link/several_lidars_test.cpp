@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "link/fault_matrix_support.h"
-#include "link/session_test_support.h"
+#include "cli/fault_matrix_support.h"
+#include "support/session_test_support.h"
 
 namespace ydscope {
 namespace {

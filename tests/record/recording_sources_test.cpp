@@ -1,8 +1,5 @@
 // Recording format version 2: several sources in one file, each with its id in every record and
 // its own metadata (name, pose); one source still writes version 1, byte for byte as before.
-#include <unistd.h>
-
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -10,27 +7,21 @@
 
 #include "core/record/recording_reader.h"
 #include "core/record/recording_writer.h"
-#include "link/raw_recording.h"
+#include "support/raw_recording.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
 
-namespace fs = std::filesystem;
 using Bytes = std::vector<std::uint8_t>;
 
 constexpr std::int64_t kStart = 7'000'000'000;
 
 class RecordingSourcesTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-src-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return dir_.file(name); }
 
-  fs::path dir_;
+  test::TempDir dir_{"sources"};
 };
 
 RecordingMetadata source(const char* name, const char* model, const char* port, Pose pose) {

@@ -1,8 +1,6 @@
 // ydscope-cli record with several --port, as a user runs it against three virtual lidars: one
 // recording holds them all, and replay and decode print every lidar's laps tagged with its name.
 // Mistakes in naming or placing the lidars are one sentence and exit status 2.
-#include <unistd.h>
-
 #include <filesystem>
 #include <map>
 #include <string>
@@ -10,9 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "core/record/recording_reader.h"
-#include "link/cli_run_support.h"
-#include "link/raw_recording.h"
-#include "link/session_test_support.h"
+#include "cli/cli_run_support.h"
+#include "support/raw_recording.h"
+#include "support/session_test_support.h"
+#include "support/temp_dir.h"
 
 namespace ydscope {
 namespace {
@@ -23,15 +22,9 @@ using test::run_cli_apart;
 
 class SeveralLidarsCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("ydscope-several-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return dir_.file(name); }
 
-  fs::path dir_;
+  test::TempDir dir_{"several"};
 };
 
 // Lines of `text` that start with `prefix`, by the value of their "source" field.
