@@ -43,7 +43,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 
   Core(boost::asio::io_context& io, std::unique_ptr<RecordingReader> reader, const ReplayOptions& options,
        std::int64_t duration_ns)
-      : io_(io), timer_(io), reader_(std::move(reader)), speed_(bounded_replay_speed(options.speed)),
+      : io_(io), timer_(io), reader_(std::move(reader)), source_(options.source), speed_(bounded_replay_speed(options.speed)),
         paused_(options.paused), loop_(options.loop), anchor_wall_(Clock::now()) {
     status_duration_.store(duration_ns);
     publish();
@@ -131,7 +131,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   bool load_next() {
     RecordView record;
     while (reader_->next(record)) {
-      if (record.type != RecordType::DeviceToHost || record.payload.empty()) continue;
+      if (record.type != RecordType::DeviceToHost || record.payload.empty() || record.source != source_) continue;
       chunk_.assign(record.payload.begin(), record.payload.end());
       chunk_offset_ = 0;
       chunk_t_ = record.t_ns;
@@ -207,6 +207,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   boost::asio::io_context& io_;
   boost::asio::steady_timer timer_;
   std::unique_ptr<RecordingReader> reader_;
+  std::uint16_t source_;
   std::vector<std::uint8_t> chunk_;
   std::size_t chunk_offset_ = 0;
   std::int64_t chunk_t_ = 0;
@@ -253,11 +254,21 @@ std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const 
                                              RecordingOpenFailure* failure) {
   const auto summary = summarize_recording(path, error, failure);
   if (!summary) return nullptr;
+  if (options.source >= summary->sources.size()) {
+    error = path + " has no source " + std::to_string(options.source) + " (it holds " +
+            std::to_string(summary->sources.size()) + ")";
+    return nullptr;
+  }
   if (error = nothing_to_replay(*summary, path); !error.empty()) return nullptr;
+  if (summary->sources[options.source].device_bytes == 0) {
+    error = path + "'s source " + std::to_string(options.source) + " holds no bytes from a device; nothing to replay";
+    return nullptr;
+  }
   auto reader = RecordingReader::open(path, error);
   if (!reader) return nullptr;
   auto core = std::make_shared<Core>(io, std::move(reader), options, summary->duration_ns);
-  return std::unique_ptr<ReplayLink>(new ReplayLink(std::move(core), path, summary->metadata, summary->damage));
+  return std::unique_ptr<ReplayLink>(
+      new ReplayLink(std::move(core), path, summary->sources[options.source].metadata, summary->damage));
 }
 
 void ReplayLink::async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) {

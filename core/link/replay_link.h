@@ -34,6 +34,9 @@ struct ReplayOptions {
   double speed = 1.0;  // 1 original timing, >1 faster, <1 slower, 0 as fast as possible
   bool loop = false;   // start again at the end instead of reporting end-of-file
   bool paused = false;
+  // A recording of several lidars (format version 2): the one whose bytes play; the others' are
+  // passed over, so one link never mixes two lidars' streams. Version 1 has only source 0.
+  std::uint16_t source = 0;
 };
 
 struct ReplayStatus {
@@ -77,7 +80,8 @@ class ReplayLink final : public ByteLink {
   // I/O thread, in a read's completion handler: the recorded time of the bytes it delivered (a
   // read never spans two records), so a decoder stamps them as decode of the file would.
   std::int64_t recorded_time_of_last_read() const;
-  // The recording's metadata, every metadata record merged (model, baud, device info...).
+  // The recording's metadata, every metadata record merged (model, baud, device info...): of the
+  // source that plays.
   const RecordingMetadata& metadata() const { return metadata_; }
   const RecordingMetadata* recording_metadata() const override { return &metadata_; }
   // What opening found wrong but playable, one sentence each: a truncated or corrupt tail,

@@ -60,6 +60,35 @@ class ReplayLinkTest : public ::testing::Test {
   std::string path_ = dir_.file("recording.ydrec");
 };
 
+TEST_F(ReplayLinkTest, OfSeveralLidarsOnlyTheChosenOnesBytesPlay) {
+  RecordingMetadata g1;
+  g1.model = "G1";
+  RecordingMetadata g6;
+  g6.model = "G6";
+  std::string error;
+  auto writer = RecordingWriter::create_sources(path_, {g1, g6}, 0, error);
+  ASSERT_TRUE(writer) << error;
+  Bytes first, second;
+  for (std::uint8_t i = 0; i < 20; ++i) {
+    const Bytes a(5, i), b(3, static_cast<std::uint8_t>(100 + i));
+    writer->append(Direction::DeviceToHost, a, 1000 * (i + 1), 0);
+    writer->append(Direction::DeviceToHost, b, 1000 * (i + 1) + 500, 1);
+    first.insert(first.end(), a.begin(), a.end());
+    second.insert(second.end(), b.begin(), b.end());
+  }
+  writer->close();
+  for (std::uint16_t source : {0, 1}) {
+    boost::asio::io_context io;
+    auto link = ReplayLink::open(io, path_, {.speed = 0, .source = source}, error);
+    ASSERT_TRUE(link) << error;
+    EXPECT_EQ(link->metadata().model, source == 0 ? "G1" : "G6");
+    EXPECT_EQ(read_until(io, *link, SIZE_MAX, 4).first, source == 0 ? first : second);
+  }
+  boost::asio::io_context io;
+  EXPECT_FALSE(ReplayLink::open(io, path_, {.speed = 0, .source = 2}, error));
+  EXPECT_EQ(error, path_ + " has no source 2 (it holds 2)");
+}
+
 TEST_F(ReplayLinkTest, FastestSpeedReturnsExactlyTheDeviceBytesThenEof) {
   const Bytes device = write_recording(40);
   boost::asio::io_context io;
