@@ -165,7 +165,8 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   if (tty) std::fputs("\r\033[K", stderr);
 
   // Close the file first (every tap's last records in it), then stop the lidars.
-  for (Source& source : sources) wait_for([&](CommandCallback done) { source.session->stop_tap(std::move(done)); });
+  for (std::size_t id = 0; id < sources.size(); ++id)
+    wait_for([&](CommandCallback done) { sources[id].session->stop_tap(recording->tap(id), std::move(done)); });
   if (!recording->finish() && failure.empty()) failure = recording->error();
   for (Source& source : sources) source.session->disconnect();
   for (Source& source : sources)

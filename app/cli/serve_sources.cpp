@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "app/cli/mcap_output.h"
-#include "app/cli/session_parameters.h"
 #include "app/cli/source_options.h"
+#include "core/bridge/session_parameters.h"
 #include "core/export/mcap_recording_export.h"
 #include "core/export/ros_schemas.h"
 #include "core/export/ros_tf.h"
@@ -22,6 +22,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using foxglove::Parameter;
+using foxglove::SessionParameters;
 
 // /tf_static again this often: a client that subscribes late still learns every pose.
 constexpr std::chrono::seconds kTfRepeat{1};
@@ -186,7 +187,7 @@ int serve_sources(const Arguments& args, foxglove::ServerOptions server_options,
     }
   }
 
-  for (Source& source : sources) source.session->stop_tap();
+  for (Source& source : sources) source.session->stop_tap(source.tap);
   for (const auto& c : server.clients())
     std::fprintf(stderr, "ydscope-cli serve: client %s: %llu messages sent, %llu dropped\n", c.peer.c_str(),
                  static_cast<unsigned long long>(c.sent), static_cast<unsigned long long>(c.dropped));

@@ -20,7 +20,8 @@ std::unique_ptr<LiveTopics> LiveTopics::start(Session& session, LiveTopicsOption
   if (!live->options_.mcap_path.empty()) {
     live->mcap_ = McapRecordingExport::create(live->options_.mcap_path, live->options_.topics, error);
     if (!live->mcap_) return nullptr;
-    live->mcap_->set_observer([p = live.get()](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+    live->mcap_->set_observer([p = live.get()](std::size_t, RosTopic topic, std::uint64_t log_time,
+                                               std::span<const std::uint8_t> cdr) {
       p->publish(topic, log_time, cdr);
     });
   }
