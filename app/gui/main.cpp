@@ -57,13 +57,13 @@ void set_window_icon(GLFWwindow* window) {
 }
 
 // The rate to animate at: the refresh rate of the monitor showing the window (full screen) or
-// of the primary one, held lower on a software renderer.
-double refresh_hz(GLFWwindow* window) {
+// of the primary one, held lower on a software renderer. The monitor may change under a moved
+// window; the renderer (`gl_renderer`, read once) does not.
+double refresh_hz(GLFWwindow* window, const char* gl_renderer) {
   GLFWmonitor* monitor = glfwGetWindowMonitor(window);
   if (monitor == nullptr) monitor = glfwGetPrimaryMonitor();
   const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return ydscope::ui::animation_hz(mode != nullptr ? mode->refreshRate : 0.0, renderer);
+  return ydscope::ui::animation_hz(mode != nullptr ? mode->refreshRate : 0.0, gl_renderer);
 }
 
 int run(const ydscope::gui::AppOptions& options) {
@@ -133,6 +133,7 @@ int run(const ydscope::gui::AppOptions& options) {
       const auto deadline = started + std::chrono::seconds(30);
       int frames = 0;
       auto frame_started = started;
+      const auto* gl_renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
       std::signal(SIGINT, on_stop_signal);
       std::signal(SIGTERM, on_stop_signal);
       std::signal(SIGUSR1, on_screenshot_signal);
@@ -146,7 +147,7 @@ int run(const ydscope::gui::AppOptions& options) {
         // the fading between laps at the display's rate, or keeps the statistics ticking.
         const ydscope::ui::FrameNeeds needs{screenshot_mode, app->animating(), app->streaming()};
         const double since_frame_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_started).count();
-        glfwWaitEventsTimeout(ydscope::ui::frame_wait_s(needs, since_frame_s, refresh_hz(window)));
+        glfwWaitEventsTimeout(ydscope::ui::frame_wait_s(needs, since_frame_s, refresh_hz(window, gl_renderer)));
         frame_started = std::chrono::steady_clock::now();
         if (g_content_scale != theme_scale) {
           theme_scale = g_content_scale;
