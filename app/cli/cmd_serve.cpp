@@ -132,36 +132,11 @@ int run_serve(std::span<const std::string> raw) {
   std::string error;
   auto share = SessionShare::start(session, options, error);
   if (!share) throw std::runtime_error(error);
-  if (!is_loopback_host(share->host()))
-    std::fprintf(stderr, "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
-                         "lidar and change its settings (there is no authentication)\n", share->host().c_str());
+  warn_if_not_loopback(*share);
   session.connect(config);
   std::printf("serving %s for %s\n", share->address().c_str(), config.address.c_str());
   std::fflush(stdout);
-
-  const auto start = Clock::now();
-  LinkState last_state = LinkState::Idle;
-  Lap lap;
-  while (!stop_requested.load() && (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    session.laps().drain_newest(lap);  // the served laps come from the tap; keep the queue empty
-    if (const std::string failed = share->topics().error(); !failed.empty()) throw std::runtime_error(failed);
-    const SessionSnapshot s = session.snapshot();
-    if (s.state == last_state) continue;
-    last_state = s.state;
-    if (s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled)
-      std::fprintf(stderr, "ydscope-cli serve: %s\n", describe_snapshot(s).c_str());
-  }
-
-  for (const auto& c : share->clients())
-    std::fprintf(stderr, "ydscope-cli serve: client %s: %llu messages sent, %llu dropped\n", c.peer.c_str(),
-                 static_cast<unsigned long long>(c.sent), static_cast<unsigned long long>(c.dropped));
-  const bool written = share->stop();
-  session.disconnect();
-  if (!written) throw std::runtime_error(share->topics().error());
-  if (mcap_path)
-    std::fprintf(stderr, "ydscope-cli serve: wrote %s: %llu laps, %llu messages\n", mcap_path->c_str(),
-                 static_cast<unsigned long long>(share->topics().laps()), static_cast<unsigned long long>(share->topics().messages()));
+  serve_until_stopped(*share, {{"", &session}}, seconds, stop_requested);
   return kExitOk;
 }
 

@@ -4,6 +4,7 @@
 #include <future>
 
 #include "core/bridge/ros_topic_channels.h"
+#include "core/export/ros_tf.h"
 
 namespace ydscope {
 namespace {
@@ -12,17 +13,40 @@ using Clock = std::chrono::steady_clock;
 // A live MCAP closes its chunk at least this often, so a killed writer loses under a second.
 constexpr auto kFlushEvery = std::chrono::milliseconds(900);
 constexpr auto kTakeWait = std::chrono::milliseconds(20);
+// /tf_static again this often: a client that subscribes late still learns every pose.
+constexpr auto kPosesEvery = std::chrono::seconds(1);
+
+std::uint64_t unix_now_ns() {
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+}
 
 }  // namespace
 
+LiveTopics::LiveTopics(std::vector<LiveSource> sources, LiveTopicsOptions options) : options_(std::move(options)) {
+  for (LiveSource& source : sources) {
+    if (sources.size() > 1) sources_.push_back(source.about);
+    lanes_.push_back({std::move(source), nullptr});
+  }
+}
+
 std::unique_ptr<LiveTopics> LiveTopics::start(Session& session, LiveTopicsOptions options, std::string& error) {
-  std::unique_ptr<LiveTopics> live(new LiveTopics(session, std::move(options)));
+  std::vector<LiveSource> one{{&session, {}, options.parameters}};
+  return begin(std::unique_ptr<LiveTopics>(new LiveTopics(std::move(one), std::move(options))), error);
+}
+
+std::unique_ptr<LiveTopics> LiveTopics::start(std::vector<LiveSource> sources, LiveTopicsOptions options,
+                                              std::string& error) {
+  return begin(std::unique_ptr<LiveTopics>(new LiveTopics(std::move(sources), std::move(options))), error);
+}
+
+std::unique_ptr<LiveTopics> LiveTopics::begin(std::unique_ptr<LiveTopics> live, std::string& error) {
   if (!live->options_.mcap_path.empty()) {
-    live->mcap_ = McapRecordingExport::create(live->options_.mcap_path, live->options_.topics, error);
+    live->mcap_ = McapRecordingExport::create(live->options_.mcap_path, live->options_.topics, error, live->sources_);
     if (!live->mcap_) return nullptr;
-    live->mcap_->set_observer([p = live.get()](std::size_t, RosTopic topic, std::uint64_t log_time,
+    live->mcap_->set_observer([p = live.get()](std::size_t source, RosTopic topic, std::uint64_t log_time,
                                                std::span<const std::uint8_t> cdr) {
-      p->publish(topic, log_time, cdr);
+      p->publish(source, topic, log_time, cdr);
     });
   }
   live->attach();
@@ -34,35 +58,44 @@ LiveTopics::~LiveTopics() { stop(); }
 
 void LiveTopics::attach() {
   detach();
-  tap_ = std::make_shared<RecordTap>();
+  std::vector<std::shared_ptr<RecordTap>> taps;
+  for (Lane& lane : lanes_) {
+    lane.tap = std::make_shared<RecordTap>();
+    taps.push_back(lane.tap);
+  }
   {
     std::lock_guard lock(mutex_);
-    next_tap_ = tap_;
-    new_tap_ = true;
+    next_taps_ = taps;
+    new_taps_ = true;
   }
-  session_.start_tap(tap_);
+  for (Lane& lane : lanes_) lane.source.session->start_tap(lane.tap);
 }
 
 void LiveTopics::detach() {
-  if (!tap_) return;
-  session_.stop_tap(tap_);
-  tap_.reset();
+  if (!attached()) return;
+  for (Lane& lane : lanes_) {
+    lane.source.session->stop_tap(lane.tap);
+    lane.tap.reset();
+  }
   std::lock_guard lock(mutex_);
-  next_tap_.reset();
-  new_tap_ = true;
+  next_taps_.assign(lanes_.size(), nullptr);
+  new_taps_ = true;
 }
 
 bool LiveTopics::stop() {
   if (stopped_) return error().empty();
   stopped_ = true;
-  if (tap_) {
-    // The tap closes on the session's I/O thread; what it holds until then is still written.
+  // Each tap closes on its session's I/O thread; what it holds until then is still written.
+  std::vector<std::future<void>> closing;
+  for (Lane& lane : lanes_) {
+    if (!lane.tap) continue;
     auto closed = std::make_shared<std::promise<void>>();
-    auto done = closed->get_future();
-    session_.stop_tap(tap_, [closed](const CommandResult&) { closed->set_value(); });
-    done.wait_for(std::chrono::seconds(3));
-    tap_.reset();
+    closing.push_back(closed->get_future());
+    lane.source.session->stop_tap(lane.tap, [closed](const CommandResult&) { closed->set_value(); });
+    lane.tap.reset();
   }
+  const auto give_up = Clock::now() + std::chrono::seconds(3);
+  for (auto& closed : closing) closed.wait_until(give_up);
   stopping_.store(true);
   if (thread_.joinable()) thread_.join();
   if (mcap_) {
@@ -86,65 +119,103 @@ std::string LiveTopics::error() const {
   return error_;
 }
 
-void LiveTopics::publish(RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+void LiveTopics::publish(std::size_t source, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
   messages_.fetch_add(1, std::memory_order_relaxed);
   if (options_.server)
-    options_.server->publish(foxglove::channel_id(topic), log_time,
+    options_.server->publish(foxglove::channel_id(topic, source), log_time,
                              std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
 }
 
-void LiveTopics::tell_link_state() {
-  const SessionSnapshot s = session_.snapshot();
-  if (s.state == told_state_) return;
-  told_state_ = s.state;
+void LiveTopics::tell_link_state(std::size_t source, Reading& reading) {
+  const SessionSnapshot s = lanes_[source].source.session->snapshot();
+  if (s.state == reading.told_state) return;
+  reading.told_state = s.state;
   const bool bad = s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled;
+  const std::string who = several() ? lanes_[source].source.about.name + ": lidar " : "lidar ";
   options_.server->broadcast_status(bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
-                                    std::string("lidar ") + std::string(link_state_name(s.state)) +
+                                    who + std::string(link_state_name(s.state)) +
                                         (s.message.empty() ? "" : ": " + s.message));
 }
 
+void LiveTopics::publish_poses() {
+  std::vector<RosTransform> transforms;
+  for (const McapSource& source : sources_)
+    transforms.push_back(ros_transform_of(source.pose, options_.topics.ros.frame, kCommonFrameId, source.name));
+  std::vector<std::uint8_t> cdr;
+  const std::uint64_t now_ns = unix_now_ns();
+  encode_tf_message(transforms, now_ns, cdr);
+  options_.server->publish(foxglove::tf_static_channel_id(sources_.size()), now_ns,
+                           std::make_shared<const std::vector<std::uint8_t>>(std::move(cdr)));
+}
+
+void LiveTopics::take_new_taps(std::vector<Reading>& readings, std::uint64_t& laps_before) {
+  std::lock_guard lock(mutex_);
+  if (!new_taps_) return;
+  new_taps_ = false;
+  for (std::size_t id = 0; id < readings.size(); ++id) {
+    readings[id].tap = next_taps_.at(id);
+    if (mcap_) continue;
+    if (readings[id].encoder) laps_before += readings[id].encoder->laps();
+    readings[id].encoder = std::make_unique<RosTopicEncoder>(
+        several() ? ros_options_of(options_.topics.ros, sources_[id]) : options_.topics.ros);
+  }
+}
+
+RosTopicEncoder& LiveTopics::topics_of(std::vector<Reading>& readings, std::size_t id) {
+  return mcap_ ? mcap_->encoder(id) : *readings[id].encoder;
+}
+
 void LiveTopics::run() {
-  std::shared_ptr<RecordTap> tap;
-  std::unique_ptr<RosTopicEncoder> encoder;  // without a file; a file's export has its own
-  std::uint64_t laps_before = 0;             // of the encoders before the current one
+  std::vector<Reading> readings(lanes_.size());
+  std::uint64_t laps_before = 0;  // of the encoders before the current ones
   std::vector<TapRecord> records;
   auto last_flush = Clock::now();
-  const auto emit = [this](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-    publish(topic, log_time, cdr);
-  };
+  auto last_poses = Clock::time_point{};
   for (;;) {
-    {
-      std::lock_guard lock(mutex_);
-      if (new_tap_) {
-        new_tap_ = false;
-        tap = next_tap_;
-        if (!mcap_) {
-          if (encoder) laps_before += encoder->laps();
-          encoder = std::make_unique<RosTopicEncoder>(options_.topics.ros);
-        }
+    take_new_taps(readings, laps_before);
+    if (options_.server) {
+      for (std::size_t id = 0; id < readings.size(); ++id) tell_link_state(id, readings[id]);
+      if (several() && Clock::now() - last_poses >= kPosesEvery) {
+        publish_poses();
+        last_poses = Clock::now();
       }
     }
-    if (options_.server) tell_link_state();
-    if (!tap) {
-      if (stopping_.load()) break;
-      std::this_thread::sleep_for(kTakeWait);
-      continue;
+    bool reading_any = false;
+    bool all_drained = true;
+    std::uint64_t dropped = 0;
+    for (std::size_t id = 0; id < readings.size(); ++id) {
+      Reading& reading = readings[id];
+      if (!reading.tap) continue;
+      RosTopicEncoder& topics = topics_of(readings, id);
+      // The first open tap waits for records; the others are only looked at.
+      const bool open = reading.tap->wait_and_take(records, reading_any ? std::chrono::milliseconds(0) : kTakeWait);
+      reading_any = true;
+      if (lanes_[id].source.parameters) topics.set_filter(lanes_[id].source.parameters->filter());
+      for (const TapRecord& r : records) {
+        if (mcap_) {
+          mcap_->record(r.type, r.payload, r.t_ns, static_cast<std::uint16_t>(id));
+        } else {
+          topics.record(r.type, r.payload, r.t_ns,
+                        [this, id](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+                          publish(id, topic, log_time, cdr);
+                        });
+        }
+      }
+      // Nothing came although the tap was closed, or stop() gave up waiting for it to close.
+      const bool drained = records.empty() && (!open || stopping_.load());
+      reading.tap->recycle(records);
+      if (const auto lost = reading.tap->dropped()) {
+        dropped += lost;
+        topics.set_extra_diagnostics({{"tap_dropped_records", std::to_string(lost)}});
+      }
+      if (drained && !stopping_.load()) reading.tap.reset();  // closed: wait for the next one, or for stop()
+      all_drained = all_drained && drained;
     }
-    const bool open = tap->wait_and_take(records, kTakeWait);
-    RosTopicEncoder& topics = mcap_ ? mcap_->encoder() : *encoder;
-    if (options_.parameters) topics.set_filter(options_.parameters->filter());
-    for (const TapRecord& r : records) {
-      if (mcap_) mcap_->record(r.type, r.payload, r.t_ns);
-      else topics.record(r.type, r.payload, r.t_ns, emit);
-    }
-    // Nothing came although the tap was closed, or stop() gave up waiting for it to close.
-    const bool drained = records.empty() && (!open || stopping_.load());
-    tap->recycle(records);
-    laps_.store(laps_before + topics.laps());
-    if (const auto dropped = tap->dropped()) {
-      dropped_.store(dropped);
-      topics.set_extra_diagnostics({{"tap_dropped_records", std::to_string(dropped)}});
-    }
+    std::uint64_t laps = laps_before;
+    for (std::size_t id = 0; id < readings.size(); ++id)
+      if (mcap_ || readings[id].encoder) laps += topics_of(readings, id).laps();
+    laps_.store(laps);
+    if (dropped) dropped_.store(dropped);
     if (mcap_) {
       if (Clock::now() - last_flush >= kFlushEvery) {
         mcap_->flush();
@@ -156,10 +227,8 @@ void LiveTopics::run() {
         if (error_.empty()) error_ = "writing " + options_.mcap_path + " failed: " + mcap_->error();
       }
     }
-    if (drained) {
-      if (stopping_.load()) break;
-      tap.reset();  // closed: wait for the next one, or for stop()
-    }
+    if (stopping_.load() && all_drained) break;
+    if (!reading_any) std::this_thread::sleep_for(kTakeWait);
   }
 }
 

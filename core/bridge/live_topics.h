@@ -1,14 +1,18 @@
 #pragma once
-// LiveTopics: a live session's records (a RecordTap of its own) turned into ROS 2 topics on a
-// thread of its own: into an MCAP file, to the clients of a FoxgloveServer, or both. It is how
-// `ydscope-cli record --mcap` and `serve`, and the app's Share and MCAP recording, all go live,
-// so compression and slow clients never hold up the session's I/O thread or the UI.
+// LiveTopics: live sessions' records (a RecordTap of each) turned into ROS 2 topics on a thread
+// of its own: into an MCAP file, to the clients of a FoxgloveServer, or both. It is how
+// `ydscope-cli record --mcap` and `serve` (one lidar or several), and the app's Share and MCAP
+// recording, all go live, so compression and slow clients never hold up a session's I/O thread
+// or the UI.
 //
-// With a server it also tells the clients when the lidar's link goes down or comes back (a
-// status message) and applies the filter the clients set through SessionParameters.
+// One lidar's topics are named as ever (/scan ...). Several lidars' are /NAME/scan and so on,
+// with every pose on /tf_static (channel ids: core/bridge/ros_topic_channels.h).
+//
+// With a server it also tells the clients when a lidar's link goes down or comes back (a
+// status message) and applies the filter the clients set through each SessionParameters.
 //
 // Thread contract: every method is for the thread that created it; error(), laps() and the
-// counters may be read from any thread. The session must outlive it.
+// counters may be read from any thread. The sessions must outlive it.
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -28,7 +32,14 @@ struct LiveTopicsOptions {
   McapExportOptions topics;                     // frame, model, link bytes; the file's compression
   std::string mcap_path;                        // empty: no file
   foxglove::FoxgloveServer* server = nullptr;   // publish to its clients (must outlive this)
-  foxglove::SessionParameters* parameters = nullptr;  // the clients' filter choice
+  foxglove::SessionParameters* parameters = nullptr;  // one lidar: the clients' filter choice
+};
+
+// One of several lidars.
+struct LiveSource {
+  Session* session = nullptr;
+  McapSource about;                                   // its name (the topics' namespace), pose, model
+  foxglove::SessionParameters* parameters = nullptr;  // the clients' filter choice for it
 };
 
 class LiveTopics {
@@ -36,6 +47,10 @@ class LiveTopics {
   // Creates the MCAP file (when asked) and taps the session. Null plus one sentence in `error`
   // when the file cannot be created.
   static std::unique_ptr<LiveTopics> start(Session& session, LiveTopicsOptions options, std::string& error);
+  // Several lidars, each under its name (a single one is served as the overload above serves
+  // it); options.parameters is not used.
+  static std::unique_ptr<LiveTopics> start(std::vector<LiveSource> sources, LiveTopicsOptions options,
+                                           std::string& error);
   ~LiveTopics();  // stop()
   LiveTopics(const LiveTopics&) = delete;
   LiveTopics& operator=(const LiveTopics&) = delete;
@@ -44,12 +59,12 @@ class LiveTopics {
   // False when writing the file failed (error() says why). Idempotent.
   bool stop();
 
-  // Server only: the session is changing source. detach() closes the tap (nothing is served
-  // meanwhile, the clients stay connected); attach() starts afresh on what the session has now,
-  // with a new decoder, so a G1 after a G6 is decoded as a G1.
+  // Server only: the sessions are changing source. detach() closes the taps (nothing is served
+  // meanwhile, the clients stay connected); attach() starts afresh on what the sessions have now,
+  // with new decoders, so a G1 after a G6 is decoded as a G1.
   void detach();
   void attach();
-  bool attached() const { return tap_ != nullptr; }
+  bool attached() const { return !lanes_.empty() && lanes_.front().tap != nullptr; }
 
   // Empty, or the sentence saying why writing the file failed (any thread).
   std::string error() const;
@@ -63,20 +78,37 @@ class LiveTopics {
   std::string file_summary() const;
 
  private:
-  LiveTopics(Session& session, LiveTopicsOptions options) : session_(session), options_(std::move(options)) {}
+  // One session's tap, as the creator sees it.
+  struct Lane {
+    LiveSource source;
+    std::shared_ptr<RecordTap> tap;
+  };
+  // What the thread reads from one session.
+  struct Reading {
+    std::shared_ptr<RecordTap> tap;
+    std::unique_ptr<RosTopicEncoder> encoder;  // without a file; a file's export has its own
+    LinkState told_state = LinkState::Idle;
+  };
+  LiveTopics(std::vector<LiveSource> sources, LiveTopicsOptions options);
+  static std::unique_ptr<LiveTopics> begin(std::unique_ptr<LiveTopics> live, std::string& error);
   void run();
-  void publish(RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
-  void tell_link_state();
+  // New taps from attach()/detach(), if any, with fresh encoders.
+  void take_new_taps(std::vector<Reading>& readings, std::uint64_t& laps_before);
+  RosTopicEncoder& topics_of(std::vector<Reading>& readings, std::size_t id);
+  void publish(std::size_t source, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
+  void tell_link_state(std::size_t source, Reading& reading);
+  void publish_poses();
+  bool several() const { return lanes_.size() > 1; }
 
-  Session& session_;
   LiveTopicsOptions options_;
+  std::vector<Lane> lanes_;
+  std::vector<McapSource> sources_;  // several lidars; empty for one
   std::unique_ptr<McapRecordingExport> mcap_;
-  std::shared_ptr<RecordTap> tap_;  // the creator's view of the current tap
 
-  // Handed from the creator to the thread: the tap to read, and a fresh encoder for it.
+  // Handed from the creator to the thread: the taps to read, one per lane (null: none).
   mutable std::mutex mutex_;
-  std::shared_ptr<RecordTap> next_tap_;
-  bool new_tap_ = false;
+  std::vector<std::shared_ptr<RecordTap>> next_taps_;
+  bool new_taps_ = false;
   std::string error_;
 
   std::atomic<bool> stopping_{false};
@@ -85,7 +117,6 @@ class LiveTopics {
   std::atomic<std::uint64_t> bytes_written_{0};
   std::atomic<std::uint64_t> dropped_{0};
   std::uint32_t chunks_ = 0;  // set by stop()
-  LinkState told_state_ = LinkState::Idle;
   bool stopped_ = false;
   std::thread thread_;
 };

@@ -1,21 +1,39 @@
 #pragma once
 // The bridge's channels: one per ROS topic the encoder writes (core/export/ros_topic_encoder.h),
 // with the same ros2msg schemas as the MCAP files. Ids start at 1 (0 reads as "unset" in clients).
+// One lidar: its topics are 1..kRosTopicCount, named as ever ("/scan"). Several: lidar i's topics
+// are the i-th block of kRosTopicCount ids, named "/NAME/scan", and /tf_static comes after them.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/bridge/foxglove_server.h"
+#include "core/export/mcap_recording_export.h"
+#include "core/export/ros_schemas.h"
 #include "core/export/ros_topic_encoder.h"
 
 namespace ydscope::foxglove {
 
-inline std::uint32_t channel_id(RosTopic topic) { return static_cast<std::uint32_t>(topic) + 1; }
+inline std::uint32_t channel_id(RosTopic topic, std::size_t source = 0) {
+  return static_cast<std::uint32_t>(source * kRosTopicCount + static_cast<std::size_t>(topic) + 1);
+}
+inline std::uint32_t tf_static_channel_id(std::size_t sources) {
+  return static_cast<std::uint32_t>(sources * kRosTopicCount + 1);
+}
 
-inline std::vector<ServerChannel> ros_topic_channels() {
+// `sources`: empty for one lidar, else several, by source id.
+inline std::vector<ServerChannel> ros_topic_channels(std::span<const McapSource> sources = {}) {
   std::vector<ServerChannel> out;
-  for (const RosTopicInfo& t : ros_topics())
-    out.push_back({channel_id(t.topic), std::string(t.name), std::string(t.schema->name), std::string(t.schema->text)});
+  const std::size_t count = sources.empty() ? 1 : sources.size();
+  for (std::size_t id = 0; id < count; ++id)
+    for (const RosTopicInfo& t : ros_topics())
+      out.push_back({channel_id(t.topic, id), source_topic_name(sources, id, t.name), std::string(t.schema->name),
+                     std::string(t.schema->text)});
+  if (!sources.empty()) {
+    const RosSchema& tf = tf_message_schema();
+    out.push_back({tf_static_channel_id(sources.size()), "/tf_static", std::string(tf.name), std::string(tf.text)});
+  }
   return out;
 }
 

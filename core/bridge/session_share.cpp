@@ -6,19 +6,40 @@ namespace ydscope {
 
 std::unique_ptr<SessionShare> SessionShare::start(Session& session, ShareOptions options, std::string& error) {
   std::unique_ptr<SessionShare> share(new SessionShare());
-  share->host_ = options.server.host;
-  share->parameters_ = std::make_unique<foxglove::SessionParameters>(session);
-  share->server_ = std::make_unique<foxglove::FoxgloveServer>(std::move(options.server), foxglove::ros_topic_channels(),
-                                                              share->parameters_.get());
-  if (!share->server_->start(error)) return nullptr;
+  share->parameters_.push_back(std::make_unique<foxglove::SessionParameters>(session));
+  foxglove::SessionParameters* parameters = share->parameters_.back().get();
+  if (!share->serve(options, foxglove::ros_topic_channels(), parameters, {{&session, {}, parameters}}, error))
+    return nullptr;
+  return share;
+}
+
+std::unique_ptr<SessionShare> SessionShare::start(const std::vector<Source>& sources, ShareOptions options,
+                                                  std::string& error) {
+  std::unique_ptr<SessionShare> share(new SessionShare());
+  std::vector<McapSource> about;
+  std::vector<LiveSource> topics;
+  for (const Source& source : sources) {
+    share->parameters_.push_back(std::make_unique<foxglove::SessionParameters>(*source.session));
+    share->named_parameters_.add(source.about.name, share->parameters_.back().get());
+    about.push_back(source.about);
+    topics.push_back({source.session, source.about, share->parameters_.back().get()});
+  }
+  if (!share->serve(options, foxglove::ros_topic_channels(about), &share->named_parameters_, std::move(topics), error))
+    return nullptr;
+  return share;
+}
+
+bool SessionShare::serve(ShareOptions& options, std::vector<foxglove::ServerChannel> channels,
+                         foxglove::ParameterBackend* backend, std::vector<LiveSource> topics, std::string& error) {
+  host_ = options.server.host;
+  server_ = std::make_unique<foxglove::FoxgloveServer>(std::move(options.server), std::move(channels), backend);
+  if (!server_->start(error)) return false;
   LiveTopicsOptions live;
   live.topics = std::move(options.topics);
   live.mcap_path = std::move(options.mcap_path);
-  live.server = share->server_.get();
-  live.parameters = share->parameters_.get();
-  share->topics_ = LiveTopics::start(session, std::move(live), error);
-  if (!share->topics_) return nullptr;
-  return share;
+  live.server = server_.get();
+  topics_ = LiveTopics::start(std::move(topics), std::move(live), error);
+  return topics_ != nullptr;
 }
 
 SessionShare::~SessionShare() { stop(); }

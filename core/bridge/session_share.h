@@ -1,10 +1,11 @@
 #pragma once
-// SessionShare: a live session served to Foxglove: the WebSocket server, the parameters that
-// set the lidar through the session's commands, and the topics (LiveTopics) that feed it,
-// optionally also recorded to MCAP. `ydscope-cli serve` is one, the app's Share toggle another.
+// SessionShare: live sessions served to Foxglove: the WebSocket server, the parameters that
+// set each lidar through its session's commands, and the topics (LiveTopics) that feed it,
+// optionally also recorded to MCAP. `ydscope-cli serve` is one (one lidar or several), the
+// app's Share toggle another.
 //
 // Thread contract: the creator's thread calls every method; clients() may be called from any.
-// The session must outlive it.
+// The sessions must outlive it.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -13,6 +14,7 @@
 #include "core/bridge/foxglove_server.h"
 #include "core/bridge/live_topics.h"
 #include "core/bridge/session_parameters.h"
+#include "core/bridge/sources_parameters.h"
 
 namespace ydscope {
 
@@ -27,6 +29,14 @@ class SessionShare {
   // Binds, taps the session and serves. Null plus one sentence in `error` when the address
   // cannot be bound (in use, a bad host) or the MCAP file cannot be created.
   static std::unique_ptr<SessionShare> start(Session& session, ShareOptions options, std::string& error);
+  // Several lidars (two or more), each under its name: /NAME/scan, NAME/scan_hz, and every pose
+  // on /tf_static. The sessions' tap records go to the clients (and the file).
+  struct Source {
+    Session* session = nullptr;
+    McapSource about;  // name, pose, model
+  };
+  static std::unique_ptr<SessionShare> start(const std::vector<Source>& sources, ShareOptions options,
+                                             std::string& error);
   ~SessionShare();  // stop()
 
   // Stops the topics (the MCAP file gets its summary), then the server. False when writing the
@@ -43,8 +53,13 @@ class SessionShare {
 
  private:
   SessionShare() = default;
+  // Binds with `channels` and starts `topics` (their parameters pointing into parameters_).
+  bool serve(ShareOptions& options, std::vector<foxglove::ServerChannel> channels, foxglove::ParameterBackend* backend,
+             std::vector<LiveSource> topics, std::string& error);
+
   std::string host_;
-  std::unique_ptr<foxglove::SessionParameters> parameters_;
+  std::vector<std::unique_ptr<foxglove::SessionParameters>> parameters_;  // one per lidar
+  foxglove::SourcesParameters named_parameters_;                         // several lidars: under their names
   std::unique_ptr<foxglove::FoxgloveServer> server_;
   std::unique_ptr<LiveTopics> topics_;
   bool stopped_ = false;

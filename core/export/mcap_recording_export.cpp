@@ -6,6 +6,17 @@
 
 namespace ydscope {
 
+RosExportOptions ros_options_of(const RosExportOptions& base, const McapSource& source) {
+  RosExportOptions ros = base;
+  ros.frame.frame_id = source.name;
+  if (source.model) ros.model = source.model;
+  return ros;
+}
+
+std::string source_topic_name(std::span<const McapSource> sources, std::size_t id, std::string_view topic) {
+  return (sources.empty() ? std::string() : "/" + sources[id].name) + std::string(topic);
+}
+
 const McapMetadataMap& ros2_channel_metadata() {
   static const McapMetadataMap metadata{{"offered_qos_profiles",
                                          "- history: 3\n"
@@ -59,17 +70,12 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
   const std::size_t count = sources_.empty() ? 1 : sources_.size();
   for (std::size_t id = 0; id < count; ++id) {
     Lane lane;
-    RosExportOptions ros = options.ros;
-    const std::string prefix = sources_.empty() ? "" : "/" + sources_[id].name;
-    if (!sources_.empty()) {
-      ros.frame.frame_id = sources_[id].name;
-      if (sources_[id].model) ros.model = sources_[id].model;
-    }
-    lane.encoder = std::make_unique<RosTopicEncoder>(std::move(ros));
+    lane.encoder = std::make_unique<RosTopicEncoder>(sources_.empty() ? options.ros : ros_options_of(options.ros, sources_[id]));
     lane.metadata_name = std::string(kMcapRecordingMetadataName) + (sources_.empty() ? "" : "." + sources_[id].name);
     for (const RosTopicInfo& topic : ros_topics()) {
       const auto i = static_cast<std::size_t>(topic.topic);
-      lane.channel[i] = writer_.add_channel(schema_ids[i], prefix + std::string(topic.name), "cdr", ros2_channel_metadata());
+      lane.channel[i] = writer_.add_channel(schema_ids[i], source_topic_name(sources_, id, topic.name), "cdr",
+                                            ros2_channel_metadata());
     }
     lanes_.push_back(std::move(lane));
   }

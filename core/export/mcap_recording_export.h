@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/export/mcap_sink.h"
@@ -40,6 +41,11 @@ struct McapSource {
   Pose pose;
   std::optional<Model> model;  // decode as; empty: options.ros.model, else the recording's
 };
+
+// One of several lidars' encoder options: its name as the frame id, its model when known.
+RosExportOptions ros_options_of(const RosExportOptions& base, const McapSource& source);
+// A topic's name: "/scan" for one lidar (no sources), "/NAME/scan" for one of several.
+std::string source_topic_name(std::span<const McapSource> sources, std::size_t id, std::string_view topic);
 
 class McapRecordingExport {
  public:
