@@ -32,7 +32,7 @@ namespace {
 constexpr std::string_view kHelpText = R"(usage: ydscope-cli record --port PATH (--out FILE | --mcap OUT.mcap | both) [--model auto|MODEL]
                           [--baud B|auto] [--seconds S] [--force] [MCAP options]
        ydscope-cli record --port PATH [--name NAME] [--pose X,Y,YAW[,flip]] --port PATH ...
-                          --out FILE [--model ...] [--baud ...] [--seconds S] [--force]
+                          (--out FILE | --mcap OUT.mcap | both) [--model ...] [--baud ...] [--seconds S]
 
 Connects to the lidar, starts it scanning and records every byte in both directions (the start-up
 commands and replies, then the scan stream) with its time, and the device's details, into FILE
@@ -46,9 +46,11 @@ and flushed at least once a second, so a killed recorder leaves an MCAP whose fl
 streaming reader recovers (it lacks the summary; `ydscope-cli export` of the .ydrec makes a full one).
 
 Several lidars: give --port once for each; all go into one FILE (recording format version 2),
-every lap tagged with its lidar's name by replay and decode. Each lidar has a session of its own
-and reconnects by itself: one that stops is said in one line on stderr and the others keep
-recording. --seconds counts from when every lidar scans (or was said to be in trouble).
+every lap tagged with its lidar's name by replay and decode; --mcap puts each lidar's topics under
+its name (/NAME/scan, /NAME/points ...) with every pose on /tf_static, as `export` does. Each
+lidar has a session of its own and reconnects by itself: one that stops is said in one line on
+stderr and the others keep recording. --seconds counts from when every lidar scans (or was said
+to be in trouble).
 
 options:
   --port PATH      serial port (see `ydscope-cli ports`) or tcp://host:port; repeat for several lidars
@@ -92,7 +94,7 @@ examples:
   ydscope-cli record --port /dev/ttyUSB0 --mcap bench.mcap --seconds 60
   ydscope-cli record --port /dev/ttyUSB0 --out bench.ydrec --mcap bench.mcap
   ydscope-cli record --port /dev/ttyUSB0 --name front --pose 0.2,0,0 \
-                     --port /dev/ttyUSB1 --name back --pose -0.2,0,180,flip --out robot.ydrec
+                     --port /dev/ttyUSB1 --name back --pose -0.2,0,180,flip --out robot.ydrec --mcap robot.mcap
 )";
 
 std::atomic<bool> interrupted{false};

@@ -10,12 +10,15 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
+#include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/source_options.h"
+#include "core/bridge/live_topics.h"
 #include "core/link/sources_recording.h"
 #include "core/record/recording_reader.h"
 #include "core/record/source_decoders.h"
@@ -103,27 +106,49 @@ std::vector<std::uint64_t> laps_per_source(const std::string& path, const Record
   return laps;
 }
 
+// What the .ydrec holds, per lidar, as replay will decode it.
+void print_recording_summary(const std::string& out, const std::vector<Source>& sources, const RecordingSummary& summary) {
+  const auto laps = laps_per_source(out, summary);
+  std::printf("recorded %s: %.1f s, %zu lidars\n", out.c_str(), static_cast<double>(summary.duration_ns) / 1e9,
+              sources.size());
+  for (std::size_t id = 0; id < sources.size(); ++id) {
+    const SourceSummary& s = summary.sources.at(id);
+    std::printf("  %s: %s on %s, %llu bytes from the device, %llu bytes to it, %llu laps%s\n",
+                sources[id].spec.name.c_str(), s.metadata.model.value_or("unknown model").c_str(),
+                sources[id].spec.config.address.c_str(), static_cast<unsigned long long>(s.device_bytes),
+                static_cast<unsigned long long>(s.host_bytes), static_cast<unsigned long long>(laps[id]),
+                sources[id].health->summary_note().c_str());
+  }
+  print_recording_warnings("ydscope-cli record", summary.damage);
+}
+
 }  // namespace
 
 int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) {
-  if (args.value("mcap"))
-    throw UsageError("record --mcap takes one --port; record several lidars to --out FILE and make their MCAP with "
-                     "ydscope-cli export FILE --mcap OUT.mcap");
-  const std::string out = args.required("out");
+  const auto out = args.value("out");
+  const auto mcap_path = args.value("mcap");
+  if (!out && !mcap_path) throw UsageError("say where to record: --out FILE.ydrec, --mcap FILE.mcap, or both");
+  if (out && mcap_path && *out == *mcap_path) throw UsageError("--out and --mcap must be different files");
+  if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
   const auto seconds = args.number("seconds", 0.001, 1e7);
   std::vector<Source> sources;
   std::vector<RecordingMetadata> metadata;
   for (SourceSpec& spec : source_specs_from(args, /*scan=*/true)) {
     spec.config.reconnect = true;  // one lidar's fault must not end the others' recording
     metadata.push_back(source_metadata(spec));
-    sources.push_back({std::move(spec), nullptr, nullptr});
+    sources.emplace_back().spec = std::move(spec);
   }
-  if (const std::string problem = recording_output_problem(out); !problem.empty()) throw UsageError(problem);
+  if (out)
+    if (const std::string problem = recording_output_problem(*out); !problem.empty()) throw UsageError(problem);
   const bool tty = ::isatty(STDERR_FILENO) == 1;
+  const std::string shown = out.value_or(mcap_path.value_or(""));
 
   std::string error;
-  auto recording = SourcesRecording::create(out, std::move(metadata), error);
-  if (!recording) throw std::runtime_error(error);
+  std::unique_ptr<SourcesRecording> recording;
+  if (out) {
+    recording = SourcesRecording::create(*out, std::move(metadata), error);
+    if (!recording) throw std::runtime_error(error);
+  }
   for (std::size_t id = 0; id < sources.size(); ++id) {
     Source& source = sources[id];
     source.session = std::make_unique<Session>(4);
@@ -132,7 +157,20 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
     // The tap right after the connect intent (both run in order on its I/O thread), so the
     // start-up exchange is in the file too.
     source.session->connect(source.spec.config);
-    wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
+    if (recording)
+      wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
+  }
+  // The MCAP file is written from taps of its own, on a thread of its own (/NAME/scan ...).
+  std::unique_ptr<LiveTopics> live;
+  if (mcap_path) {
+    std::vector<LiveSource> live_sources;
+    for (const Source& source : sources)
+      live_sources.push_back({source.session.get(), {source.spec.name, source.spec.pose, source.spec.config.model}});
+    LiveTopicsOptions options;
+    options.topics = mcap_options_from(args);
+    options.mcap_path = *mcap_path;
+    live = LiveTopics::start(std::move(live_sources), std::move(options), error);
+    if (!live) throw std::runtime_error(error);
   }
 
   const auto start = Clock::now();
@@ -141,8 +179,14 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   Lap lap;
   std::string failure;
   while (!interrupted.load()) {
-    if (!recording->pump(std::chrono::milliseconds(50))) {
+    // The .ydrec is written on this thread (pump); the MCAP file on its own.
+    if (!recording) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (recording && !recording->pump(std::chrono::milliseconds(50))) {
       failure = recording->error();
+      break;
+    }
+    if (live && !live->error().empty()) {
+      failure = live->error();
       break;
     }
     bool settled = true;
@@ -158,51 +202,59 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
     const double elapsed = scan_start ? std::chrono::duration<double>(Clock::now() - *scan_start).count() : 0.0;
     if (seconds && scan_start && elapsed >= *seconds) break;
     if (tty && Clock::now() - last_progress >= std::chrono::milliseconds(250)) {
-      show_progress(out, elapsed, sources);
+      show_progress(shown, elapsed, sources);
       last_progress = Clock::now();
     }
   }
   if (tty) std::fputs("\r\033[K", stderr);
 
-  // Close the file first (every tap's last records in it), then stop the lidars.
-  for (std::size_t id = 0; id < sources.size(); ++id)
-    wait_for([&](CommandCallback done) { sources[id].session->stop_tap(recording->tap(id), std::move(done)); });
-  if (!recording->finish() && failure.empty()) failure = recording->error();
+  // Close the files first (every tap's last records in them), then stop the lidars.
+  if (recording) {
+    for (std::size_t id = 0; id < sources.size(); ++id)
+      wait_for([&](CommandCallback done) { sources[id].session->stop_tap(recording->tap(id), std::move(done)); });
+    if (!recording->finish() && failure.empty()) failure = recording->error();
+  }
+  if (live && !live->stop() && failure.empty()) failure = live->error();
   for (Source& source : sources) source.session->disconnect();
   for (Source& source : sources)
     source.session->wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
                                std::chrono::seconds(3));
-  if (recording->dropped())
-    std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidars\n",
-                 out.c_str(), static_cast<unsigned long long>(recording->dropped()));
 
-  const auto summary = summarize_recording(out, error);
-  if (!summary) throw std::runtime_error(error);
-  if (summary->device_bytes == 0 && summary->host_bytes == 0) {
-    std::filesystem::remove(out);  // no port ever opened: an empty recording helps nobody
+  bool health_error = false;
+  bool any_bytes = false;
+  for (const Source& source : sources) {
+    const auto c = source.session->snapshot().counters;
+    any_bytes = any_bytes || c.bytes_received > 0 || c.bytes_sent > 0;
+    health_error = health_error || source.health->worst() == HealthLevel::Error;
+  }
+  std::optional<RecordingSummary> summary;
+  if (recording) {
+    if (recording->dropped())
+      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidars\n",
+                   out->c_str(), static_cast<unsigned long long>(recording->dropped()));
+    summary = summarize_recording(*out, error);
+    if (!summary) throw std::runtime_error(error);
+    any_bytes = summary->device_bytes > 0 || summary->host_bytes > 0;
+  }
+  if (!any_bytes) {  // no port ever opened: an empty recording helps nobody
+    if (out) std::filesystem::remove(*out);
+    if (mcap_path) std::filesystem::remove(*mcap_path);
     throw std::runtime_error(failure.empty() ? "no lidar answered; nothing was recorded" : failure);
   }
-  const auto laps = laps_per_source(out, *summary);
-  std::printf("recorded %s: %.1f s, %zu lidars\n", out.c_str(), static_cast<double>(summary->duration_ns) / 1e9,
-              sources.size());
-  bool health_error = false;
-  for (std::size_t id = 0; id < sources.size(); ++id) {
-    const SourceSummary& s = summary->sources.at(id);
-    std::printf("  %s: %s on %s, %llu bytes from the device, %llu bytes to it, %llu laps%s\n",
-                sources[id].spec.name.c_str(), s.metadata.model.value_or("unknown model").c_str(),
-                sources[id].spec.config.address.c_str(), static_cast<unsigned long long>(s.device_bytes),
-                static_cast<unsigned long long>(s.host_bytes), static_cast<unsigned long long>(laps[id]),
-                sources[id].health->summary_note().c_str());
-    health_error = health_error || sources[id].health->worst() == HealthLevel::Error;
+  if (summary) print_recording_summary(*out, sources, *summary);
+  if (live) {
+    std::printf("%s\n", live->file_summary().c_str());
+    if (live->dropped())
+      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidars\n",
+                   mcap_path->c_str(), static_cast<unsigned long long>(live->dropped()));
   }
-  print_recording_warnings("ydscope-cli record", summary->damage);
   std::fflush(stdout);
-  if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + out);
+  if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + shown);
   for (const Source& source : sources)
     if (!source.ever_scanned)
       throw std::runtime_error(who(source.spec) + " never scanned (" +
                                (source.last_problem.empty() ? "no reason given" : source.last_problem) +
-                               "); the other lidars are in " + out);
+                               "); the other lidars are in " + shown);
   return health_error ? kExitLidarFault : kExitOk;
 }
 

@@ -15,7 +15,9 @@ inline CliResult run_cli_apart(const std::string& arguments) { return run_progra
 
 // Both streams in `out`, in the order they were written (err stays empty).
 inline CliResult run_cli(const std::string& arguments) {
-  return run_program(YDSCOPE_CLI_PATH, arguments, {.fold_stderr = true});
+  RunOptions options;
+  options.fold_stderr = true;
+  return run_program(YDSCOPE_CLI_PATH, arguments, options);
 }
 
 // How many times `what` occurs in `text` (overlaps counted): lines of a program's output, say.

@@ -2,6 +2,8 @@
 // recording holds them all, and replay and decode print every lidar's laps tagged with its name.
 // Mistakes in naming or placing the lidars are one sentence and exit status 2.
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -9,6 +11,7 @@
 
 #include "core/record/recording_reader.h"
 #include "cli/cli_run_support.h"
+#include "export/mcap_test_reader.h"
 #include "support/raw_recording.h"
 #include "support/session_test_support.h"
 #include "support/temp_dir.h"
@@ -103,6 +106,33 @@ TEST_F(SeveralLidarsCli, RecordsThreeLidarsAndReplaysEachOnesLapsTagged) {
     EXPECT_NE(csv.out.find(name), std::string::npos) << name;
 }
 
+TEST_F(SeveralLidarsCli, RecordsTwoLidarsLiveIntoOneMcapEachUnderItsName) {
+  test::SimOnPty g1(Model::G1);
+  test::SimOnPty g6(Model::G6);
+  const std::string mcap = path("two.mcap");
+  const auto record = run_cli_apart("record --port '" + g1.port() + "' --name front --pose 0.2,0,0 --port '" +
+                                    g6.port() + "' --name back --pose -0.2,0,180,flip --mcap '" + mcap +
+                                    "' --seconds 2");
+  ASSERT_EQ(record.status, 0) << record.out << record.err;
+  EXPECT_EQ(record.out.rfind("wrote " + mcap + ": ", 0), 0u) << record.out;
+
+  // The strict reader (every CRC and index checked): each lidar's topics under its name, laps
+  // from both, and /tf_static.
+  std::ifstream in(mcap, std::ios::binary);
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+  const test::McapContents contents = test::read_mcap(bytes);
+  EXPECT_TRUE(contents.complete);
+  std::map<std::string, std::size_t> per_topic;
+  for (const test::ReadMessage& m : contents.messages) ++per_topic[contents.channels.at(m.channel_id).topic];
+  EXPECT_GE(per_topic["/front/points"], 5u);
+  EXPECT_GE(per_topic["/back/points"], 5u);
+  EXPECT_EQ(per_topic["/front/scan"], per_topic["/front/points"]);
+  EXPECT_EQ(per_topic["/tf_static"], 1u);
+  EXPECT_EQ(per_topic.count("/points"), 0u) << "no un-namespaced topic with several lidars";
+  const std::size_t laps = per_topic["/front/points"] + per_topic["/back/points"];
+  EXPECT_NE(record.out.find(": " + std::to_string(laps) + " laps, "), std::string::npos) << record.out;
+}
+
 TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
   test::SimOnPty g6(Model::G6);
   const std::string port = "'" + g6.port() + "'";
@@ -114,7 +144,9 @@ TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
       {"record --port " + port + " --name 1st --port tcp://127.0.0.1:9 --name b" + out, "--name '1st'"},
       {"record --port " + port + " --port " + port + out, "is given twice"},
       {"record --port " + port + " --pose 0,0,0 --port tcp://127.0.0.1:9" + out, "once per --port (2 ports)"},
-      {"record --port " + port + " --port tcp://127.0.0.1:9 --mcap '" + path("x.mcap") + "'", "ydscope-cli export"},
+      {"record --port " + port + " --port tcp://127.0.0.1:9 --seconds 1", "say where to record"},
+      {"record --port " + port + " --port tcp://127.0.0.1:9 --out '" + path("x.ydrec") + "' --mcap '" + path("x.ydrec") + "'",
+       "must be different files"},
       {"record --port " + port + " --name front" + out, "--name and --pose"},
   };
   for (const auto& [arguments, says] : cases) {

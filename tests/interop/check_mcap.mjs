@@ -2,11 +2,14 @@
 // official @mcap/core readers (indexed and streaming, CRCs validated) and Foxglove's ROS 2
 // deserialiser. Usage:
 //   node check_mcap.mjs --cli YDSCOPE_CLI --mcap FILE --source REC.ydrec|RAW [--model MODEL] [--killed yes]
+//                       [--sources NAME,NAME...]
 // It checks that every message decodes, that the summary agrees with the messages, that /points
 // equals what `ydscope-cli decode SOURCE` prints, that /scan is /points binned as the official
 // ROS 2 driver bins, and that the raw channel decodes again to the same laps.
 // --killed yes: FILE is what a killed recorder left (no summary): a streaming reader must recover
 // its flushed chunks, and their laps must be the first laps of SOURCE (also cut off by the kill).
+// --sources: FILE holds several lidars; each one's /NAME/points, /NAME/scan and /NAME/diagnostics
+// are checked against decode's laps of that source, and /tf_static must place every NAME.
 // Prints one line per check; exits 1 on the first failure with what differed.
 import { execFileSync } from "node:child_process";
 import { mkdtempSync, openSync, readFileSync, readSync, fstatSync, writeFileSync } from "node:fs";
@@ -127,9 +130,16 @@ ok(`streaming reader: ${streamed} messages, data/chunk/summary CRCs valid`);
 const decodeArgs = (source) => ["decode", ...(args.model ? ["--model", args.model] : []), source];
 const laps = (jsonl) => jsonl.split("\n").filter((l) => l.startsWith('{"type":"lap"')).map((l) => JSON.parse(l));
 const decodedText = execFileSync(args.cli, decodeArgs(args.source), { maxBuffer: 1 << 30 }).toString();
-const expected = laps(decodedText);
-const clouds = byTopic.get("/points") ?? [];
-const scans = byTopic.get("/scan") ?? [];
+const names = args.sources ? args.sources.split(",") : [undefined];
+for (const name of names) checkLidar(name);
+
+// One lidar's topics (under /NAME with several) against decode's laps of it.
+function checkLidar(name) {
+const prefix = name === undefined ? "" : `/${name}`;
+const expected = laps(decodedText).filter((lap) => lap.source === name);
+if (name !== undefined && expected.length === 0) fail(`decode printed no lap of source ${name}`);
+const clouds = byTopic.get(`${prefix}/points`) ?? [];
+const scans = byTopic.get(`${prefix}/scan`) ?? [];
 if (killed) {
   // Both files were cut by the kill at different moments: compare the laps both have.
   if (clouds.length === 0) fail("no /points message recovered");
@@ -168,7 +178,7 @@ for (let i = 0; i < expected.length; i++) {
   }
   pointCount += want.length;
 }
-ok(`/points: ${expected.length} laps, ${pointCount} points equal to ydscope-cli decode`);
+ok(`${prefix}/points: ${expected.length} laps, ${pointCount} points equal to ydscope-cli decode`);
 
 // 4. /scan is /points binned as the official driver bins (YDLidar-SDK + ydlidar_ros2_driver):
 // ROS angle = normalize(2pi - (deg + pi)), increment 2pi/(n-1), bin ceil((angle + pi)/increment),
@@ -195,20 +205,20 @@ for (let i = 0; i < expected.length; i++) {
   for (let b = 0; b < bins; b++) if (scan.ranges[b] !== ranges[b]) fail(`lap ${i} bin ${b}: /scan ${scan.ranges[b]}, binned /points ${ranges[b]}`);
   if (scans[i].decoded.header.stamp.sec !== clouds[i].decoded.header.stamp.sec || scans[i].logTime !== clouds[i].logTime) fail(`lap ${i}: /scan and /points stamps differ`);
 }
-ok(`/scan: ${scans.length} scans binned exactly as the official driver would`);
+ok(`${prefix}/scan: ${scans.length} scans binned exactly as the official driver would`);
 
 // 5. /diagnostics: decodes, names the device and its counters.
-const diagnostics = byTopic.get("/diagnostics") ?? [];
-if (diagnostics.length === 0) fail("no /diagnostics messages");
+const diagnostics = byTopic.get(`${prefix}/diagnostics`) ?? [];
+if (diagnostics.length === 0) fail(`no ${prefix}/diagnostics messages`);
 const values = Object.fromEntries(diagnostics.at(-1).decoded.status[0].values.map((kv) => [kv.key, kv.value]));
 for (const key of ["model", "health", "scan_hz_set", "scan_hz_measured", "ranging_khz", "checksum_errors", "laps"])
   if (!(key in values)) fail(`/diagnostics lacks ${key}`);
 if (!killed && Number(values.laps) !== expected.length) fail(`/diagnostics says ${values.laps} laps, decode ${expected.length}`);
-ok(`/diagnostics: ${diagnostics.length} messages, last says model ${values.model}, ${values.laps} laps, measured ${values.scan_hz_measured} Hz`);
+ok(`${prefix}/diagnostics: ${diagnostics.length} messages, last says model ${values.model}, ${values.laps} laps, measured ${values.scan_hz_measured} Hz`);
 
 // 6. The raw channel decodes again exactly like the source.
-const raw = byTopic.get("/ydscope/device_bytes");
-if (raw && !killed) {
+const raw = byTopic.get(`${prefix}/ydscope/device_bytes`);
+if (raw && !killed && name === undefined) {
   const bytes = Buffer.concat(raw.map((m) => Buffer.from(m.decoded.data)));
   const dir = mkdtempSync(join(tmpdir(), "ydscope-mcap-"));
   writeFileSync(join(dir, "device.bin"), bytes);
@@ -220,4 +230,16 @@ if (raw && !killed) {
     text.split("\n").filter((l) => l.startsWith('{"type":"lap"')).map((l) => l.replace(/,"t":[0-9.]+,/, ",")).join("\n");
   if (lapsOnly(again) !== lapsOnly(decodedText)) fail("the bytes of /ydscope/device_bytes decode to other laps than the source");
   ok(`/ydscope/device_bytes: ${bytes.length} bytes decode again to the same ${expected.length} laps`);
+}
+}
+
+// 7. Several lidars: /tf_static places each one in the common frame.
+if (args.sources) {
+  const tf = byTopic.get("/tf_static") ?? [];
+  if (tf.length === 0) fail("no /tf_static message");
+  const children = tf[0].decoded.transforms.map((t) => t.child_frame_id);
+  for (const name of names) if (!children.includes(name)) fail(`/tf_static has no transform to ${name} (it has ${children})`);
+  const parents = new Set(tf[0].decoded.transforms.map((t) => t.header.frame_id));
+  if (parents.size !== 1) fail(`/tf_static transforms hang from ${[...parents]}, not one common frame`);
+  ok(`/tf_static: ${children.length} transforms from ${[...parents][0]} to ${children.join(", ")}`);
 }

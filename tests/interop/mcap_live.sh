@@ -2,22 +2,25 @@
 # record --mcap against the virtual lidar, checked by check_mcap.mjs: beside --out (the MCAP's laps
 # equal decode of the .ydrec recorded from the same bytes), and killed with SIGKILL mid-way (a
 # streaming reader recovers the flushed chunks, and their laps are the recording's first laps);
-# and decode --mcap of raw bytes read straight off the virtual lidar (no times in them).
+# and decode --mcap of raw bytes read straight off the virtual lidar (no times in them); and two
+# lidars recorded at once to both files (each one's namespace equals its laps in the .ydrec).
 # usage: mcap_live.sh YDSCOPE_CLI SOURCE_DIR CACHE_DIR
 set -euo pipefail
 cli=$1; src=$2; cache=$3
 work=$(mktemp -d)
 sim_pid=
+second_sim_pid=
 cleanup() {
   [ -n "$sim_pid" ] && stop_sim
+  [ -n "$second_sim_pid" ] && kill "$second_sim_pid" 2>/dev/null
   rm -rf "$work"
 }
 trap cleanup EXIT
 check() { "$src/tests/interop/run_node_check.sh" "$cache" check_mcap.mjs --cli "$cli" "$@"; }
 
 # A G1 in the room scene: mirror and window points carry flags 2 and 3, laps carry CRC8.
-start_sim() {
-  "$cli" sim --model G1 --scene room --tcp 127.0.0.1:0 > "$work/sim.out" &
+start_sim() {  # start_sim [MODEL]: its pid in sim_pid, its address in port
+  "$cli" sim --model "${1:-G1}" --scene room --tcp 127.0.0.1:0 > "$work/sim.out" &
   sim_pid=$!
   for _ in $(seq 100); do grep -q '^ready' "$work/sim.out" 2>/dev/null && break; sleep 0.05; done
   port=$(sed -n 's/^ready //p' "$work/sim.out")
@@ -55,3 +58,13 @@ stop_sim
 exec 3<&-
 "$cli" decode --model G1 --mcap "$work/raw.mcap" "$work/raw.bin"
 check --mcap "$work/raw.mcap" --source "$work/raw.bin" --model G1
+
+# Two lidars at once, a G1 and a G6, into both files.
+start_sim G6
+second_sim_pid=$sim_pid; second_port=$port
+start_sim G1
+"$cli" record --port "$port" --name front --pose 0.2,0,0 --port "$second_port" --name back --pose -0.2,0,180,flip \
+  --out "$work/two.ydrec" --mcap "$work/two.mcap" --seconds 3
+check --mcap "$work/two.mcap" --source "$work/two.ydrec" --sources front,back
+stop_sim
+kill "$second_sim_pid"; wait "$second_sim_pid" 2>/dev/null || true; second_sim_pid=
