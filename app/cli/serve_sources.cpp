@@ -54,6 +54,9 @@ void serve_until_stopped(SessionShare& share, const std::vector<ServedLidar>& li
   const bool written = share.stop();
   for (const ServedLidar& lidar : lidars) lidar.session->disconnect();
   if (!written) throw std::runtime_error(share.topics().error());
+  if (const auto dropped = share.topics().dropped())
+    std::fprintf(stderr, "ydscope-cli serve: warning: %llu records were dropped: serving fell behind the lidars\n",
+                 static_cast<unsigned long long>(dropped));
   if (!share.topics().mcap_path().empty())
     std::fprintf(stderr, "ydscope-cli serve: wrote %s: %llu laps, %llu messages\n", share.topics().mcap_path().c_str(),
                  static_cast<unsigned long long>(share.topics().laps()),

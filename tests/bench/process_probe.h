@@ -18,7 +18,8 @@
 
 namespace ydscope::bench {
 
-inline pid_t spawn(const std::vector<std::string>& argv, bool quiet) {
+// quiet: its stdout and stderr go to /dev/null; stdout_fd >= 0: its stdout goes there instead.
+inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_fd = -1) {
   std::fflush(nullptr);  // the child must not repeat our buffered output
   const pid_t pid = fork();
   if (pid == 0) {
@@ -26,6 +27,7 @@ inline pid_t spawn(const std::vector<std::string>& argv, bool quiet) {
       std::freopen("/dev/null", "w", stdout);
       std::freopen("/dev/null", "w", stderr);
     }
+    if (stdout_fd >= 0) dup2(stdout_fd, STDOUT_FILENO);
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -35,9 +37,9 @@ inline pid_t spawn(const std::vector<std::string>& argv, bool quiet) {
   return pid;
 }
 
-// utime + stime in clock ticks; -1 when the process is gone.
-inline long cpu_ticks(pid_t pid) {
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+// utime + stime in clock ticks of a /proc stat file (a process's or a thread's); -1 when gone.
+inline long stat_cpu_ticks(const std::string& stat_path) {
+  std::ifstream stat(stat_path);
   std::string text;
   if (!std::getline(stat, text)) return -1;
   // Fields after the command name (which may hold spaces) start after the last ')'.
@@ -49,6 +51,21 @@ inline long cpu_ticks(pid_t pid) {
     if (i == 15) stime = std::stol(field);
   }
   return utime + stime;
+}
+
+inline long cpu_ticks(pid_t pid) { return stat_cpu_ticks("/proc/" + std::to_string(pid) + "/stat"); }
+
+// The CPU ticks of the process's threads named `name` (pthread_setname_np), summed.
+inline long thread_cpu_ticks(pid_t pid, const std::string& name) {
+  long total = 0;
+  std::error_code error;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", error)) {
+    std::ifstream comm(task.path() / "comm");
+    std::string thread_name;
+    if (!std::getline(comm, thread_name) || thread_name != name) continue;
+    if (const long ticks = stat_cpu_ticks((task.path() / "stat").string()); ticks > 0) total += ticks;
+  }
+  return total;
 }
 
 // VmRSS in KiB; -1 when the process is gone.
