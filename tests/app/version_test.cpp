@@ -10,7 +10,7 @@ TEST(Version, CliReportsTheProjectVersion) {
   for (const char* flag : {"--version", "-V"}) {
     const auto run = test::run_program(YDSCOPE_CLI_PATH, flag, {.stdin_from_null = true});
     EXPECT_EQ(run.status, 0) << flag << ": " << run.err;
-    EXPECT_EQ(run.out, std::string("ydscope-cli ") + YDSCOPE_PROJECT_VERSION + "\n") << flag;
+    EXPECT_EQ(run.out, std::string("ydscope-cli " YDSCOPE_PROJECT_VERSION "\n")) << flag;
   }
 }
 
@@ -19,7 +19,7 @@ TEST(Version, AppReportsTheProjectVersion) {
   for (const char* flag : {"--version", "-V"}) {
     const auto run = test::run_program(YDSCOPE_APP_PATH, flag, {.stdin_from_null = true});
     EXPECT_EQ(run.status, 0) << flag << ": " << run.err;
-    EXPECT_EQ(run.out, std::string("ydscope ") + YDSCOPE_PROJECT_VERSION + "\n") << flag;
+    EXPECT_EQ(run.out, std::string("ydscope " YDSCOPE_PROJECT_VERSION "\n")) << flag;
   }
 }
 #endif

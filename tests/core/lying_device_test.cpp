@@ -106,8 +106,9 @@ TEST(LyingDevice, FirmwareFieldsOfAnyValueGiveBoundedText) {
     const auto parsed = parse_device_info(encoded);
     ASSERT_TRUE(parsed.has_value()) << value;
     EXPECT_LE(serial_string(*parsed).size(), 2 * info.serial.size()) << value;
-    if (const ModelProfile* profile = find_profile_by_code(info.model_code))
+    if (const ModelProfile* profile = find_profile_by_code(info.model_code)) {
       EXPECT_EQ(profile->model_code, info.model_code);
+    }
   }
 }
 

@@ -26,7 +26,6 @@ constexpr auto kHangGuard = std::chrono::seconds(10);
 
 class ReplayLinkTest : public ::testing::Test {
  protected:
-
   // Device chunks at 1 ms steps, interleaved with commands that must not be replayed.
   Bytes write_recording(int chunks, std::int64_t step_ns = 1'000'000) {
     RecordingMetadata metadata;
@@ -77,7 +76,7 @@ TEST_F(ReplayLinkTest, OfSeveralLidarsOnlyTheChosenOnesBytesPlay) {
     second.insert(second.end(), b.begin(), b.end());
   }
   writer->close();
-  for (std::uint16_t source : {0, 1}) {
+  for (const std::uint16_t source : {std::uint16_t{0}, std::uint16_t{1}}) {
     boost::asio::io_context io;
     auto link = ReplayLink::open(io, path_, {.speed = 0, .source = source}, error);
     ASSERT_TRUE(link) << error;
@@ -282,7 +281,7 @@ TEST_F(ReplayLinkTest, LastOwnerMayBeTheUiThread) {
       }
     });
     while (ui_reached.load() == 0) std::this_thread::yield();  // the UI holds the link now and then
-    boost::asio::post(io, [&] {  // disconnect: close and drop the session's reference
+    boost::asio::post(io, [&] {                                // disconnect: close and drop the session's reference
       session_link->close();
       session_link.reset();
     });

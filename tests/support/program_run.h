@@ -22,14 +22,16 @@ struct ProgramRun {
 struct RunOptions {
   bool fold_stderr = false;      // both streams in `out`, in the order they were written
   bool stdin_from_null = false;  // never waits for a terminal (leave off when `arguments` redirects stdin)
-  std::string working_dir;       // where it runs (empty: here)
-  std::string config_home;       // XDG_CONFIG_HOME for it (empty: inherited)
+  std::string working_dir{};     // where it runs (empty: here)
+  std::string config_home{};     // XDG_CONFIG_HOME for it (empty: inherited)
 };
 
 // `arguments` is shell text (quote paths yourself); the program's path is quoted here.
-inline ProgramRun run_program(const std::string& program, const std::string& arguments, const RunOptions& options = {}) {
+inline ProgramRun run_program(const std::string& program, const std::string& arguments,
+                              const RunOptions& options = {}) {
   static std::atomic<int> serial{0};
-  const std::filesystem::path err_path = std::filesystem::temp_directory_path() /
+  const std::filesystem::path err_path =
+      std::filesystem::temp_directory_path() /
       ("ydscope-run-" + std::to_string(::getpid()) + "-" + std::to_string(serial++) + ".err");
   std::string command;
   if (!options.working_dir.empty()) command += "cd '" + options.working_dir + "' && ";
