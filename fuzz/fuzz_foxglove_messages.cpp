@@ -43,10 +43,14 @@ std::size_t items(const ClientRequest& request) {
   return std::visit(
       [](const auto& r) -> std::size_t {
         using T = std::decay_t<decltype(r)>;
-        if constexpr (std::is_same_v<T, Subscribe>) return r.subscriptions.size();
-        else if constexpr (std::is_same_v<T, Unsubscribe>) return r.subscription_ids.size();
-        else if constexpr (std::is_same_v<T, SetParameters>) return r.parameters.size();
-        else return r.names.size();
+        if constexpr (std::is_same_v<T, Subscribe>)
+          return r.subscriptions.size();
+        else if constexpr (std::is_same_v<T, Unsubscribe>)
+          return r.subscription_ids.size();
+        else if constexpr (std::is_same_v<T, SetParameters>)
+          return r.parameters.size();
+        else
+          return r.names.size();
       },
       request);
 }

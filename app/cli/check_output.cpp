@@ -34,8 +34,8 @@ void print_check_text(std::FILE* out, const CheckRecord& record) {
   for (const CriterionResult& r : record.results)
     std::fprintf(out, "%s  %-*s  %s  [limit: %s]\n", verdict_word(r.verdict), static_cast<int>(width), r.title.c_str(),
                  r.measured.c_str(), r.limit.c_str());
-  const std::size_t failed = static_cast<std::size_t>(
-      std::count_if(record.results.begin(), record.results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; }));
+  const std::size_t failed = static_cast<std::size_t>(std::count_if(
+      record.results.begin(), record.results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; }));
   if (failed == 0)
     std::fprintf(out, "verdict: PASS (%zu criteria)\n", record.results.size());
   else
@@ -59,8 +59,10 @@ void print_check_json(std::FILE* file, const CheckRecord& record) {
   out.raw(R"(],"interrupted":)");
   out.raw(record.interrupted ? "true" : "false");
   out.raw(R"(,"failure":)");
-  if (record.failure.empty()) out.raw("null");
-  else out.string(record.failure);
+  if (record.failure.empty())
+    out.raw("null");
+  else
+    out.string(record.failure);
   out.raw(R"(,"seconds":)");
   out.fixed(record.measured_seconds, 3);
   out.raw(R"(,"device":{)");

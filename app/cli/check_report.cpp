@@ -54,14 +54,16 @@ std::string identity_block(const CheckRecord& record) {
   html += field("model", profile ? std::string(profile->name) : "unknown");
   if (s.device) {
     html += field("serial", s.device->serial);
-    html += field("firmware", std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor));
+    html +=
+        field("firmware", std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor));
     html += field("hardware", std::to_string(s.device->hardware));
   }
   html += field("link", s.link);
   html += field("started", utc_time(record.started_unix_s));
   html += field("measured", format_text("%.1f s, %llu laps", record.measured_seconds,
                                         static_cast<unsigned long long>(record.observations.timing.laps)));
-  if (record.observations.ranging_khz) html += field("ranging frequency", std::to_string(record.observations.ranging_khz) + " kHz");
+  if (record.observations.ranging_khz)
+    html += field("ranging frequency", std::to_string(record.observations.ranging_khz) + " kHz");
   if (record.observations.sector_name) html += field("sector", *record.observations.sector_name + " degrees");
   if (record.observations.target_mm) html += field("target", format_text("%.0f mm", *record.observations.target_mm));
   return html + "</dl>";
@@ -107,16 +109,17 @@ std::string check_report_html(const CheckRecord& record) {
   const ModelProfile* profile = record.observations.profile;
   const std::string unit = (profile ? std::string(profile->name) : "lidar") +
                            (record.started.device ? " " + record.started.device->serial : std::string());
-  std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"/>"
-                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>";
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"/>"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>";
   html += "<title>ydscope check: " + markup_escaped(unit) + " " + word + "</title>";
   html += "<style>" + std::string(kStyle) + "</style></head><body>";
   html += "<h1>Acceptance check of " + markup_escaped(unit) + "</h1>";
   std::string failed;
   for (const CriterionResult& r : record.results)
     if (r.verdict == Verdict::Fail) failed += (failed.empty() ? "" : ", ") + r.title;
-  const std::string why = failed.empty() ? format_text("all %zu criteria passed", record.results.size())
-                                         : "failed: " + failed;
+  const std::string why =
+      failed.empty() ? format_text("all %zu criteria passed", record.results.size()) : "failed: " + failed;
   html += format_text(R"(<p><span class="verdict %s" id="verdict">%s</span> %s</p>)", style, word,
                       markup_escaped(why).c_str());
   if (record.interrupted)

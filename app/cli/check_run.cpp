@@ -34,7 +34,9 @@ CommandResult await_result(const std::function<void(CommandCallback)>& post, con
 }
 
 // A warning counts as much as an error here: the unit under test must be clean.
-bool health_problem(const HealthReport& h) { return health_level(h.command, h.status, h.error_code) != HealthLevel::Ok; }
+bool health_problem(const HealthReport& h) {
+  return health_level(h.command, h.status, h.error_code) != HealthLevel::Ok;
+}
 
 HealthObservation health_reading(const HealthReport& h, const char* when) {
   return {command_bytes_text(h.command) + " " + when, health_problem(h), h.summary};
@@ -53,8 +55,8 @@ struct CtHealth {
     bits_seen = static_cast<std::uint8_t>(bits_seen | bits);
   }
   HealthObservation observation() const {
-    HealthObservation o{format_text("CT health in %llu laps", static_cast<unsigned long long>(laps)),
-                        abnormal_laps > 0, "ok"};
+    HealthObservation o{format_text("CT health in %llu laps", static_cast<unsigned long long>(laps)), abnormal_laps > 0,
+                        "ok"};
     if (!abnormal_laps) return o;
     o.summary = format_text("abnormal in %llu laps:", static_cast<unsigned long long>(abnormal_laps));
     const char* separator = " ";
@@ -88,8 +90,8 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   LapBell bell;
   Session session(64, [&bell] { bell.ring(); });
   show(plan.progress, "connecting to " + plan.session.address + " ...");
-  record.started_unix_s = std::chrono::duration_cast<std::chrono::seconds>(
-                              std::chrono::system_clock::now().time_since_epoch()).count();
+  record.started_unix_s =
+      std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
   record.started = connect_or_throw(session, plan.session);
   if (plan.distance_scale) session.set_distance_scale(plan.distance_scale);
   const SessionSnapshot& s0 = record.started;
@@ -109,9 +111,9 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   record.limits.noise_max_mm = plan.noise_max_mm;
 
   show(plan.progress, format_text("setting the scan rate to %.2f Hz ...", record.limits.scan_hz_target));
-  const CommandResult hz = await_result(
-      [&](CommandCallback done) { session.set_scan_hz(record.limits.scan_hz_target, std::move(done)); },
-      "setting the scan rate");
+  const CommandResult hz =
+      await_result([&](CommandCallback done) { session.set_scan_hz(record.limits.scan_hz_target, std::move(done)); },
+                   "setting the scan rate");
   if (!hz.ok) throw std::runtime_error(hz.message);
   if (plan.ranging_khz) {
     if (!profile.ranging_index(*plan.ranging_khz))
@@ -124,9 +126,9 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
                                    now ? (std::to_string(*now) + " kHz").c_str() : "nothing"));
     if (profile.ranging_settable) {
       show(plan.progress, format_text("setting the ranging frequency to %u kHz ...", *plan.ranging_khz));
-      const CommandResult khz = await_result(
-          [&](CommandCallback done) { session.set_ranging_khz(*plan.ranging_khz, std::move(done)); },
-          "setting the ranging frequency");
+      const CommandResult khz =
+          await_result([&](CommandCallback done) { session.set_ranging_khz(*plan.ranging_khz, std::move(done)); },
+                       "setting the ranging frequency");
       if (!khz.ok) throw std::runtime_error(khz.message);
     }
   }
@@ -189,8 +191,8 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
       last_progress = Clock::now();
       const LapTimingStatistics t = timing.statistics();
       const CounterSnapshot c = session.snapshot().counters;
-      show(true, format_text("measuring: %.1f of %.1f s, %llu laps, %.2f Hz, %llu checksum errors", seconds_since(start),
-                             plan.seconds, static_cast<unsigned long long>(t.laps), t.mean_hz,
+      show(true, format_text("measuring: %.1f of %.1f s, %llu laps, %.2f Hz, %llu checksum errors",
+                             seconds_since(start), plan.seconds, static_cast<unsigned long long>(t.laps), t.mean_hz,
                              static_cast<unsigned long long>(c.checksum_errors - before.counters.checksum_errors)));
     }
     bell.wait(std::chrono::milliseconds(100));
@@ -212,13 +214,16 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
     show(plan.progress, "reading the health once more ...");
     const CommandResult h =
         await_result([&](CommandCallback done) { session.refresh_health(std::move(done)); }, "the health question");
-    if (h.ok && h.health) o.health.push_back(health_reading(*h.health, "after the run"));
-    else o.health.push_back({"health after the run", true, "no answer: " + h.message});
+    if (h.ok && h.health)
+      o.health.push_back(health_reading(*h.health, "after the run"));
+    else
+      o.health.push_back({"health after the run", true, "no answer: " + h.message});
   }
   show(plan.progress, "stopping the lidar ...");
   session.disconnect();
-  session.wait_until([](const SessionSnapshot& s) { return s.state == LinkState::Idle || s.state == LinkState::Failed; },
-                     std::chrono::seconds(3));
+  session.wait_until(
+      [](const SessionSnapshot& s) { return s.state == LinkState::Idle || s.state == LinkState::Failed; },
+      std::chrono::seconds(3));
   if (plan.progress) std::fprintf(stderr, "\r\033[K");
   record.results = evaluate_acceptance(o, record.limits);
   return record;

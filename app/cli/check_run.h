@@ -28,18 +28,18 @@ struct CheckPlan {
   std::vector<std::pair<double AcceptanceLimits::*, double>> limit_overrides;
   std::optional<double> bias_tolerance_mm;
   std::optional<double> noise_max_mm;
-  bool progress = false;                     // progress lines on stderr (a terminal)
+  bool progress = false;  // progress lines on stderr (a terminal)
 };
 
 struct CheckRecord {
-  SessionSnapshot started;  // the device as it answered at connect time
+  SessionSnapshot started;          // the device as it answered at connect time
   std::int64_t started_unix_s = 0;  // wall clock at connect, for the report's date
   AcceptanceLimits limits;
   CheckObservations observations;
   std::vector<CriterionResult> results;
-  std::optional<Sector> sector_region;      // what --sector asked for
+  std::optional<Sector> sector_region;     // what --sector asked for
   std::optional<SectorStatistics> sector;  // what fell in it
-  Lap last_lap;              // the polar snapshot of the report
+  Lap last_lap;                            // the polar snapshot of the report
   double measured_seconds = 0;
   bool interrupted = false;  // Ctrl-C: the results cover only what was measured until then
   std::string failure;       // the device failed mid-run: one sentence (results are partial)

@@ -14,8 +14,7 @@ std::vector<CliCommand>& registry() {
 
 std::span<const CliCommand> registered_commands() {
   auto& commands = registry();
-  std::sort(commands.begin(), commands.end(),
-            [](const CliCommand& a, const CliCommand& b) { return a.name < b.name; });
+  std::sort(commands.begin(), commands.end(), [](const CliCommand& a, const CliCommand& b) { return a.name < b.name; });
   return commands;
 }
 

@@ -18,8 +18,8 @@ inline constexpr int kExitLidarFault = 3;
 
 struct CliCommand {
   std::string_view name;
-  std::string_view summary;  // one line for the command list
-  std::string_view help;     // full help text; main prints it for --help, -h and `help COMMAND`
+  std::string_view summary;                       // one line for the command list
+  std::string_view help;                          // full help text; main prints it for --help, -h and `help COMMAND`
   int (*run)(std::span<const std::string> args);  // args exclude the subcommand name; parse them with Arguments
 };
 

@@ -18,7 +18,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli check --port PATH [--model auto|M] [--seconds S] [--scan-hz F] [--ranging-khz K]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli check --port PATH [--model auto|M] [--seconds S] [--scan-hz F] [--ranging-khz K]
                          [--sector A:B [--band MIN:MAX] --target-mm D [--tolerance-mm T] [--noise-mm N]]
                          [--format text|json] [--report OUT.html] [limit options]
 
@@ -139,8 +140,7 @@ CheckPlan plan_from(const Arguments& args) {
   plan.target_mm = args.number("target-mm", 1, 1e6);
   plan.bias_tolerance_mm = args.number("tolerance-mm", 0, 1e6);
   plan.noise_max_mm = args.number("noise-mm", 0, 1e6);
-  if (plan.target_mm && !plan.sector)
-    throw UsageError("--target-mm needs --sector A:B (the angles the target fills)");
+  if (plan.target_mm && !plan.sector) throw UsageError("--target-mm needs --sector A:B (the angles the target fills)");
   if ((plan.bias_tolerance_mm || plan.noise_max_mm) && !plan.target_mm)
     throw UsageError("--tolerance-mm and --noise-mm need --target-mm D (the target's distance)");
   for (const LimitOption& option : kLimitOptions)
@@ -151,8 +151,8 @@ CheckPlan plan_from(const Arguments& args) {
 }
 
 int run_check_command(std::span<const std::string> raw) {
-  std::set<std::string> options{"seconds", "settle-seconds", "scan-hz", "ranging-khz", "sector", "band", "target-mm",
-                                "tolerance-mm", "noise-mm", "format", "distance-scale", "report"};
+  std::set<std::string> options{"seconds",   "settle-seconds", "scan-hz",  "ranging-khz", "sector",         "band",
+                                "target-mm", "tolerance-mm",   "noise-mm", "format",      "distance-scale", "report"};
   for (const LimitOption& option : kLimitOptions) options.insert(option.name);
   const Arguments args(raw, session_value_options(options), {});
   const std::string format = args.value("format").value_or("text");
@@ -165,8 +165,10 @@ int run_check_command(std::span<const std::string> raw) {
   std::signal(SIGINT, check_on_signal);
   std::signal(SIGTERM, check_on_signal);
   const CheckRecord record = run_check(plan, interrupted);
-  if (format == "json") print_check_json(stdout, record);
-  else print_check_text(stdout, record);
+  if (format == "json")
+    print_check_json(stdout, record);
+  else
+    print_check_text(stdout, record);
   std::fflush(stdout);
   if (report) {
     try {

@@ -28,7 +28,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli decode --model MODEL [--format jsonl|csv|summary] [--filter LIST]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli decode --model MODEL [--format jsonl|csv|summary] [--filter LIST]
                           [--distance-scale X] [--mcap OUT.mcap [MCAP options]] FILE|-
 
 Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete laps.
@@ -124,8 +125,7 @@ void read_input(std::FILE* file, const std::string& path, FunctionRef<void(std::
     const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file);
     if (got > 0) on_chunk({buffer.data(), got});
     if (got < buffer.size()) {
-      if (std::ferror(file))
-        throw std::runtime_error("reading '" + path + "' failed: " + std::strerror(errno));
+      if (std::ferror(file)) throw std::runtime_error("reading '" + path + "' failed: " + std::strerror(errno));
       if (std::feof(file)) return;
     }
   }
@@ -159,9 +159,12 @@ InterferenceFilter parse_filter(const std::string& list) {
   while (start <= list.size()) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string item = list.substr(start, comma - start);
-    if (item == "specular") filter.specular = true;
-    else if (item == "ambient") filter.ambient_light = true;
-    else throw UsageError("--filter takes specular, ambient or specular,ambient, not '" + list + "'");
+    if (item == "specular")
+      filter.specular = true;
+    else if (item == "ambient")
+      filter.ambient_light = true;
+    else
+      throw UsageError("--filter takes specular, ambient or specular,ambient, not '" + list + "'");
     start = comma + 1;
   }
   return filter;
@@ -202,14 +205,13 @@ int run_decode(std::span<const std::string> raw) {
   const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
-  const auto recording = path != "-" && is_recording_file(path)
-                             ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"),
-                                                                     scale_option))
-                             : std::nullopt;
+  const auto recording =
+      path != "-" && is_recording_file(path)
+          ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"), scale_option))
+          : std::nullopt;
   const std::string model = recording ? "" : args.required("model");
   const ModelProfile* profile = recording ? recording->profile : find_profile(model);
-  if (!profile)
-    throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
+  if (!profile) throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
   const auto mcap = args.value("mcap");
   if (mcap) refuse_to_overwrite(*mcap, args, "--mcap");
   if (!mcap && (args.value("compression") || args.value("frame-id") || args.has("no-link-bytes") || args.has("force")))
@@ -219,16 +221,16 @@ int run_decode(std::span<const std::string> raw) {
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
   if (recording && recording->several_sources()) {
     if (mcap)
-      throw UsageError(path + " holds several lidars; make their MCAP with ydscope-cli export " + path +
-                       " --mcap " + *mcap);
+      throw UsageError(path + " holds several lidars; make their MCAP with ydscope-cli export " + path + " --mcap " +
+                       *mcap);
     print_recording_warnings("ydscope-cli decode", recording->warnings());
     const std::atomic<bool> never{false};
     print_source_laps(path, *recording, format, /*speed=*/0, filter, never);
     return kExitOk;
   }
-  const auto scale = recording ? recording_distance_scale(scale_option, args.value("model").has_value(),
-                                                          recording->summary.metadata)
-                               : scale_option;
+  const auto scale =
+      recording ? recording_distance_scale(scale_option, args.value("model").has_value(), recording->summary.metadata)
+                : scale_option;
 
   ScanDecoder decoder(*profile, scale);
   JsonOut out(stdout);
@@ -253,7 +255,8 @@ int run_decode(std::span<const std::string> raw) {
     write_summary(out, decoder.counters(), recording ? recording->summary.metadata.start_wall_time : std::nullopt);
   out.flush();
   if (mcap) write_mcap(args, path, recording.has_value(), *profile, scale);
-  if (std::fflush(stdout) != 0) throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
+  if (std::fflush(stdout) != 0)
+    throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
   return kExitOk;
 }
 

@@ -18,7 +18,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli export REC.ydrec --mcap OUT.mcap [--model MODEL] [--distance-scale X]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli export REC.ydrec --mcap OUT.mcap [--model MODEL] [--distance-scale X]
                           [--compression zstd|lz4|none] [--frame-id ID] [--no-link-bytes] [--force]
 
 Converts a recording (from `ydscope-cli record` or the app) into an MCAP file (profile ros2, every
@@ -69,7 +70,10 @@ int run_export(std::span<const std::string> raw) {
   const std::string out = args.required("mcap");
   require_existing_file(path, "recording");
   if (!is_recording_file(path))
-    throw UsageError(path + " is not a ydscope recording (.ydrec); for raw lidar bytes use `ydscope-cli decode --model MODEL --mcap " + out + " " + path + "`");
+    throw UsageError(
+        path +
+        " is not a ydscope recording (.ydrec); for raw lidar bytes use `ydscope-cli decode --model MODEL --mcap " +
+        out + " " + path + "`");
   refuse_to_overwrite(out, args, "--mcap");
   McapExportOptions options = mcap_options_from(args);
   // One pass for the merged metadata: the model may be named only after the recording started.
@@ -114,9 +118,8 @@ int run_export(std::span<const std::string> raw) {
   if (!ok) throw std::runtime_error("writing " + out + " failed: " + exporter->error());
   const auto& stats = exporter->statistics();
   std::printf("exported %s -> %s: %llu laps, %llu messages in %u chunks, %llu bytes\n", path.c_str(), out.c_str(),
-              static_cast<unsigned long long>(laps()),
-              static_cast<unsigned long long>(stats.message_count), stats.chunk_count,
-              static_cast<unsigned long long>(exporter->bytes_written()));
+              static_cast<unsigned long long>(laps()), static_cast<unsigned long long>(stats.message_count),
+              stats.chunk_count, static_cast<unsigned long long>(exporter->bytes_written()));
   std::fflush(stdout);
   print_recording_warnings("ydscope-cli export", plan.warnings());
   return kExitOk;

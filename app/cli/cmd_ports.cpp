@@ -40,10 +40,11 @@ examples:
 
 void print_table(const std::vector<SerialPortInfo>& ports) {
   if (ports.empty()) {
-    std::fputs("no serial ports found (looked for /dev/serial/by-id/*, /dev/ttyUSB*, /dev/ttyACM* and on-board "
-               "UARTs /dev/ttyAMA*, /dev/ttyTHS*, /dev/ttyS*); plug the "
-               "lidar in, check 'dmesg' for its driver, or use --port tcp://host:port for a network bridge\n",
-               stderr);
+    std::fputs(
+        "no serial ports found (looked for /dev/serial/by-id/*, /dev/ttyUSB*, /dev/ttyACM* and on-board "
+        "UARTs /dev/ttyAMA*, /dev/ttyTHS*, /dev/ttyS*); plug the "
+        "lidar in, check 'dmesg' for its driver, or use --port tcp://host:port for a network bridge\n",
+        stderr);
     return;
   }
   std::size_t width = 4;
@@ -56,8 +57,10 @@ void print_table(const std::vector<SerialPortInfo>& ports) {
     if (!port.driver.empty()) description += (description.empty() ? "driver " : ", driver ") + port.driver;
     const std::string usb = port.usb_id().empty() ? "-" : port.usb_id();
     std::printf("%-*s  %-7s  %-9s  %-7s  %s\n", static_cast<int>(width), port.preferred_path().c_str(),
-                port.known_lidar_bridge ? "likely" : port.on_board_uart ? "uart" : "-", usb.c_str(), port.name.c_str(),
-                description.c_str());
+                port.known_lidar_bridge ? "likely"
+                : port.on_board_uart    ? "uart"
+                                        : "-",
+                usb.c_str(), port.name.c_str(), description.c_str());
   }
 }
 
@@ -76,11 +79,15 @@ void print_json(const std::vector<SerialPortInfo>& ports) {
     out.raw(i == 0 ? "\n  {\"path\":" : ",\n  {\"path\":");
     out.string(port.path);
     out.raw(",\"by_id\":");
-    if (port.by_id.empty()) out.raw("null");
-    else out.string(port.by_id);
+    if (port.by_id.empty())
+      out.raw("null");
+    else
+      out.string(port.by_id);
     out.raw(",\"alias\":");
-    if (port.alias.empty()) out.raw("null");
-    else out.string(port.alias);
+    if (port.alias.empty())
+      out.raw("null");
+    else
+      out.string(port.alias);
     out.raw(",\"name\":");
     out.string(port.name);
     out.raw(",\"vendor_id\":");
@@ -108,8 +115,10 @@ int run_ports(std::span<const std::string> raw) {
   if (format != "table" && format != "json") throw UsageError("--format must be table or json, not '" + format + "'");
   const PortDiscovery discovery(args.value("dev-root").value_or("/dev"), args.value("sys-root").value_or("/sys"));
   const auto ports = discovery.list();
-  if (format == "json") print_json(ports);
-  else print_table(ports);
+  if (format == "json")
+    print_json(ports);
+  else
+    print_table(ports);
   return kExitOk;
 }
 

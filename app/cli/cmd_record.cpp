@@ -29,7 +29,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli record --port PATH (--out FILE | --mcap OUT.mcap | both) [--model auto|MODEL]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli record --port PATH (--out FILE | --mcap OUT.mcap | both) [--model auto|MODEL]
                           [--baud B|auto] [--seconds S] [--force] [MCAP options]
        ydscope-cli record --port PATH [--name NAME] [--pose X,Y,YAW[,flip]] --port PATH ...
                           (--out FILE | --mcap OUT.mcap | both) [--model ...] [--baud ...] [--seconds S]
@@ -102,9 +103,7 @@ extern "C" void record_on_signal(int) { interrupted.store(true); }  // C linkage
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Waits for a posted command's result, still noticing Ctrl-C.
 CommandResult await(std::future<CommandResult>& result) {
@@ -117,7 +116,8 @@ void show_progress(const std::string& out, double seconds, const CounterSnapshot
   std::fprintf(stderr, "\r\033[Krecording %s: %.1f s, %llu bytes from the device (%.1f kB/s), %llu laps", out.c_str(),
                seconds, static_cast<unsigned long long>(c.bytes_received), rate / 1000.0,
                static_cast<unsigned long long>(c.laps));
-  if (c.checksum_errors) std::fprintf(stderr, ", %llu checksum errors", static_cast<unsigned long long>(c.checksum_errors));
+  if (c.checksum_errors)
+    std::fprintf(stderr, ", %llu checksum errors", static_cast<unsigned long long>(c.checksum_errors));
   std::fflush(stderr);
 }
 
@@ -157,7 +157,8 @@ int run_record(std::span<const std::string> raw) {
   const auto out_option = args.value("out");
   const auto mcap_option = args.value("mcap");
   if (!out_option && !mcap_option) throw UsageError("say where to record: --out FILE.ydrec, --mcap FILE.mcap, or both");
-  if (out_option && mcap_option && *out_option == *mcap_option) throw UsageError("--out and --mcap must be different files");
+  if (out_option && mcap_option && *out_option == *mcap_option)
+    throw UsageError("--out and --mcap must be different files");
   const std::string out = out_option.value_or("");
   const auto seconds = args.number("seconds", 0.001, 1e7);
   // Before connecting: /dev/null once recorded for a second and then failed as "not a recording".
@@ -186,7 +187,8 @@ int run_record(std::span<const std::string> raw) {
     if (!live) throw std::runtime_error(error);
   }
   if (out_option) {
-    const CommandResult start = run_and_wait([&](CommandCallback done) { session.start_recording(out, std::move(done)); });
+    const CommandResult start =
+        run_and_wait([&](CommandCallback done) { session.start_recording(out, std::move(done)); });
     if (!start.ok) throw std::runtime_error(start.message);
   }
   const std::string shown = out_option ? out : *mcap_option;
@@ -232,7 +234,8 @@ int run_record(std::span<const std::string> raw) {
     }
     if (tty && Clock::now() - last_progress >= std::chrono::milliseconds(250)) {
       const double elapsed = seconds_since(scan_start);
-      const double rate = elapsed > 0.2 ? static_cast<double>(s.counters.bytes_received - bytes_at_scan_start) / elapsed : 0.0;
+      const double rate =
+          elapsed > 0.2 ? static_cast<double>(s.counters.bytes_received - bytes_at_scan_start) / elapsed : 0.0;
       show_progress(shown, elapsed, s.counters, rate);
       last_progress = Clock::now();
     }
@@ -244,8 +247,9 @@ int run_record(std::span<const std::string> raw) {
   if (out_option) run_and_wait([&](CommandCallback done) { session.stop_recording(std::move(done)); });
   if (live && !live->stop()) throw std::runtime_error(live->error());
   session.disconnect();
-  session.wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
-                     std::chrono::seconds(3));
+  session.wait_until(
+      [](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
+      std::chrono::seconds(3));
 
   if (out_option) {
     std::string error;

@@ -24,7 +24,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli replay FILE [--speed X] [--format jsonl|csv|summary] [--model MODEL]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli replay FILE [--speed X] [--format jsonl|csv|summary] [--model MODEL]
                           [--distance-scale X]
 
 Plays back the bytes the lidar sent in a recording made by `ydscope-cli record` (or the app),
@@ -64,8 +65,8 @@ int run_replay(std::span<const std::string> raw) {
   require_existing_file(path, "recording");
   const double speed = args.number("speed", 0, kMaxReplaySpeed).value_or(1.0);
   if (speed > 0 && speed < kMinReplaySpeed)  // slower would wait for days between two records
-    throw UsageError("--speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '" +
-                     *args.value("speed") + "'");
+    throw UsageError("--speed must be 0 (as fast as possible) or from 0.001 to 1000000, not '" + *args.value("speed") +
+                     "'");
   const LapFormat format = parse_lap_format(args.value("format"), LapFormat::Jsonl);
 
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);

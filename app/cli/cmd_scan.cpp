@@ -19,7 +19,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli scan --port PATH [--model auto|MODEL] [--baud B|auto] --laps N [--format jsonl|csv|summary]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli scan --port PATH [--model auto|MODEL] [--baud B|auto] --laps N [--format jsonl|csv|summary]
 
 Starts the lidar scanning, prints N complete laps and a summary, then stops the lidar.
 Ctrl-C stops early (the lidar is stopped and the summary printed).

@@ -20,7 +20,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli serve --port PATH|tcp://HOST:PORT [--listen HOST:PORT] [--mcap FILE]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli serve --port PATH|tcp://HOST:PORT [--listen HOST:PORT] [--mcap FILE]
                          [--model auto|MODEL] [--baud B|auto] [--queue N] [--seconds S]
                          [--force] [MCAP options]
        ydscope-cli serve --port PATH [--name NAME] [--pose X,Y,YAW[,flip]] --port PATH ... [options]
@@ -100,9 +101,9 @@ foxglove::ServerOptions listen_options(const Arguments& args) {
 }
 
 int run_serve(std::span<const std::string> raw) {
-  const Arguments args(raw,
-                       with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose"})),
-                       with_mcap_flags({"force"}), 0, source_repeatable_options());
+  const Arguments args(
+      raw, with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose"})),
+      with_mcap_flags({"force"}), 0, source_repeatable_options());
   if (args.values("port").size() > 1) {
     const foxglove::ServerOptions options = listen_options(args);
     std::signal(SIGINT, serve_on_signal);

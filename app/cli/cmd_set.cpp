@@ -13,7 +13,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli set --port PATH [--model auto|MODEL] [--baud B|auto] (--scan-hz F | --ranging-khz K)
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli set --port PATH [--model auto|MODEL] [--baud B|auto] (--scan-hz F | --ranging-khz K)
 
 Steps the set scan frequency (A5 09/0A/0B/0C: +-0.1 and +-1 Hz) until the read-back (A5 0D) is
 the target, or cycles the ranging frequency (A5 D0) until A5 D1 reads it. The lidar is stopped
@@ -50,8 +51,10 @@ int run_set(std::span<const std::string> raw) {
   auto promise = std::make_shared<std::promise<CommandResult>>();
   auto future = promise->get_future();
   const CommandCallback done = [promise](const CommandResult& r) { promise->set_value(r); };
-  if (scan_hz) session.set_scan_hz(*scan_hz, done);
-  else session.set_ranging_khz(static_cast<std::uint16_t>(*ranging_khz), done);
+  if (scan_hz)
+    session.set_scan_hz(*scan_hz, done);
+  else
+    session.set_ranging_khz(static_cast<std::uint16_t>(*ranging_khz), done);
   if (future.wait_for(std::chrono::seconds(120)) != std::future_status::ready)
     throw std::runtime_error("the command did not finish within 120 s on " + config.address);
   const CommandResult result = future.get();

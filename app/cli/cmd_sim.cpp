@@ -18,7 +18,8 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth]
+constexpr std::string_view kHelpText =
+    R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth]
                        [--seed N] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
                        [--delivery whole|burst:BYTES:US|random:MAX] [fault options] [--verbose]
 
@@ -122,16 +123,32 @@ std::pair<std::string, std::uint16_t> parse_host_port(const std::string& text) {
 
 int run_sim(std::span<const std::string> raw) {
   const Arguments args(raw,
-                       {"model", "pty", "tcp", "scene", "seed", "distance-scale", "zero-log", "corrupt", "drop",
-                        "lose-packets", "stall-ms", "stall-every-ms", "health-bits", "junk", "unplug-after-ms",
-                        "replug-after-ms", "host-compat", "firmware", "delivery", "scan-offset-hz",
+                       {"model",
+                        "pty",
+                        "tcp",
+                        "scene",
+                        "seed",
+                        "distance-scale",
+                        "zero-log",
+                        "corrupt",
+                        "drop",
+                        "lose-packets",
+                        "stall-ms",
+                        "stall-every-ms",
+                        "health-bits",
+                        "junk",
+                        "unplug-after-ms",
+                        "replug-after-ms",
+                        "host-compat",
+                        "firmware",
+                        "delivery",
+                        "scan-offset-hz",
                         "scan-wobble-hz"},
                        {"verbose", "health-quirk"});
 
   const std::string model_name = args.required("model");
   const ModelProfile* profile = find_profile(model_name);
-  if (!profile)
-    throw UsageError("unknown model '" + model_name + "'; the models are " + std::string(model_names()));
+  if (!profile) throw UsageError("unknown model '" + model_name + "'; the models are " + std::string(model_names()));
   if (args.has("pty") == args.has("tcp")) throw UsageError("give exactly one of --pty LINK or --tcp HOST:PORT");
 
   SimServerOptions options;

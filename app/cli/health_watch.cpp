@@ -12,7 +12,8 @@ bool same_answer(const HealthReport& a, const HealthReport& b) {
 // What the user may do about it, by how bad it is.
 const char* advice(HealthLevel level) {
   switch (level) {
-    case HealthLevel::Error: return "; its laps may be wrong (the lidar's manual says what this means; power-cycling may clear it)";
+    case HealthLevel::Error:
+      return "; its laps may be wrong (the lidar's manual says what this means; power-cycling may clear it)";
     case HealthLevel::Warning: return "; its laps may be degraded (the lidar's manual says what this means)";
     case HealthLevel::Ok: return "";
   }
@@ -32,16 +33,18 @@ void HealthWatch::observe_answer(const std::optional<HealthReport>& answer) {
 void HealthWatch::observe_lap(const Lap& lap) {
   if (!lap.health_bits || !lap.ct_info_trusted()) return;
   const HealthReport bits = make_health_report(Command::HealthStatusBits, {*lap.health_bits, 0});
-  note({health_bits_level(*lap.health_bits), bits.summary, "CT", "lap " + std::to_string(lap.index) + "'s CT health says"});
+  note({health_bits_level(*lap.health_bits), bits.summary, "CT",
+        "lap " + std::to_string(lap.index) + "'s CT health says"});
 }
 
 void HealthWatch::note(Observation o) {
   // The same words from another source (A5 92, then each lap's CT bits) are no news.
   const bool changed = !current_ || current_->level != o.level || current_->summary != o.summary;
   if (changed && (o.level != HealthLevel::Ok || (current_ && current_->level != HealthLevel::Ok))) {
-    const std::string label = o.level == HealthLevel::Ok ? "health ok again" : "health " + std::string(health_level_name(o.level));
-    std::fprintf(err_, "%s%s: %s: %s %s%s\n", clear_line_ ? "\r\033[K" : "", program_.c_str(), label.c_str(), o.where.c_str(), o.summary.c_str(),
-                 advice(o.level));
+    const std::string label =
+        o.level == HealthLevel::Ok ? "health ok again" : "health " + std::string(health_level_name(o.level));
+    std::fprintf(err_, "%s%s: %s: %s %s%s\n", clear_line_ ? "\r\033[K" : "", program_.c_str(), label.c_str(),
+                 o.where.c_str(), o.summary.c_str(), advice(o.level));
     std::fflush(err_);
   }
   if (!worst_ || o.level > worst_->level) worst_ = o;

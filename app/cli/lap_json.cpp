@@ -23,13 +23,13 @@ void JsonOut::string(std::string_view text) { append_json_string(text_, text); }
 
 void JsonOut::flush() {
   // fflush too: stdout on a pipe is fully buffered, and a reader must get each line we hand over.
-  if (!text_.empty() && (std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size() || std::fflush(file_) != 0)) {
+  if (!text_.empty() &&
+      (std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size() || std::fflush(file_) != 0)) {
     text_.clear();
     throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
   }
   text_.clear();
 }
-
 
 namespace {
 void write_type(JsonOut& out, std::string_view type, std::optional<std::string_view> source) {

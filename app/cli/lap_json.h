@@ -30,12 +30,16 @@ class JsonOut {
   std::string& buffer() { return text_; }
   // The value, or JSON null when there is none.
   void integer_or_null(const std::optional<std::uint64_t>& value) {
-    if (value) integer(*value);
-    else raw("null");
+    if (value)
+      integer(*value);
+    else
+      raw("null");
   }
   void fixed_or_null(const std::optional<double>& value, int decimals) {
-    if (value) fixed(*value, decimals);
-    else raw("null");
+    if (value)
+      fixed(*value, decimals);
+    else
+      raw("null");
   }
   // A JSON string literal with quotes and escapes. Bytes that are not UTF-8 (a device's serial,
   // a sysfs name) become U+FFFD, so the output is always valid JSON text.

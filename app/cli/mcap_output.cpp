@@ -31,7 +31,8 @@ McapExportOptions mcap_options_from(const Arguments& args) {
 
 void refuse_to_overwrite(const std::string& path, const Arguments& args, std::string_view option) {
   if (!args.has("force") && std::filesystem::exists(path))
-    throw UsageError(path + " already exists; choose another " + std::string(option) + " or add --force to overwrite it");
+    throw UsageError(path + " already exists; choose another " + std::string(option) +
+                     " or add --force to overwrite it");
 }
 
 }  // namespace ydscope::cli

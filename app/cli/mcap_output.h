@@ -23,8 +23,8 @@ void refuse_to_overwrite(const std::string& path, const Arguments& args, std::st
 
 // The lines of these options in --help texts (a literal, so help texts can splice it in).
 #define YDSCOPE_MCAP_OPTIONS_HELP                                                                   \
-  "  --compression C    MCAP chunk compression: zstd (default), lz4 or none\n"                     \
-  "  --frame-id ID      frame_id of /scan, /points and /diagnostics (default: laser)\n"            \
+  "  --compression C    MCAP chunk compression: zstd (default), lz4 or none\n"                      \
+  "  --frame-id ID      frame_id of /scan, /points and /diagnostics (default: laser)\n"             \
   "  --no-link-bytes    leave out /ydscope/device_bytes and /ydscope/host_bytes (a smaller file,\n" \
   "                     but it can no longer be decoded again like a recording)\n"
 

@@ -64,7 +64,8 @@ void watch(Source& source, const SessionSnapshot& s, bool tty) {
     source.down_said = false;
     return;
   }
-  const bool trouble = s.state == LinkState::Stalled || s.state == LinkState::Reconnecting || s.state == LinkState::Failed;
+  const bool trouble =
+      s.state == LinkState::Stalled || s.state == LinkState::Reconnecting || s.state == LinkState::Failed;
   if (!trouble) return;
   if (!s.message.empty()) source.last_problem = s.message;
   if (source.down_said) return;
@@ -107,7 +108,8 @@ std::vector<std::uint64_t> laps_per_source(const std::string& path, const Record
 }
 
 // What the .ydrec holds, per lidar, as replay will decode it.
-void print_recording_summary(const std::string& out, const std::vector<Source>& sources, const RecordingSummary& summary) {
+void print_recording_summary(const std::string& out, const std::vector<Source>& sources,
+                             const RecordingSummary& summary) {
   const auto laps = laps_per_source(out, summary);
   std::printf("recorded %s: %.1f s, %zu lidars\n", out.c_str(), static_cast<double>(summary.duration_ns) / 1e9,
               sources.size());
@@ -217,8 +219,9 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   if (live && !live->stop() && failure.empty()) failure = live->error();
   for (Source& source : sources) source.session->disconnect();
   for (Source& source : sources)
-    source.session->wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
-                               std::chrono::seconds(3));
+    source.session->wait_until(
+        [](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
+        std::chrono::seconds(3));
 
   bool health_error = false;
   bool any_bytes = false;

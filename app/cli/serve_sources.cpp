@@ -25,8 +25,10 @@ bool link_in_trouble(LinkState state) {
 
 void warn_if_not_loopback(const SessionShare& share) {
   if (is_loopback_host(share.host())) return;
-  std::fprintf(stderr, "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
-                       "lidar and change its settings (there is no authentication)\n", share.host().c_str());
+  std::fprintf(stderr,
+               "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
+               "lidar and change its settings (there is no authentication)\n",
+               share.host().c_str());
 }
 
 void serve_until_stopped(SessionShare& share, const std::vector<ServedLidar>& lidars, std::optional<double> seconds,
@@ -43,8 +45,8 @@ void serve_until_stopped(SessionShare& share, const std::vector<ServedLidar>& li
       if (s.state == last_state[id]) continue;
       last_state[id] = s.state;
       if (link_in_trouble(s.state))
-        std::fprintf(stderr, "ydscope-cli serve: %s%s\n", lidars[id].name.empty() ? "" : (lidars[id].name + ": ").c_str(),
-                     describe_snapshot(s).c_str());
+        std::fprintf(stderr, "ydscope-cli serve: %s%s\n",
+                     lidars[id].name.empty() ? "" : (lidars[id].name + ": ").c_str(), describe_snapshot(s).c_str());
     }
   }
 

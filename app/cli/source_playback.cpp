@@ -51,7 +51,8 @@ void print_source_laps(const std::string& path, const RecordingPlan& plan, LapFo
   RecordView record;
   while (!stop.load() && reader->next(record)) {
     if (speed > 0 && record.type == RecordType::DeviceToHost) {
-      const auto due = start + std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(record.t_ns) / speed));
+      const auto due =
+          start + std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(record.t_ns) / speed));
       if (!wait_until(due, stop)) break;
     }
     decoders.feed(record, on_lap);

@@ -70,9 +70,8 @@ struct PlotFrame {
 std::string empty_chart(std::string_view title, std::string_view sentence) {
   PlotFrame frame;
   frame.height = 80;
-  return frame.open(title) +
-         format_text(R"(<text x="%.0f" y="44" text-anchor="middle" fill="%s">%s</text></svg>)", frame.width / 2, kInk,
-                     markup_escaped(sentence).c_str());
+  return frame.open(title) + format_text(R"(<text x="%.0f" y="44" text-anchor="middle" fill="%s">%s</text></svg>)",
+                                         frame.width / 2, kInk, markup_escaped(sentence).c_str());
 }
 
 }  // namespace
@@ -115,8 +114,8 @@ std::string svg_scan_rate_chart(std::span<const LapRateSample> series, double ta
 
   std::string svg = f.open(kTitle);
   svg += format_text(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="%s" fill-opacity="0.12"/>)", f.left,
-                     f.sy(target_hz + band), f.width - f.left - f.right, f.sy(target_hz - band) - f.sy(target_hz + band),
-                     kTarget);
+                     f.sy(target_hz + band), f.width - f.left - f.right,
+                     f.sy(target_hz - band) - f.sy(target_hz + band), kTarget);
   svg += f.axes("time (s)", "scan rate (Hz)");
   svg += format_text(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-dasharray="6 4"/>)", f.left,
                      f.sy(target_hz), f.width - f.right, f.sy(target_hz), kTarget);
@@ -172,8 +171,9 @@ std::string svg_polar_snapshot(const Lap& lap, const std::optional<Sector>& sect
   float far = 0;
   for (const LapPoint& p : lap.points) far = std::max(far, p.range_mm);
   if (lap.points.empty() || far <= 0)
-    return svg + format_text(R"(<text x="%.0f" y="%.0f" text-anchor="middle" fill="%s">no lap was measured</text></svg>)",
-                             kCentre, kCentre, kInk);
+    return svg +
+           format_text(R"(<text x="%.0f" y="%.0f" text-anchor="middle" fill="%s">no lap was measured</text></svg>)",
+                       kCentre, kCentre, kInk);
   const double step_mm = nice_step(far, 4), outer_mm = std::ceil(far / step_mm) * step_mm;
   const double scale = kRadius / outer_mm;
   // Angles run clockwise from straight ahead (up), as the lidar counts them.

@@ -33,8 +33,8 @@ CriterionResult identity(const CheckObservations& o) {
                            static_cast<int>(reported_name.size()), reported_name.data(),
                            o.identity.firmware.empty() ? "?" : o.identity.firmware.c_str(),
                            o.identity.serial.empty() ? "?" : o.identity.serial.c_str());
-  const bool ok = p && o.identity.model_code == p->model_code && !o.identity.firmware.empty() &&
-                  !o.identity.serial.empty();
+  const bool ok =
+      p && o.identity.model_code == p->model_code && !o.identity.firmware.empty() && !o.identity.serial.empty();
   r.verdict = ok ? Verdict::Pass : Verdict::Fail;
   return r;
 }
@@ -57,9 +57,9 @@ CriterionResult health(const CheckObservations& o) {
 
 CriterionResult scan_rate(const CheckObservations& o, const AcceptanceLimits& l) {
   const LapTimingStatistics& t = o.timing;
-  CriterionResult r{"scan_rate", "scan rate", "",
-                    format_text("%.2f Hz ± %.1f %%", l.scan_hz_target, l.scan_hz_tolerance_pct), Verdict::Fail,
-                    std::nullopt};
+  CriterionResult r{
+      "scan_rate",   "scan rate", "", format_text("%.2f Hz ± %.1f %%", l.scan_hz_target, l.scan_hz_tolerance_pct),
+      Verdict::Fail, std::nullopt};
   if (t.normal_laps < 2) {
     r.measured = format_text("too few laps (%llu)", static_cast<unsigned long long>(t.normal_laps));
     return r;
@@ -68,7 +68,8 @@ CriterionResult scan_rate(const CheckObservations& o, const AcceptanceLimits& l)
   r.measured = format_text("%.3f Hz (%+.2f %%; mean of %llu laps, %.2f-%.2f Hz)", t.mean_hz,
                            100.0 * (t.mean_hz - l.scan_hz_target) / l.scan_hz_target,
                            static_cast<unsigned long long>(t.normal_laps), t.min_hz, t.max_hz);
-  r.verdict = within(deviation_pct(t.mean_hz, l.scan_hz_target), l.scan_hz_tolerance_pct) ? Verdict::Pass : Verdict::Fail;
+  r.verdict =
+      within(deviation_pct(t.mean_hz, l.scan_hz_target), l.scan_hz_tolerance_pct) ? Verdict::Pass : Verdict::Fail;
   return r;
 }
 
@@ -81,18 +82,21 @@ CriterionResult scan_jitter(const CheckObservations& o, const AcceptanceLimits& 
     return r;
   }
   r.value = t.jitter_pct;
-  r.measured = format_text("%.2f %% (robust std-dev of the samples per lap, %.1f on average)", t.jitter_pct,
-                           t.samples_per_lap);
+  r.measured =
+      format_text("%.2f %% (robust std-dev of the samples per lap, %.1f on average)", t.jitter_pct, t.samples_per_lap);
   r.verdict = within(t.jitter_pct, l.scan_jitter_max_pct) ? Verdict::Pass : Verdict::Fail;
   return r;
 }
 
 CriterionResult sample_rate(const CheckObservations& o, const AcceptanceLimits& l) {
   const double expected = o.ranging_khz * 1000.0;
-  CriterionResult r{"sample_rate", "sample rate", "",
-                    format_text("%u kHz ± %.1f %% (the ranging frequency in use)", o.ranging_khz,
-                                l.sample_rate_tolerance_pct),
-                    Verdict::Fail, std::nullopt};
+  CriterionResult r{
+      "sample_rate",
+      "sample rate",
+      "",
+      format_text("%u kHz ± %.1f %% (the ranging frequency in use)", o.ranging_khz, l.sample_rate_tolerance_pct),
+      Verdict::Fail,
+      std::nullopt};
   if (o.ranging_khz == 0) r.limit = "the ranging frequency in use (not read)";
   if (o.timing.normal_laps == 0) {
     r.measured = "no complete lap";
@@ -112,11 +116,11 @@ CriterionResult link(const CheckObservations& o, const AcceptanceLimits& l) {
   const auto count = [](std::uint64_t n) { return static_cast<unsigned long long>(n); };
   const auto most = [](double n) { return static_cast<unsigned long long>(n); };
   CriterionResult r{"link", "link", "", "", Verdict::Fail, std::nullopt};
-  r.measured = format_text("checksum errors %llu, resync bytes %llu, CRC8 failures %s, queue drops %llu, "
-                           "lost samples %llu",
-                           count(k.checksum_errors), count(k.resync_bytes),
-                           g1 ? std::to_string(k.crc8_failures).c_str() : "n/a", count(k.queue_drops),
-                           count(k.lost_samples));
+  r.measured = format_text(
+      "checksum errors %llu, resync bytes %llu, CRC8 failures %s, queue drops %llu, "
+      "lost samples %llu",
+      count(k.checksum_errors), count(k.resync_bytes), g1 ? std::to_string(k.crc8_failures).c_str() : "n/a",
+      count(k.queue_drops), count(k.lost_samples));
   r.limit = format_text("at most %llu, %llu, %llu, %llu, %llu", most(l.max_checksum_errors), most(l.max_resync_bytes),
                         most(l.max_crc8_failures), most(l.max_queue_drops), most(l.max_lost_samples));
   const bool ok = static_cast<double>(k.checksum_errors) <= l.max_checksum_errors &&
@@ -148,16 +152,17 @@ void range_criteria(const CheckObservations& o, const AcceptanceLimits& l, std::
   const ValueSummary& d = o.sector->flat_distance_mm;
   const double bias_limit = l.bias_tolerance_mm.value_or(default_bias_tolerance_mm(target));
   const double noise_limit = l.noise_max_mm.value_or(default_noise_max_mm(target));
-  CriterionResult bias{"range_bias", "range bias", "", format_text("|bias| at most %.1f mm from %.1f mm", bias_limit, target),
-                       Verdict::Fail, std::nullopt};
+  CriterionResult bias{
+      "range_bias",  "range bias", "", format_text("|bias| at most %.1f mm from %.1f mm", bias_limit, target),
+      Verdict::Fail, std::nullopt};
   CriterionResult noise{"range_noise", "range noise", "", format_text("std-dev at most %.1f mm", noise_limit),
                         Verdict::Fail, std::nullopt};
   if (d.count < 2) {
     bias.measured = noise.measured = "fewer than two valid returns in the sector";
   } else {
     bias.value = d.mean - target;
-    bias.measured = format_text("%+.1f mm (mean %.1f mm, median %.1f mm, %zu returns)", d.mean - target, d.mean,
-                                d.median, d.count);
+    bias.measured =
+        format_text("%+.1f mm (mean %.1f mm, median %.1f mm, %zu returns)", d.mean - target, d.mean, d.median, d.count);
     bias.verdict = within(std::fabs(d.mean - target), bias_limit) ? Verdict::Pass : Verdict::Fail;
     noise.value = d.stddev;
     noise.measured = format_text("%.1f mm (range %.1f-%.1f mm)", d.stddev, d.min, d.max);
@@ -187,7 +192,8 @@ std::vector<CriterionResult> evaluate_acceptance(const CheckObservations& o, con
 }
 
 bool all_passed(const std::vector<CriterionResult>& results) {
-  return std::all_of(results.begin(), results.end(), [](const CriterionResult& r) { return r.verdict == Verdict::Pass; });
+  return std::all_of(results.begin(), results.end(),
+                     [](const CriterionResult& r) { return r.verdict == Verdict::Pass; });
 }
 
 }  // namespace ydscope

@@ -15,17 +15,17 @@
 namespace ydscope {
 
 struct IdentityObservation {
-  bool answered = false;       // A5 90 answered
+  bool answered = false;  // A5 90 answered
   std::uint8_t model_code = 0;
-  std::string firmware;        // "1.2"
+  std::string firmware;  // "1.2"
   std::string serial;
 };
 
 // One health reading: an A5 91/92 answer or G1's CT health bits in the laps.
 struct HealthObservation {
-  std::string source;       // "A5 91 before the run", "CT health in 3 of 120 laps"
-  bool problem = false;     // any error or warning
-  std::string summary;      // "ok", "error (code 0x0004)", "encoder abnormal"
+  std::string source;    // "A5 91 before the run", "CT health in 3 of 120 laps"
+  bool problem = false;  // any error or warning
+  std::string summary;   // "ok", "error (code 0x0004)", "encoder abnormal"
 };
 
 struct LinkObservation {
@@ -43,7 +43,7 @@ struct CheckObservations {
   LapTimingStatistics timing;
   std::uint16_t ranging_khz = 0;  // in use (A5 D1 read-back)
   LinkObservation link;
-  std::uint64_t points = 0;       // all points received while measuring
+  std::uint64_t points = 0;  // all points received while measuring
   std::uint64_t valid_points = 0;
   std::optional<SectorStatistics> sector;
   std::optional<std::string> sector_name;  // "260:280"

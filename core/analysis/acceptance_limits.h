@@ -13,17 +13,17 @@
 namespace ydscope {
 
 struct AcceptanceLimits {
-  double scan_hz_target = 0;            // the rate set before measuring
-  double scan_hz_tolerance_pct = 0;     // |mean - target| / target
-  double scan_jitter_max_pct = 0;       // robust std-dev of the lap period
-  double sample_rate_tolerance_pct = 0; // |samples/s - ranging kHz * 1000| / that
+  double scan_hz_target = 0;             // the rate set before measuring
+  double scan_hz_tolerance_pct = 0;      // |mean - target| / target
+  double scan_jitter_max_pct = 0;        // robust std-dev of the lap period
+  double sample_rate_tolerance_pct = 0;  // |samples/s - ranging kHz * 1000| / that
   double max_checksum_errors = 0;
   double max_resync_bytes = 0;
   double max_crc8_failures = 0;
   double max_queue_drops = 0;
   double max_lost_samples = 0;
-  double min_valid_share = 0;           // 0..1, all points
-  double min_sector_valid_share = 0;    // 0..1, points in the sector
+  double min_valid_share = 0;         // 0..1, all points
+  double min_sector_valid_share = 0;  // 0..1, points in the sector
   // Range against a flat target at target_mm: |bias| and std-dev, in mm. Defaults scale with the
   // distance (see range_defaults_for); a flag replaces them with a fixed value.
   std::optional<double> bias_tolerance_mm;

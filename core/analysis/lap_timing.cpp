@@ -33,8 +33,13 @@ void LapTimingAccumulator::add(const Lap& lap) {
   // zero packet's first byte against the next one's last byte), so a lap without its predecessor
   // (the first, or one after laps the queue dropped) has no period of its own.
   const bool follows = have_previous_ && lap.index == previous_index_ + 1;
-  LapRecord record{lap.index, lap.last_rx_ns, follows, follows ? lap.last_rx_ns - previous_close_ns_ : 0,
-                   static_cast<std::uint32_t>(lap.points.size()), 0, 0.0};
+  LapRecord record{lap.index,
+                   lap.last_rx_ns,
+                   follows,
+                   follows ? lap.last_rx_ns - previous_close_ns_ : 0,
+                   static_cast<std::uint32_t>(lap.points.size()),
+                   0,
+                   0.0};
   have_previous_ = true;
   previous_index_ = lap.index;
   previous_close_ns_ = lap.last_rx_ns;
@@ -107,12 +112,13 @@ LapTimingStatistics LapTimingAccumulator::statistics() const {
       made_up += excess[j];
       silent = std::min(silent, excess[i] + made_up);
     }
-    const double silent_laps = silent > (kInterruptionPeriods - 1.0) * median_period ? std::round(silent / median_period) : 0.0;
+    const double silent_laps =
+        silent > (kInterruptionPeriods - 1.0) * median_period ? std::round(silent / median_period) : 0.0;
     spans[i] = turns[i] + std::max(0.0, silent_laps);
   }
 
-  std::vector<double> samples;                              // per normal lap
-  std::vector<std::pair<double, double>> count_and_time;    // revolutions so far, close time (s)
+  std::vector<double> samples;                            // per normal lap
+  std::vector<std::pair<double, double>> count_and_time;  // revolutions so far, close time (s)
   double revolutions = 0;
   const std::int64_t t0 = laps_.front().close_ns;
   for (std::size_t i = 0; i < laps_.size(); ++i) {

@@ -36,11 +36,11 @@ struct LapTimingStatistics {
   double mean_hz = 0;               // robust slope of the lap-close times
   double min_hz = 0;                // per-lap rates of the normal laps
   double max_hz = 0;
-  double jitter_pct = 0;            // robust std-dev of samples per lap, % of their median
-  double samples_per_lap = 0;       // mean of received + missing samples over the normal laps
-  double sample_rate_hz = 0;        // samples_per_lap * mean_hz
-  std::uint64_t points = 0;         // points received in all laps
-  std::uint64_t lost_samples = 0;   // estimated samples that never arrived
+  double jitter_pct = 0;              // robust std-dev of samples per lap, % of their median
+  double samples_per_lap = 0;         // mean of received + missing samples over the normal laps
+  double sample_rate_hz = 0;          // samples_per_lap * mean_hz
+  std::uint64_t points = 0;           // points received in all laps
+  std::uint64_t lost_samples = 0;     // estimated samples that never arrived
   std::vector<LapRateSample> series;  // one entry per normal lap, in order
 };
 
@@ -55,10 +55,10 @@ class LapTimingAccumulator {
 
  private:
   struct LapRecord {
-    std::uint64_t index;    // Lap::index: laps the queue dropped leave a gap
+    std::uint64_t index;  // Lap::index: laps the queue dropped leave a gap
     std::int64_t close_ns;
-    bool timed;             // the previous lap was seen, so period_ns means something
-    std::int64_t period_ns; // from the previous lap's close; 0 when both closed in one read
+    bool timed;              // the previous lap was seen, so period_ns means something
+    std::int64_t period_ns;  // from the previous lap's close; 0 when both closed in one read
     std::uint32_t points;
     std::uint32_t missing;  // from gaps in the first-level angles
     double turns;           // first-level angle covered, in turns (2 when a zero packet was lost)

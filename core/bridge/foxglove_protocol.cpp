@@ -23,9 +23,12 @@ void append_number(std::string& out, double value) {
 }
 
 void append_value(std::string& out, const std::variant<double, bool, std::string>& value) {
-  if (const double* d = std::get_if<double>(&value)) append_number(out, *d);
-  else if (const bool* b = std::get_if<bool>(&value)) out += *b ? "true" : "false";
-  else append_json_string(out, std::get<std::string>(value));
+  if (const double* d = std::get_if<double>(&value))
+    append_number(out, *d);
+  else if (const bool* b = std::get_if<bool>(&value))
+    out += *b ? "true" : "false";
+  else
+    append_json_string(out, std::get<std::string>(value));
 }
 
 // property_tree keeps every JSON scalar as text: numbers, booleans and strings look alike, so a
@@ -71,8 +74,10 @@ bool nests_deeper_than(std::string_view text, int limit) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
@@ -130,7 +135,8 @@ std::string status_json(StatusLevel level, std::string_view message, std::string
   return out;
 }
 
-std::string parameter_values_json(const std::vector<Parameter>& parameters, const std::optional<std::string>& request_id) {
+std::string parameter_values_json(const std::vector<Parameter>& parameters,
+                                  const std::optional<std::string>& request_id) {
   std::string out = R"({"op":"parameterValues","parameters":[)";
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     if (i) out += ",";

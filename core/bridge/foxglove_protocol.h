@@ -37,7 +37,8 @@ struct Parameter {
 std::string server_info_json(std::string_view name, std::string_view session_id);
 std::string advertise_json(const std::vector<ChannelAd>& channels);
 std::string status_json(StatusLevel level, std::string_view message, std::string_view id = {});
-std::string parameter_values_json(const std::vector<Parameter>& parameters, const std::optional<std::string>& request_id);
+std::string parameter_values_json(const std::vector<Parameter>& parameters,
+                                  const std::optional<std::string>& request_id);
 
 // Message Data: opcode 1, u32 subscription id, u64 log time (ns), then the payload.
 std::array<std::uint8_t, 13> message_data_header(std::uint32_t subscription_id, std::uint64_t log_time_ns);
@@ -62,8 +63,8 @@ struct SubscribeParameterUpdates {
 struct UnsubscribeParameterUpdates {
   std::vector<std::string> names;  // empty: all
 };
-using ClientRequest =
-    std::variant<Subscribe, Unsubscribe, GetParameters, SetParameters, SubscribeParameterUpdates, UnsubscribeParameterUpdates>;
+using ClientRequest = std::variant<Subscribe, Unsubscribe, GetParameters, SetParameters, SubscribeParameterUpdates,
+                                   UnsubscribeParameterUpdates>;
 
 // A text message from a client; empty plus one sentence in `error` when it is not JSON, has no
 // known "op", or its fields have the wrong shape.

@@ -39,8 +39,11 @@ class FoxgloveServer::Impl {
   class Client;
 
   Impl(ServerOptions options, std::vector<ServerChannel> channels, ParameterBackend* parameters)
-      : options_(std::move(options)), channels_(std::move(channels)), parameters_(parameters),
-        work_(asio::make_work_guard(io_)), acceptor_(io_) {}
+      : options_(std::move(options)),
+        channels_(std::move(channels)),
+        parameters_(parameters),
+        work_(asio::make_work_guard(io_)),
+        acceptor_(io_) {}
 
   bool start(std::string& error);
   void stop();
@@ -75,7 +78,8 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
     out.json = std::move(json);
     enqueue(std::move(out));
   }
-  void send_message(std::uint32_t channel_id, std::uint64_t log_time, const std::shared_ptr<const std::vector<std::uint8_t>>& payload) {
+  void send_message(std::uint32_t channel_id, std::uint64_t log_time,
+                    const std::shared_ptr<const std::vector<std::uint8_t>>& payload) {
     const auto it = by_channel_.find(channel_id);
     if (it == by_channel_.end()) return;
     OutgoingMessage out;
@@ -83,7 +87,8 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
     out.payload = payload;
     enqueue(std::move(out));
   }
-  void send_parameters(const std::vector<Parameter>& values, const std::optional<std::string>& id, bool only_subscribed) {
+  void send_parameters(const std::vector<Parameter>& values, const std::optional<std::string>& id,
+                       bool only_subscribed) {
     std::vector<Parameter> chosen;
     for (const auto& p : values)
       if (!only_subscribed || all_parameters_ || parameter_subscriptions_.count(p.name)) chosen.push_back(p);
@@ -219,7 +224,8 @@ asio::awaitable<void> FoxgloveServer::Impl::Client::run() {
       send_text(status_json(StatusLevel::Error, "ignored a client message of " + std::to_string(message_size) +
                                                     " bytes: the limit is " + std::to_string(kMaxClientMessage)));
     } else if (!ws_.got_text()) {
-      send_text(status_json(StatusLevel::Error, "ignored a binary message: this server does not accept client publishing"));
+      send_text(
+          status_json(StatusLevel::Error, "ignored a binary message: this server does not accept client publishing"));
     } else {
       const auto data = buffer.cdata();
       handle_text({static_cast<const char*>(data.data()), data.size()});
@@ -244,7 +250,8 @@ void FoxgloveServer::Impl::Client::handle_text(std::string_view text) {
       const bool known = std::any_of(server_.channels_.begin(), server_.channels_.end(),
                                      [channel = channel](const ServerChannel& c) { return c.id == channel; });
       if (!known) {
-        send_text(status_json(StatusLevel::Error, "cannot subscribe to channel " + std::to_string(channel) + ": it was never advertised"));
+        send_text(status_json(StatusLevel::Error,
+                              "cannot subscribe to channel " + std::to_string(channel) + ": it was never advertised"));
       } else if (subscriptions_.count(sub)) {
         send_text(status_json(StatusLevel::Error, "subscription id " + std::to_string(sub) + " is already in use"));
       } else if (by_channel_.count(channel)) {
@@ -273,16 +280,19 @@ void FoxgloveServer::Impl::Client::handle_text(std::string_view text) {
       std::weak_ptr<Client> weak = shared_from_this();
       Impl* server = &server_;
       const auto id = set->id;
-      server_.parameters_->set(p, [weak, server, id, name = p.name](std::vector<Parameter> read_back, std::string failure) {
-        asio::post(server->io_, [weak, server, id, name, read_back = std::move(read_back), failure = std::move(failure)] {
-          if (auto client = weak.lock()) {
-            if (!failure.empty()) client->send_text(status_json(StatusLevel::Error, "setting " + name + " failed: " + failure));
-            client->send_parameters(read_back, id, false);
-          }
-          for (const auto& other : server->clients_)
-            if (other != weak.lock()) other->send_parameters(read_back, std::nullopt, true);
-        });
-      });
+      server_.parameters_->set(
+          p, [weak, server, id, name = p.name](std::vector<Parameter> read_back, std::string failure) {
+            asio::post(
+                server->io_, [weak, server, id, name, read_back = std::move(read_back), failure = std::move(failure)] {
+                  if (auto client = weak.lock()) {
+                    if (!failure.empty())
+                      client->send_text(status_json(StatusLevel::Error, "setting " + name + " failed: " + failure));
+                    client->send_parameters(read_back, id, false);
+                  }
+                  for (const auto& other : server->clients_)
+                    if (other != weak.lock()) other->send_parameters(read_back, std::nullopt, true);
+                });
+          });
     }
   } else if (const auto* sub = std::get_if<SubscribeParameterUpdates>(&*request)) {
     if (sub->names.empty()) all_parameters_ = true;
@@ -330,7 +340,8 @@ bool FoxgloveServer::Impl::start(std::string& error) {
   if (ec) {
     error = "cannot listen on " + options_.host + ":" + std::to_string(options_.port) + ": " + ec.message() +
             (ec == asio::error::address_in_use
-                 ? " (another program has it, perhaps another ydscope; choose another port with " + options_.port_option + ")"
+                 ? " (another program has it, perhaps another ydscope; choose another port with " +
+                       options_.port_option + ")"
                  : "");
     return false;
   }

@@ -35,8 +35,8 @@ class ParameterBackend {
 
 struct ServerOptions {
   std::string host = "127.0.0.1";
-  std::uint16_t port = 8765;            // 0 picks a free port (see port())
-  std::size_t client_queue = 64;        // messages queued per client before the oldest is dropped
+  std::uint16_t port = 8765;      // 0 picks a free port (see port())
+  std::size_t client_queue = 64;  // messages queued per client before the oldest is dropped
   // A connection that has not finished the WebSocket handshake by then is closed (a port scanner,
   // a peer gone half way). After it, a client that sends nothing for idle_timeout, not even the
   // pong to the server's keep-alive ping (sent at half of it), is closed: a peer that vanished
@@ -71,7 +71,8 @@ class FoxgloveServer {
   bool start(std::string& error);
   std::uint16_t port() const;
   // Sends the message to every client subscribed to `channel_id`. The payload is shared.
-  void publish(std::uint32_t channel_id, std::uint64_t log_time_ns, std::shared_ptr<const std::vector<std::uint8_t>> payload);
+  void publish(std::uint32_t channel_id, std::uint64_t log_time_ns,
+               std::shared_ptr<const std::vector<std::uint8_t>> payload);
   // Tells the clients that subscribed to these parameters their new values.
   void broadcast_parameters(std::vector<Parameter> parameters);
   // A status message to every client (e.g. the lidar's link went down).

@@ -18,7 +18,8 @@ constexpr auto kPosesEvery = std::chrono::seconds(1);
 
 std::uint64_t unix_now_ns() {
   return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
 }
 
 }  // namespace
@@ -44,10 +45,9 @@ std::unique_ptr<LiveTopics> LiveTopics::begin(std::unique_ptr<LiveTopics> live, 
   if (!live->options_.mcap_path.empty()) {
     live->mcap_ = McapRecordingExport::create(live->options_.mcap_path, live->options_.topics, error, live->sources_);
     if (!live->mcap_) return nullptr;
-    live->mcap_->set_observer([p = live.get()](std::size_t source, RosTopic topic, std::uint64_t log_time,
-                                               std::span<const std::uint8_t> cdr) {
-      p->publish(source, topic, log_time, cdr);
-    });
+    live->mcap_->set_observer(
+        [p = live.get()](std::size_t source, RosTopic topic, std::uint64_t log_time,
+                         std::span<const std::uint8_t> cdr) { p->publish(source, topic, log_time, cdr); });
   }
   live->attach();
   live->thread_ = std::thread([p = live.get()] { p->run(); });
@@ -119,7 +119,8 @@ std::string LiveTopics::error() const {
   return error_;
 }
 
-void LiveTopics::publish(std::size_t source, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+void LiveTopics::publish(std::size_t source, RosTopic topic, std::uint64_t log_time,
+                         std::span<const std::uint8_t> cdr) {
   messages_.fetch_add(1, std::memory_order_relaxed);
   if (options_.server)
     options_.server->publish(foxglove::channel_id(topic, source), log_time,
@@ -132,9 +133,9 @@ void LiveTopics::tell_link_state(std::size_t source, Reading& reading) {
   reading.told_state = s.state;
   const bool bad = s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled;
   const std::string who = several() ? lanes_[source].source.about.name + ": lidar " : "lidar ";
-  options_.server->broadcast_status(bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
-                                    who + std::string(link_state_name(s.state)) +
-                                        (s.message.empty() ? "" : ": " + s.message));
+  options_.server->broadcast_status(
+      bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
+      who + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message));
 }
 
 void LiveTopics::publish_poses() {

@@ -29,9 +29,9 @@
 namespace ydscope {
 
 struct LiveTopicsOptions {
-  McapExportOptions topics;                     // frame, model, link bytes; the file's compression
-  std::string mcap_path;                        // empty: no file
-  foxglove::FoxgloveServer* server = nullptr;   // publish to its clients (must outlive this)
+  McapExportOptions topics;                           // frame, model, link bytes; the file's compression
+  std::string mcap_path;                              // empty: no file
+  foxglove::FoxgloveServer* server = nullptr;         // publish to its clients (must outlive this)
   foxglove::SessionParameters* parameters = nullptr;  // one lidar: the clients' filter choice
 };
 

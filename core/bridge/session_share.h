@@ -21,7 +21,7 @@ namespace ydscope {
 struct ShareOptions {
   foxglove::ServerOptions server;  // where to listen (127.0.0.1:8765 by default)
   McapExportOptions topics;
-  std::string mcap_path;           // empty: serve only
+  std::string mcap_path;  // empty: serve only
 };
 
 class SessionShare {
@@ -59,7 +59,7 @@ class SessionShare {
 
   std::string host_;
   std::vector<std::unique_ptr<foxglove::SessionParameters>> parameters_;  // one per lidar
-  foxglove::SourcesParameters named_parameters_;                         // several lidars: under their names
+  foxglove::SourcesParameters named_parameters_;                          // several lidars: under their names
   std::unique_ptr<foxglove::FoxgloveServer> server_;
   std::unique_ptr<LiveTopics> topics_;
   bool stopped_ = false;

@@ -25,9 +25,7 @@ std::optional<ChunkCompression> parse_compression(std::string_view name) {
 bool compress_chunk(ChunkCompression compression, std::span<const std::uint8_t> input,
                     std::vector<std::uint8_t>& output, std::string& error) {
   switch (compression) {
-    case ChunkCompression::None:
-      output.assign(input.begin(), input.end());
-      return true;
+    case ChunkCompression::None: output.assign(input.begin(), input.end()); return true;
     case ChunkCompression::Zstd: {
       output.resize(ZSTD_compressBound(input.size()));
       // Level 3 (zstd's default): most of level 19's gain on lidar data at a fraction of the time.

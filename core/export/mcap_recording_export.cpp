@@ -37,12 +37,12 @@ const McapMetadataMap& ros2_channel_metadata() {
   return metadata;
 }
 
-std::unique_ptr<McapRecordingExport> McapRecordingExport::create(const std::string& path, const McapExportOptions& options,
-                                                                 std::string& error, std::vector<McapSource> sources) {
+std::unique_ptr<McapRecordingExport> McapRecordingExport::create(const std::string& path,
+                                                                 const McapExportOptions& options, std::string& error,
+                                                                 std::vector<McapSource> sources) {
   auto file = McapFileSink::create(path, error);
   if (!file) return nullptr;
-  return std::unique_ptr<McapRecordingExport>(
-      new McapRecordingExport(std::move(file), options, std::move(sources)));
+  return std::unique_ptr<McapRecordingExport>(new McapRecordingExport(std::move(file), options, std::move(sources)));
 }
 
 McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options,
@@ -51,7 +51,8 @@ McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, con
   file_ = std::move(file);
 }
 
-McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions& options, std::vector<McapSource> sources)
+McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions& options,
+                                         std::vector<McapSource> sources)
     : writer_(sink, options.mcap), sources_(std::move(sources)), frame_(options.ros.frame) {
   std::uint16_t schema_ids[kRosTopicCount] = {};
   for (const RosTopicInfo& topic : ros_topics()) {
@@ -70,7 +71,8 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
   const std::size_t count = sources_.empty() ? 1 : sources_.size();
   for (std::size_t id = 0; id < count; ++id) {
     Lane lane;
-    lane.encoder = std::make_unique<RosTopicEncoder>(sources_.empty() ? options.ros : ros_options_of(options.ros, sources_[id]));
+    lane.encoder =
+        std::make_unique<RosTopicEncoder>(sources_.empty() ? options.ros : ros_options_of(options.ros, sources_[id]));
     lane.metadata_name = std::string(kMcapRecordingMetadataName) + (sources_.empty() ? "" : "." + sources_[id].name);
     for (const RosTopicInfo& topic : ros_topics()) {
       const auto i = static_cast<std::size_t>(topic.topic);
@@ -81,8 +83,8 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
   }
   if (!sources_.empty()) {
     const RosSchema& tf = tf_message_schema();
-    const std::uint16_t schema = writer_.add_schema(tf.name, "ros2msg",
-                                                    {reinterpret_cast<const std::uint8_t*>(tf.text.data()), tf.text.size()});
+    const std::uint16_t schema =
+        writer_.add_schema(tf.name, "ros2msg", {reinterpret_cast<const std::uint8_t*>(tf.text.data()), tf.text.size()});
     tf_channel_ = writer_.add_channel(schema, "/tf_static", "cdr", ros2_channel_metadata());
   }
 }
@@ -115,9 +117,10 @@ void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> 
                     source);
   write_tf_static();  // every source's metadata came first: the start time is known
   Lane& lane = lanes_[source];
-  lane.encoder->record(type, payload, t_ns, [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-    emit(lane, topic, log_time, cdr);
-  });
+  lane.encoder->record(type, payload, t_ns,
+                       [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+                         emit(lane, topic, log_time, cdr);
+                       });
 }
 
 void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_t, std::uint16_t source) {
@@ -133,7 +136,8 @@ void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_
     const std::string_view line = rest.substr(0, newline);
     rest = newline == std::string_view::npos ? std::string_view{} : rest.substr(newline + 1);
     const std::size_t equals = line.find('=');
-    if (equals != std::string_view::npos) merged[std::string(line.substr(0, equals))] = std::string(line.substr(equals + 1));
+    if (equals != std::string_view::npos)
+      merged[std::string(line.substr(0, equals))] = std::string(line.substr(equals + 1));
   }
   writer_.write_metadata(lane.metadata_name, merged);
 }

@@ -91,14 +91,15 @@ class McapRecordingExport {
     std::uint32_t sequence[kRosTopicCount] = {};
     std::string metadata_name;
   };
-  McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options, std::vector<McapSource> sources);
+  McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options,
+                      std::vector<McapSource> sources);
   void emit(Lane& lane, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
   void write_tf_static();
 
   std::unique_ptr<McapFileSink> file_;  // when the export owns its file
   McapWriter writer_;
   std::vector<Lane> lanes_;
-  std::vector<McapSource> sources_;     // several lidars; empty for one
+  std::vector<McapSource> sources_;  // several lidars; empty for one
   std::uint16_t tf_channel_ = 0;
   bool tf_written_ = false;
   RosFrameOptions frame_;

@@ -9,9 +9,19 @@ namespace {
 constexpr std::array<std::uint8_t, 8> kMagic = {0x89, 'M', 'C', 'A', 'P', 0x30, '\r', '\n'};
 
 enum Opcode : std::uint8_t {
-  kHeader = 0x01, kFooter = 0x02, kSchema = 0x03, kChannel = 0x04, kMessage = 0x05, kChunk = 0x06,
-  kMessageIndex = 0x07, kChunkIndex = 0x08, kStatistics = 0x0B, kMetadata = 0x0C, kMetadataIndex = 0x0D,
-  kSummaryOffset = 0x0E, kDataEnd = 0x0F,
+  kHeader = 0x01,
+  kFooter = 0x02,
+  kSchema = 0x03,
+  kChannel = 0x04,
+  kMessage = 0x05,
+  kChunk = 0x06,
+  kMessageIndex = 0x07,
+  kChunkIndex = 0x08,
+  kStatistics = 0x0B,
+  kMetadata = 0x0C,
+  kMetadataIndex = 0x0D,
+  kSummaryOffset = 0x0E,
+  kDataEnd = 0x0F,
 };
 
 void put_string_map(ByteBuffer& out, const McapMetadataMap& map) {
@@ -103,7 +113,8 @@ std::uint16_t McapWriter::add_channel(std::uint16_t schema_id, std::string_view 
 bool McapWriter::write_message(std::uint16_t channel_id, std::uint32_t sequence, std::uint64_t log_time,
                                std::uint64_t publish_time, std::span<const std::uint8_t> data) {
   if (closed_) fail("the MCAP file is already closed");
-  if (channel_id == 0 || channel_id > channels_.size()) fail("message on channel " + std::to_string(channel_id) + ", which was never added");
+  if (channel_id == 0 || channel_id > channels_.size())
+    fail("message on channel " + std::to_string(channel_id) + ", which was never added");
   if (!error_.empty()) return false;
   // Close the chunk first if this message would stretch it past its time span.
   if (!chunk_.empty()) {

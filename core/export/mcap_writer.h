@@ -28,8 +28,8 @@ struct McapWriterOptions {
   std::string profile = "ros2";
   std::string library = "ydscope 0.1.0";
   ChunkCompression compression = ChunkCompression::Zstd;
-  std::size_t chunk_size = 1 << 20;                   // uncompressed bytes of records per chunk
-  std::uint64_t max_chunk_span_ns = 1'000'000'000;    // log-time span of one chunk
+  std::size_t chunk_size = 1 << 20;                 // uncompressed bytes of records per chunk
+  std::uint64_t max_chunk_span_ns = 1'000'000'000;  // log-time span of one chunk
 };
 
 using McapMetadataMap = std::map<std::string, std::string>;

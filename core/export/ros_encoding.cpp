@@ -81,7 +81,8 @@ void encode_point_cloud(const Lap& lap, const RosFrameOptions& frame, std::uint6
     std::uint32_t offset;
     std::uint8_t datatype;  // sensor_msgs/PointField: 2 UINT8, 7 FLOAT32
   };
-  static constexpr Field kFields[] = {{"x", 0, 7}, {"y", 4, 7}, {"z", 8, 7}, {"range", 12, 7}, {"angle", 16, 7}, {"flag", 20, 2}};
+  static constexpr Field kFields[] = {{"x", 0, 7},      {"y", 4, 7},      {"z", 8, 7},
+                                      {"range", 12, 7}, {"angle", 16, 7}, {"flag", 20, 2}};
   const auto width = static_cast<std::uint32_t>(lap.points.size());
   CdrWriter cdr(out);
   put_header(cdr, stamp_ns, frame.frame_id);

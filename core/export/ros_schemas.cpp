@@ -7,9 +7,9 @@ namespace {
 #define YDSCOPE_MSG_SEPARATOR "================================================================================\n"
 
 // Every message here starts with a std_msgs/Header, so they share its dependency block.
-#define YDSCOPE_HEADER_DEPENDENCIES                                                              \
-  YDSCOPE_MSG_SEPARATOR "MSG: std_msgs/Header\nbuiltin_interfaces/Time stamp\nstring frame_id\n" \
-  YDSCOPE_MSG_SEPARATOR "MSG: builtin_interfaces/Time\nint32 sec\nuint32 nanosec\n"
+#define YDSCOPE_HEADER_DEPENDENCIES                                                                                    \
+  YDSCOPE_MSG_SEPARATOR "MSG: std_msgs/Header\nbuiltin_interfaces/Time stamp\nstring frame_id\n" YDSCOPE_MSG_SEPARATOR \
+                        "MSG: builtin_interfaces/Time\nint32 sec\nuint32 nanosec\n"
 
 const RosSchema kLaserScan{"sensor_msgs/msg/LaserScan",
                            "std_msgs/Header header\n"
@@ -21,8 +21,7 @@ const RosSchema kLaserScan{"sensor_msgs/msg/LaserScan",
                            "float32 range_min\n"
                            "float32 range_max\n"
                            "float32[] ranges\n"
-                           "float32[] intensities\n"
-                           YDSCOPE_HEADER_DEPENDENCIES};
+                           "float32[] intensities\n" YDSCOPE_HEADER_DEPENDENCIES};
 
 const RosSchema kPointCloud2{"sensor_msgs/msg/PointCloud2",
                              "std_msgs/Header header\n"
@@ -33,9 +32,7 @@ const RosSchema kPointCloud2{"sensor_msgs/msg/PointCloud2",
                              "uint32 point_step\n"
                              "uint32 row_step\n"
                              "uint8[] data\n"
-                             "bool is_dense\n"
-                             YDSCOPE_HEADER_DEPENDENCIES
-                             YDSCOPE_MSG_SEPARATOR
+                             "bool is_dense\n" YDSCOPE_HEADER_DEPENDENCIES YDSCOPE_MSG_SEPARATOR
                              "MSG: sensor_msgs/PointField\n"
                              "uint8 INT8=1\n"
                              "uint8 UINT8=2\n"
@@ -52,9 +49,7 @@ const RosSchema kPointCloud2{"sensor_msgs/msg/PointCloud2",
 
 const RosSchema kDiagnosticArray{"diagnostic_msgs/msg/DiagnosticArray",
                                  "std_msgs/Header header\n"
-                                 "DiagnosticStatus[] status\n"
-                                 YDSCOPE_HEADER_DEPENDENCIES
-                                 YDSCOPE_MSG_SEPARATOR
+                                 "DiagnosticStatus[] status\n" YDSCOPE_HEADER_DEPENDENCIES YDSCOPE_MSG_SEPARATOR
                                  "MSG: diagnostic_msgs/DiagnosticStatus\n"
                                  "byte OK=0\n"
                                  "byte WARN=1\n"
@@ -64,20 +59,17 @@ const RosSchema kDiagnosticArray{"diagnostic_msgs/msg/DiagnosticArray",
                                  "string name\n"
                                  "string message\n"
                                  "string hardware_id\n"
-                                 "KeyValue[] values\n"
-                                 YDSCOPE_MSG_SEPARATOR
+                                 "KeyValue[] values\n" YDSCOPE_MSG_SEPARATOR
                                  "MSG: diagnostic_msgs/KeyValue\n"
                                  "string key\n"
                                  "string value\n"};
 
 const RosSchema kUInt8MultiArray{"std_msgs/msg/UInt8MultiArray",
                                  "MultiArrayLayout layout\n"
-                                 "uint8[] data\n"
-                                 YDSCOPE_MSG_SEPARATOR
+                                 "uint8[] data\n" YDSCOPE_MSG_SEPARATOR
                                  "MSG: std_msgs/MultiArrayLayout\n"
                                  "MultiArrayDimension[] dim\n"
-                                 "uint32 data_offset\n"
-                                 YDSCOPE_MSG_SEPARATOR
+                                 "uint32 data_offset\n" YDSCOPE_MSG_SEPARATOR
                                  "MSG: std_msgs/MultiArrayDimension\n"
                                  "string label\n"
                                  "uint32 size\n"
@@ -85,23 +77,18 @@ const RosSchema kUInt8MultiArray{"std_msgs/msg/UInt8MultiArray",
 
 // /tf_static: where each of several lidars sits (ros_tf.h).
 const RosSchema kTfMessage{"tf2_msgs/msg/TFMessage",
-                           "geometry_msgs/TransformStamped[] transforms\n"
-                           YDSCOPE_MSG_SEPARATOR
+                           "geometry_msgs/TransformStamped[] transforms\n" YDSCOPE_MSG_SEPARATOR
                            "MSG: geometry_msgs/TransformStamped\n"
                            "std_msgs/Header header\n"
                            "string child_frame_id\n"
-                           "Transform transform\n"
-                           YDSCOPE_HEADER_DEPENDENCIES
-                           YDSCOPE_MSG_SEPARATOR
+                           "Transform transform\n" YDSCOPE_HEADER_DEPENDENCIES YDSCOPE_MSG_SEPARATOR
                            "MSG: geometry_msgs/Transform\n"
                            "Vector3 translation\n"
-                           "Quaternion rotation\n"
-                           YDSCOPE_MSG_SEPARATOR
+                           "Quaternion rotation\n" YDSCOPE_MSG_SEPARATOR
                            "MSG: geometry_msgs/Vector3\n"
                            "float64 x\n"
                            "float64 y\n"
-                           "float64 z\n"
-                           YDSCOPE_MSG_SEPARATOR
+                           "float64 z\n" YDSCOPE_MSG_SEPARATOR
                            "MSG: geometry_msgs/Quaternion\n"
                            "float64 x 0\n"
                            "float64 y 0\n"

@@ -64,7 +64,8 @@ RosTransform ros_transform_of(const Pose& pose, const RosFrameOptions& frame, st
   return t;
 }
 
-void encode_tf_message(std::span<const RosTransform> transforms, std::uint64_t stamp_ns, std::vector<std::uint8_t>& out) {
+void encode_tf_message(std::span<const RosTransform> transforms, std::uint64_t stamp_ns,
+                       std::vector<std::uint8_t>& out) {
   CdrWriter cdr(out);
   cdr.u32(static_cast<std::uint32_t>(transforms.size()));
   for (const RosTransform& t : transforms) {

@@ -31,6 +31,7 @@ struct RosTransform {
 RosTransform ros_transform_of(const Pose& pose, const RosFrameOptions& frame, std::string parent, std::string child);
 
 // tf2_msgs/msg/TFMessage in CDR: every transform, each stamped `stamp_ns` (ns since the Unix epoch).
-void encode_tf_message(std::span<const RosTransform> transforms, std::uint64_t stamp_ns, std::vector<std::uint8_t>& out);
+void encode_tf_message(std::span<const RosTransform> transforms, std::uint64_t stamp_ns,
+                       std::vector<std::uint8_t>& out);
 
 }  // namespace ydscope

@@ -41,8 +41,8 @@ std::optional<std::uint64_t> parse_iso8601_utc_ns(std::string_view text) {
   // YYYY-MM-DDTHH:MM:SS[.fff...]Z
   const auto year = digits(text, 0, 4), month = digits(text, 5, 2), day = digits(text, 8, 2);
   const auto hour = digits(text, 11, 2), minute = digits(text, 14, 2), second = digits(text, 17, 2);
-  if (!year || !month || !day || !hour || !minute || !second || text.size() < 20 || text[4] != '-' ||
-      text[7] != '-' || text[10] != 'T' || text[13] != ':' || text[16] != ':' || text.back() != 'Z')
+  if (!year || !month || !day || !hour || !minute || !second || text.size() < 20 || text[4] != '-' || text[7] != '-' ||
+      text[10] != 'T' || text[13] != ':' || text[16] != ':' || text.back() != 'Z')
     return std::nullopt;
   std::tm tm{};
   tm.tm_year = *year - 1900;
@@ -74,7 +74,8 @@ RosTopicEncoder::RosTopicEncoder(RosExportOptions options) : options_(std::move(
   }
 }
 
-void RosTopicEncoder::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns, MessageFn emit) {
+void RosTopicEncoder::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns,
+                             MessageFn emit) {
   switch (type) {
     case RecordType::DeviceToHost: return device_bytes(payload, t_ns, emit);
     case RecordType::HostToDevice: return host_bytes(payload, t_ns, emit);
@@ -90,7 +91,8 @@ void RosTopicEncoder::metadata(const RecordingMetadata& changes) {
   if (profile_ || !metadata_.model) return;
   profile_ = find_profile(*metadata_.model);
   if (profile_)
-    decoder_ = std::make_unique<ScanDecoder>(*profile_, options_.distance_scale ? options_.distance_scale : metadata_.distance_scale);
+    decoder_ = std::make_unique<ScanDecoder>(
+        *profile_, options_.distance_scale ? options_.distance_scale : metadata_.distance_scale);
 }
 
 std::uint64_t RosTopicEncoder::log_time(std::int64_t t_ns) const {
@@ -184,8 +186,10 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
   report.message = health ? "health: " + *health : "health not read";
   const auto c = counters();
   const bool health_ok = !health || *health == "ok";
-  if (!health_ok) report.level = 2;
-  else if (c && (c->checksum_errors || c->crc_mismatches)) report.level = 1;
+  if (!health_ok)
+    report.level = 2;
+  else if (c && (c->checksum_errors || c->crc_mismatches))
+    report.level = 1;
   if (!measured_scan_hz_ && seen_bytes_ && profile_) {
     report.level = std::max<std::uint8_t>(report.level, 1);
     report.message += "; no complete lap in the last second";

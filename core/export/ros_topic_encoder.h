@@ -41,10 +41,10 @@ std::span<const RosTopicInfo> ros_topics();
 
 struct RosExportOptions {
   RosFrameOptions frame;
-  std::optional<Model> model;             // forced; otherwise the recording's model
-  std::optional<double> distance_scale;   // forced; otherwise the recording's, else the model's
-  InterferenceFilter filter;              // applied to /scan and /points only
-  bool link_bytes = true;                 // publish /ydscope/device_bytes and /ydscope/host_bytes
+  std::optional<Model> model;            // forced; otherwise the recording's model
+  std::optional<double> distance_scale;  // forced; otherwise the recording's, else the model's
+  InterferenceFilter filter;             // applied to /scan and /points only
+  bool link_bytes = true;                // publish /ydscope/device_bytes and /ydscope/host_bytes
 };
 
 // ns since the Unix epoch of "2026-11-22T02:20:00.123Z" (fraction optional); empty if malformed.

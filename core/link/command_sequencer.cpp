@@ -43,8 +43,8 @@ asio::awaitable<Step<Exchange>> CommandSequencer::command(Command command) {
     }
     if (last.outcome == Exchange::Outcome::LinkLost) {
       step.link_lost = true;
-      step.error = io_.fault().empty() ? "the link closed while waiting for " + command_bytes_text(command)
-                                       : io_.fault();
+      step.error =
+          io_.fault().empty() ? "the link closed while waiting for " + command_bytes_text(command) : io_.fault();
       co_return step;
     }
     if (last.outcome == Exchange::Outcome::Refused) {
@@ -152,8 +152,9 @@ asio::awaitable<Step<std::uint16_t>> CommandSequencer::ranging_khz(const ModelPr
     co_return step;
   }
   step.value = parse_ranging_khz(profile, reply.value->bytes());
-  if (!step.value) step.error = "the ranging-frequency reply on " + link_text() + " is not in " +
-                                std::string(profile.name) + "'s table";
+  if (!step.value)
+    step.error =
+        "the ranging-frequency reply on " + link_text() + " is not in " + std::string(profile.name) + "'s table";
   co_return step;
 }
 
@@ -163,8 +164,8 @@ asio::awaitable<Step<std::uint16_t>> CommandSequencer::cycle_ranging_to(const Mo
   if (!profile.ranging_index(target_khz)) {
     std::string table;
     for (const auto khz : profile.ranging_khz) table += (table.empty() ? "" : ", ") + std::to_string(khz);
-    step.error = std::to_string(target_khz) + " kHz is not a ranging frequency of " + std::string(profile.name) +
-                 " (" + table + " kHz)";
+    step.error = std::to_string(target_khz) + " kHz is not a ranging frequency of " + std::string(profile.name) + " (" +
+                 table + " kHz)";
     co_return step;
   }
   if (!profile.ranging_settable) {

@@ -83,8 +83,8 @@ const ModelProfile* choose_profile(std::optional<Model> configured, std::uint8_t
     const ModelProfile& chosen = profile_for(*configured);
     if (detected != &chosen)
       note = "the device reports model code " + std::to_string(model_code) + " (" +
-             (detected ? std::string(detected->name) : std::string("unknown")) + ") but " +
-             std::string(chosen.name) + " was asked for; decoding as " + std::string(chosen.name);
+             (detected ? std::string(detected->name) : std::string("unknown")) + ") but " + std::string(chosen.name) +
+             " was asked for; decoding as " + std::string(chosen.name);
     return &chosen;
   }
   if (!detected)

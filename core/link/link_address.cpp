@@ -95,7 +95,8 @@ boost::asio::awaitable<std::unique_ptr<ByteLink>> open_byte_link(boost::asio::io
                                                                  std::uint32_t baud, std::string& error) {
   const auto parsed = parse_link_address(address, error);
   if (!parsed) co_return nullptr;
-  if (parsed->kind == LinkAddress::Kind::Tcp) co_return co_await TcpLink::connect(io, parsed->host, parsed->port, error);
+  if (parsed->kind == LinkAddress::Kind::Tcp)
+    co_return co_await TcpLink::connect(io, parsed->host, parsed->port, error);
   co_return SerialLink::open(io, parsed->path, baud, error);
 }
 

@@ -18,8 +18,8 @@ namespace ydscope {
 struct LinkAddress {
   enum class Kind { Serial, Tcp };
   Kind kind = Kind::Serial;
-  std::string path;      // Serial: the device path as given
-  std::string host;      // Tcp: name or address (IPv6 without brackets)
+  std::string path;  // Serial: the device path as given
+  std::string host;  // Tcp: name or address (IPv6 without brackets)
   std::uint16_t port = 0;
 
   // Back to the --port form ("tcp://[::1]:2000", "/dev/ttyUSB0").

@@ -108,7 +108,8 @@ void PortDiscovery::fill_from_sysfs(SerialPortInfo& port) const {
     port.serial = read_attribute(dir / "serial");
     break;
   }
-  port.known_lidar_bridge = port.vendor_id && port.product_id && is_known_lidar_bridge(*port.vendor_id, *port.product_id);
+  port.known_lidar_bridge =
+      port.vendor_id && port.product_id && is_known_lidar_bridge(*port.vendor_id, *port.product_id);
 }
 
 std::vector<SerialPortInfo> PortDiscovery::list() const {

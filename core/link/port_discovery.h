@@ -21,9 +21,9 @@ struct SerialPortInfo {
   std::string manufacturer;
   std::string product;
   std::string serial;
-  std::string driver;                // kernel driver: cp210x, ch341, cdc_acm, ...
-  bool known_lidar_bridge = false;   // a USB-serial chip YDLIDAR adapter boards use
-  bool on_board_uart = false;        // ttyAMA*, ttyTHS*, or a ttyS* with a UART behind it
+  std::string driver;               // kernel driver: cp210x, ch341, cdc_acm, ...
+  bool known_lidar_bridge = false;  // a USB-serial chip YDLIDAR adapter boards use
+  bool on_board_uart = false;       // ttyAMA*, ttyTHS*, or a ttyS* with a UART behind it
 
   // The name to open: the by-id name survives re-plugging into another USB socket and, unlike
   // /dev/ydlidar, tells two lidars apart.

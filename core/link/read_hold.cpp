@@ -23,8 +23,8 @@ std::chrono::nanoseconds read_hold(const ReadHoldInputs& in) {
   // Up to a packet may already be on its way (a USB bridge or the kernel passes bytes on in
   // chunks), so it may arrive at once; the rest comes no faster than the line carries it, nor,
   // over tens of milliseconds, much faster than the stream's average.
-  const double burst = in.lap_end.packet_bytes > 0 ? static_cast<double>(in.lap_end.packet_bytes)
-                                                   : static_cast<double>(kMaxPacketSize);
+  const double burst =
+      in.lap_end.packet_bytes > 0 ? static_cast<double>(in.lap_end.packet_bytes) : static_cast<double>(kMaxPacketSize);
   const double paced = std::max(0.0, bytes - burst);
   double seconds = paced / in.line_bytes_per_s;
   if (in.stream_bytes_per_s > 0) seconds = std::max(seconds, paced / (in.stream_bytes_per_s * kRateMargin));

@@ -43,8 +43,14 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 
   Core(boost::asio::io_context& io, std::unique_ptr<RecordingReader> reader, const ReplayOptions& options,
        std::int64_t duration_ns)
-      : io_(io), timer_(io), reader_(std::move(reader)), source_(options.source), speed_(bounded_replay_speed(options.speed)),
-        paused_(options.paused), loop_(options.loop), anchor_wall_(Clock::now()) {
+      : io_(io),
+        timer_(io),
+        reader_(std::move(reader)),
+        source_(options.source),
+        speed_(bounded_replay_speed(options.speed)),
+        paused_(options.paused),
+        loop_(options.loop),
+        anchor_wall_(Clock::now()) {
     status_duration_.store(duration_ns);
     publish();
   }
@@ -196,8 +202,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 
   void publish() {
     // Within the recording: an I/O thread that runs late must not show a point past its end.
-    status_position_.store(std::clamp<std::int64_t>(position_now(), 0, status_duration_.load(std::memory_order_relaxed)),
-                           std::memory_order_relaxed);
+    status_position_.store(
+        std::clamp<std::int64_t>(position_now(), 0, status_duration_.load(std::memory_order_relaxed)),
+        std::memory_order_relaxed);
     status_speed_.store(speed_, std::memory_order_relaxed);
     status_paused_.store(paused_, std::memory_order_relaxed);
     status_loop_.store(loop_, std::memory_order_relaxed);
@@ -250,8 +257,7 @@ ReplayLink::~ReplayLink() {
 }
 
 std::unique_ptr<ReplayLink> ReplayLink::open(boost::asio::io_context& io, const std::string& path,
-                                             ReplayOptions options, std::string& error,
-                                             RecordingOpenFailure* failure) {
+                                             ReplayOptions options, std::string& error, RecordingOpenFailure* failure) {
   const auto summary = summarize_recording(path, error, failure);
   if (!summary) return nullptr;
   if (options.source >= summary->sources.size()) {
@@ -287,9 +293,7 @@ bool ReplayLink::set_baud(std::uint32_t /*baud*/, std::string& error) {
   return false;
 }
 
-std::string ReplayLink::describe() const {
-  return "replay of " + std::filesystem::path(path_).filename().string();
-}
+std::string ReplayLink::describe() const { return "replay of " + std::filesystem::path(path_).filename().string(); }
 
 void ReplayLink::set_speed(double speed) {
   boost::asio::post(core_->executor(), [core = core_, speed] { core->set_speed(speed); });

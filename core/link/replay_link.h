@@ -45,9 +45,9 @@ struct ReplayStatus {
   double speed = 1.0;
   bool paused = false;
   bool loop = false;
-  bool finished = false;         // reached the end without loop (reads now see end-of-file)
-  std::uint64_t loops = 0;       // times playback wrapped around
-  std::uint64_t bytes = 0;       // device->host bytes delivered
+  bool finished = false;    // reached the end without loop (reads now see end-of-file)
+  std::uint64_t loops = 0;  // times playback wrapped around
+  std::uint64_t bytes = 0;  // device->host bytes delivered
 };
 
 class ReplayLink final : public ByteLink {
@@ -55,9 +55,8 @@ class ReplayLink final : public ByteLink {
   // Opens the recording and reads its metadata (a pass over the file). Null plus one sentence
   // in `error` when it is missing, not a recording (or one this ydscope cannot read: `failure`
   // says which, RecordingReader::open), or has no device->host bytes at all.
-  static std::unique_ptr<ReplayLink> open(boost::asio::io_context& io, const std::string& path,
-                                          ReplayOptions options, std::string& error,
-                                          RecordingOpenFailure* failure = nullptr);
+  static std::unique_ptr<ReplayLink> open(boost::asio::io_context& io, const std::string& path, ReplayOptions options,
+                                          std::string& error, RecordingOpenFailure* failure = nullptr);
   ~ReplayLink() override;
 
   // Completes with the next recorded bytes when their time comes; boost::asio::error::eof after

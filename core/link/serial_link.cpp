@@ -20,25 +20,22 @@ std::string serial_open_error(const std::string& path, int errno_value) {
   switch (errno_value) {
     case ENOENT:
     case ENODEV:
-    case ENXIO:
-      return head + "no such device; is the lidar plugged in? 'ydscope-cli ports' lists serial ports";
+    case ENXIO: return head + "no such device; is the lidar plugged in? 'ydscope-cli ports' lists serial ports";
     case EACCES:
     case EPERM:
-      return head + "permission denied; add yourself to the dialout group (then log in again), or install "
-                    "ydscope's udev rule /usr/lib/udev/rules.d/70-ydlidar.rules (in the .deb; by hand from "
-                    "assets/70-ydlidar.rules), which gives the logged-in user the port";
-    case EBUSY:
-      return head + "the port is busy; close the other program using it";
+      return head +
+             "permission denied; add yourself to the dialout group (then log in again), or install "
+             "ydscope's udev rule /usr/lib/udev/rules.d/70-ydlidar.rules (in the .deb; by hand from "
+             "assets/70-ydlidar.rules), which gives the logged-in user the port";
+    case EBUSY: return head + "the port is busy; close the other program using it";
     case ENOTTY:
-    case EINVAL:
-      return head + "not a serial port; give a tty device such as /dev/ttyUSB0 or tcp://host:port";
+    case EINVAL: return head + "not a serial port; give a tty device such as /dev/ttyUSB0 or tcp://host:port";
     case EISDIR:
-      return head + "it is a folder, not a serial port; give a device such as /dev/ttyUSB0 "
-                    "('ydscope-cli ports' lists them)";
-    case EIO:
-      return head + "input/output error; the device may have been unplugged, plug it in again";
-    default:
-      return head + std::strerror(errno_value);
+      return head +
+             "it is a folder, not a serial port; give a device such as /dev/ttyUSB0 "
+             "('ydscope-cli ports' lists them)";
+    case EIO: return head + "input/output error; the device may have been unplugged, plug it in again";
+    default: return head + std::strerror(errno_value);
   }
 }
 
@@ -57,8 +54,8 @@ int claim_exclusively(int fd) {
 SerialLink::SerialLink(boost::asio::io_context& io, std::string path, std::uint32_t baud)
     : port_(io), path_(std::move(path)), baud_(baud) {}
 
-std::unique_ptr<SerialLink> SerialLink::open(boost::asio::io_context& io, const std::string& path,
-                                             std::uint32_t baud, std::string& error) {
+std::unique_ptr<SerialLink> SerialLink::open(boost::asio::io_context& io, const std::string& path, std::uint32_t baud,
+                                             std::string& error) {
   if (baud == 0) {
     error = "cannot open " + path + ": baud must be a positive number";
     return nullptr;
@@ -71,9 +68,9 @@ std::unique_ptr<SerialLink> SerialLink::open(boost::asio::io_context& io, const 
   int err = claim_exclusively(fd);
   if (err == 0) err = termios2::configure_raw(fd, baud);
   if (err != 0) {
-    error = err == EINVAL ? "cannot open " + path + ": the port refuses " + std::to_string(baud) +
-                                " baud; check the --baud value"
-                          : serial_open_error(path, err);
+    error = err == EINVAL
+                ? "cannot open " + path + ": the port refuses " + std::to_string(baud) + " baud; check the --baud value"
+                : serial_open_error(path, err);
     ::close(fd);
     return nullptr;
   }

@@ -23,8 +23,8 @@ class SerialLink final : public ByteLink {
  public:
   // Opens and configures the port; on failure returns null and sets `error` to one sentence
   // naming the port, the cause and what to try.
-  static std::unique_ptr<SerialLink> open(boost::asio::io_context& io, const std::string& path,
-                                          std::uint32_t baud, std::string& error);
+  static std::unique_ptr<SerialLink> open(boost::asio::io_context& io, const std::string& path, std::uint32_t baud,
+                                          std::string& error);
 
   void async_read_some(std::span<std::uint8_t> buffer, IoHandler handler) override;
   void async_write(std::span<const std::uint8_t> bytes, IoHandler handler) override;
@@ -51,11 +51,11 @@ class SerialLink final : public ByteLink {
   void watch_input();
 
   boost::asio::posix::stream_descriptor port_;
-  int unwatched_fd_ = -1;    // the port while it is out of the reactor, else -1
+  int unwatched_fd_ = -1;  // the port while it is out of the reactor, else -1
   std::string path_;
   std::uint32_t baud_;
-  bool maybe_more_ = true;   // the last read stopped with input perhaps still waiting
-  bool writing_ = false;     // a write is in flight (the port must stay in the reactor)
+  bool maybe_more_ = true;  // the last read stopped with input perhaps still waiting
+  bool writing_ = false;    // a write is in flight (the port must stay in the reactor)
 };
 
 // "cannot open /dev/ttyUSB0: permission denied; add yourself to the dialout group ..." from an

@@ -34,27 +34,27 @@ namespace ydscope {
 class RecordTap;
 
 // Opens the byte link for one attempt at `baud`; null plus one sentence in `error` on failure.
-using LinkOpener = std::function<std::unique_ptr<ByteLink>(boost::asio::io_context& io, std::uint32_t baud,
-                                                           std::string& error)>;
+using LinkOpener =
+    std::function<std::unique_ptr<ByteLink>(boost::asio::io_context& io, std::uint32_t baud, std::string& error)>;
 
 // Bauds tried, in this order, when baud probing is on.
 inline constexpr std::uint32_t kProbeBauds[] = {230400, 512000, 128000, 115200};
 
 struct SessionConfig {
-  std::string address;                // "/dev/ttyUSB0", a pty path, or "tcp://host:port"
-  std::optional<Model> model;         // empty: detect from the device-info model code
-  std::optional<std::uint32_t> baud;  // empty: the model's default (230400 when the model is unknown)
-  bool probe_baud = false;            // try kProbeBauds (starting with `baud` if given) until A5 90 answers
-  bool scan = true;                   // start scanning after start-up; false for info / set
-  bool reconnect = true;              // after a fault, reopen with backoff; a serial port that comes
-                                      // back (see PortWatch) ends the wait at once
+  std::string address;                           // "/dev/ttyUSB0", a pty path, or "tcp://host:port"
+  std::optional<Model> model;                    // empty: detect from the device-info model code
+  std::optional<std::uint32_t> baud;             // empty: the model's default (230400 when the model is unknown)
+  bool probe_baud = false;                       // try kProbeBauds (starting with `baud` if given) until A5 90 answers
+  bool scan = true;                              // start scanning after start-up; false for info / set
+  bool reconnect = true;                         // after a fault, reopen with backoff; a serial port that comes
+                                                 // back (see PortWatch) ends the wait at once
   std::chrono::milliseconds first_backoff{250};  // doubling after each failed reopen ...
   std::chrono::milliseconds max_backoff{4000};   // ... up to this (a TCP bridge: at most 750 ms)
-  std::optional<double> distance_scale;  // overrides the profile's mm per count
+  std::optional<double> distance_scale;          // overrides the profile's mm per count
   std::chrono::milliseconds reply_timeout{1000};
-  int command_attempts = 2;                      // sends per command before it is reported failed
-  std::chrono::milliseconds stall_timeout{2000}; // no byte for this long while scanning = stalled
-  LinkOpener open_link;               // empty: open `address` as a serial port or tcp:// bridge
+  int command_attempts = 2;                       // sends per command before it is reported failed
+  std::chrono::milliseconds stall_timeout{2000};  // no byte for this long while scanning = stalled
+  LinkOpener open_link;                           // empty: open `address` as a serial port or tcp:// bridge
 };
 
 class Session {

@@ -25,8 +25,9 @@ void SessionCounters::close_decoder_epoch() {
 }
 
 void SessionCounters::reset() {
-  for (auto* counter : {&bytes_received_, &reads_, &bytes_sent_, &drained_bytes_, &reconnects_, &refused_commands_,
-                        &packets_, &zero_packets_, &laps_, &checksum_errors_, &resync_bytes_, &crc8_failures_, &cut_points_}) {
+  for (auto* counter :
+       {&bytes_received_, &reads_, &bytes_sent_, &drained_bytes_, &reconnects_, &refused_commands_, &packets_,
+        &zero_packets_, &laps_, &checksum_errors_, &resync_bytes_, &crc8_failures_, &cut_points_}) {
     counter->store(0, std::memory_order_relaxed);
   }
   last_byte_ns_.store(0, std::memory_order_relaxed);

@@ -11,17 +11,17 @@ namespace ydscope {
 struct CounterSnapshot {
   std::uint64_t bytes_received = 0;
   std::uint64_t bytes_sent = 0;
-  std::uint64_t reads = 0;            // read completions (bytes_received / reads = bytes per wakeup)
-  std::uint64_t packets = 0;          // valid scan packets
-  std::uint64_t zero_packets = 0;     // of which CT bit 0 was set
-  std::uint64_t laps = 0;             // laps pushed or dropped
-  std::uint64_t checksum_errors = 0;  // scan packets dropped for a bad XOR checksum
-  std::uint64_t resync_bytes = 0;     // bytes skipped while hunting a packet header
-  std::uint64_t crc8_failures = 0;    // G1 laps whose LastCRC disagreed
-  std::uint64_t cut_points = 0;       // points cut from laps longer than Lap::kMaxPoints
-  std::uint64_t drained_bytes = 0;    // bytes discarded while draining before a command
-  std::uint64_t reconnects = 0;       // links reopened after a fault
-  std::uint64_t refused_commands = 0; // commands the session refused to send while scanning (bugs)
+  std::uint64_t reads = 0;             // read completions (bytes_received / reads = bytes per wakeup)
+  std::uint64_t packets = 0;           // valid scan packets
+  std::uint64_t zero_packets = 0;      // of which CT bit 0 was set
+  std::uint64_t laps = 0;              // laps pushed or dropped
+  std::uint64_t checksum_errors = 0;   // scan packets dropped for a bad XOR checksum
+  std::uint64_t resync_bytes = 0;      // bytes skipped while hunting a packet header
+  std::uint64_t crc8_failures = 0;     // G1 laps whose LastCRC disagreed
+  std::uint64_t cut_points = 0;        // points cut from laps longer than Lap::kMaxPoints
+  std::uint64_t drained_bytes = 0;     // bytes discarded while draining before a command
+  std::uint64_t reconnects = 0;        // links reopened after a fault
+  std::uint64_t refused_commands = 0;  // commands the session refused to send while scanning (bugs)
   double bytes_per_s = 0;
   double packets_per_s = 0;
   double laps_per_s = 0;
@@ -65,8 +65,8 @@ class SessionCounters {
 
   std::atomic<std::uint64_t> bytes_received_{0}, reads_{0}, bytes_sent_{0}, drained_bytes_{0}, reconnects_{0},
       refused_commands_{0};
-  std::atomic<std::uint64_t> packets_{0}, zero_packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0}, crc8_failures_{0},
-      cut_points_{0};
+  std::atomic<std::uint64_t> packets_{0}, zero_packets_{0}, laps_{0}, checksum_errors_{0}, resync_bytes_{0},
+      crc8_failures_{0}, cut_points_{0};
   std::atomic<std::int64_t> last_byte_ns_{0};
   std::atomic<double> bytes_per_s_{0}, packets_per_s_{0}, laps_per_s_{0};
   // I/O thread only.

@@ -17,7 +17,8 @@ namespace {
 std::string intent_text(const Session::Impl::Intent& intent) {
   switch (intent.kind) {
     case Session::Impl::Intent::Kind::ScanHz: return "set scan frequency to " + hz_text(intent.hz);
-    case Session::Impl::Intent::Kind::RangingKhz: return "set ranging frequency to " + std::to_string(intent.khz) + " kHz";
+    case Session::Impl::Intent::Kind::RangingKhz:
+      return "set ranging frequency to " + std::to_string(intent.khz) + " kHz";
     case Session::Impl::Intent::Kind::PowerDown:
       return std::string("turn power-down protection ") + (intent.on ? "on" : "off");
     case Session::Impl::Intent::Kind::Health: return "read health";

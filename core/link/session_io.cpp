@@ -70,9 +70,8 @@ void SessionIo::wake_waiters() { wait_timer_.cancel(); }
 void SessionIo::start_read() {
   if (!link_) return;
   const std::uint64_t generation = generation_;
-  link_->async_read_some(buffer_, [this, generation](const boost::system::error_code& ec, std::size_t n) {
-    on_read(generation, ec, n);
-  });
+  link_->async_read_some(
+      buffer_, [this, generation](const boost::system::error_code& ec, std::size_t n) { on_read(generation, ec, n); });
 }
 
 void SessionIo::on_read(std::uint64_t generation, const boost::system::error_code& ec, std::size_t n) {
@@ -81,7 +80,8 @@ void SessionIo::on_read(std::uint64_t generation, const boost::system::error_cod
     const std::string what = link_ ? link_->describe() : std::string("the port");
     const bool closed = ec == asio::error::eof || ec == asio::error::connection_reset;
     if (closed && !received_any_)  // closed at once: turned away, not unplugged
-      raise_fault("the link to " + what + " closed before it sent a byte: another program may be connected "
+      raise_fault("the link to " + what +
+                  " closed before it sent a byte: another program may be connected "
                   "to it already (a virtual lidar or a ser2net port serves one host at a time); close that one "
                   "and try again");
     else if (ec == asio::error::eof)
@@ -136,9 +136,7 @@ void SessionIo::set_sink(Sink sink) {
 void SessionIo::route(std::span<const std::uint8_t> bytes, std::int64_t now) {
   while (!bytes.empty()) {
     switch (sink_) {
-      case Sink::Discard:
-        counters_.add_drained(bytes.size());
-        return;
+      case Sink::Discard: counters_.add_drained(bytes.size()); return;
       case Sink::Stream:
         if (on_stream_) stream_outlook_ = on_stream_(bytes, now);
         return;
@@ -218,8 +216,8 @@ void SessionIo::start_write() {
   link_->async_write(bytes, [this, generation](const boost::system::error_code& ec, std::size_t n) {
     if (generation != generation_) return;
     if (ec) {
-      raise_fault("writing to " + (link_ ? link_->describe() : std::string("the port")) + " failed: " +
-                  ec.message() + " (device unplugged?)");
+      raise_fault("writing to " + (link_ ? link_->describe() : std::string("the port")) + " failed: " + ec.message() +
+                  " (device unplugged?)");
       return;
     }
     counters_.add_sent(n);

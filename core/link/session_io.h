@@ -127,7 +127,7 @@ class SessionIo {
   std::size_t reply_bytes_seen_ = 0;
   std::size_t scan_header_matched_ = 0;
   LapEndOutlook stream_outlook_{};  // what the stream consumer last said can arrive unseen
-  bool holding_ = false;                // reading is held off; hold_timer_ restarts it
+  bool holding_ = false;            // reading is held off; hold_timer_ restarts it
   std::int64_t last_rx_ns_ = 0;
 
   bool device_scanning_ = false;

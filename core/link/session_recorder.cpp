@@ -50,7 +50,8 @@ void SessionRecorder::stop() {
 void SessionRecorder::bytes(bool outgoing, std::span<const std::uint8_t> data, std::int64_t now_ns) {
   if (!data.empty())
     for (const Tap& t : taps_)
-      t.tap->push(outgoing ? RecordType::HostToDevice : RecordType::DeviceToHost, data, std::max<std::int64_t>(0, now_ns - t.start_ns));
+      t.tap->push(outgoing ? RecordType::HostToDevice : RecordType::DeviceToHost, data,
+                  std::max<std::int64_t>(0, now_ns - t.start_ns));
   if (!writer_) return;
   if (!writer_->append(outgoing ? Direction::HostToDevice : Direction::DeviceToHost, data, now_ns)) {
     error_ = writer_->error();

@@ -130,8 +130,9 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
       port_changed_ = true;
       notify();
     });
-    set_state(LinkState::Reconnecting, error + (watching ? "; retrying when " + *port_path + " comes back, or in "
-                                                         : "; retrying in ") + seconds_text(delay));
+    set_state(LinkState::Reconnecting,
+              error + (watching ? "; retrying when " + *port_path + " comes back, or in " : "; retrying in ") +
+                  seconds_text(delay));
     co_await backoff(delay);
     port_watch_.disarm();
     counters_.add_reconnect();

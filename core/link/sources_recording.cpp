@@ -8,8 +8,7 @@
 namespace ydscope {
 
 std::unique_ptr<SourcesRecording> SourcesRecording::create(const std::string& path,
-                                                           std::vector<RecordingMetadata> sources,
-                                                           std::string& error) {
+                                                           std::vector<RecordingMetadata> sources, std::string& error) {
   if (error = recording_output_problem(path); !error.empty()) return nullptr;
   const std::size_t count = sources.size();
   const std::int64_t epoch = link_clock_ns();

@@ -23,16 +23,13 @@ std::string address_text(const std::string& host, std::uint16_t port) {
 std::string connect_error(const std::string& where, int error, std::chrono::milliseconds timeout) {
   const std::string head = "cannot connect to " + where + ": ";
   switch (error) {
-    case ECONNREFUSED:
-      return head + "connection refused; is the bridge (e.g. ser2net) running on that port?";
+    case ECONNREFUSED: return head + "connection refused; is the bridge (e.g. ser2net) running on that port?";
     case ETIMEDOUT:
       return head + "no answer within " + std::to_string(timeout.count()) +
              " ms; check the host, the port and any firewall";
     case ENETUNREACH:
-    case EHOSTUNREACH:
-      return head + "host unreachable; check the address and the network";
-    default:
-      return head + std::strerror(error);
+    case EHOSTUNREACH: return head + "host unreachable; check the address and the network";
+    default: return head + std::strerror(error);
   }
 }
 
@@ -49,9 +46,8 @@ struct ConnectInFlight {
   bool expired = false;
 };
 
-asio::awaitable<std::unique_ptr<TcpLink>> TcpLink::connect(asio::io_context& io, std::string host,
-                                                           std::uint16_t port, std::string& error,
-                                                           std::chrono::milliseconds timeout) {
+asio::awaitable<std::unique_ptr<TcpLink>> TcpLink::connect(asio::io_context& io, std::string host, std::uint16_t port,
+                                                           std::string& error, std::chrono::milliseconds timeout) {
   const std::string where = address_text(host, port);
   std::unique_ptr<TcpLink> link(new TcpLink(io, host, port));
   tcp::resolver resolver(io);
@@ -76,7 +72,8 @@ asio::awaitable<std::unique_ptr<TcpLink>> TcpLink::connect(asio::io_context& io,
 
   boost::system::error_code ec;
   in_flight->resolver = &resolver;
-  const auto endpoints = co_await resolver.async_resolve(host, std::to_string(port), asio::redirect_error(asio::use_awaitable, ec));
+  const auto endpoints =
+      co_await resolver.async_resolve(host, std::to_string(port), asio::redirect_error(asio::use_awaitable, ec));
   in_flight->resolver = nullptr;
   if (in_flight->expired) {
     error = connect_error(where, ETIMEDOUT, timeout);

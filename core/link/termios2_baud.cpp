@@ -52,8 +52,7 @@ int read_settings(int fd, LineSettings& out) {
   out.input_baud = tio.c_ispeed;
   out.output_baud = tio.c_ospeed;
   out.arbitrary_baud = (tio.c_cflag & CBAUD) == BOTHER;
-  out.raw = (tio.c_lflag & kLocalEditing) == 0 && (tio.c_oflag & OPOST) == 0 &&
-            (tio.c_iflag & kInputTranslation) == 0;
+  out.raw = (tio.c_lflag & kLocalEditing) == 0 && (tio.c_oflag & OPOST) == 0 && (tio.c_iflag & kInputTranslation) == 0;
   out.eight_n_one = (tio.c_cflag & CSIZE) == CS8 && (tio.c_cflag & (PARENB | CSTOPB)) == 0;
   out.flow_control = (tio.c_cflag & CRTSCTS) != 0 || (tio.c_iflag & (IXON | IXOFF)) != 0;
   return 0;

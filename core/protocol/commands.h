@@ -9,10 +9,10 @@
 namespace ydscope {
 
 enum class Command : std::uint8_t {
-  LowPowerOn = 0x01,       // G6, TG
-  LowPowerOff = 0x02,      // G6, TG
-  ModuleStatus = 0x05,     // TG: motor and module status
-  MotorClockwise = 0x06,   // G6, TG
+  LowPowerOn = 0x01,      // G6, TG
+  LowPowerOff = 0x02,     // G6, TG
+  ModuleStatus = 0x05,    // TG: motor and module status
+  MotorClockwise = 0x06,  // G6, TG
   MotorCounterClockwise = 0x07,
   MotorDirection = 0x08,
   ScanHzUpTenth = 0x09,    // +0.1 Hz
@@ -20,7 +20,7 @@ enum class Command : std::uint8_t {
   ScanHzUpOne = 0x0B,      // +1 Hz
   ScanHzDownOne = 0x0C,    // -1 Hz
   ScanHzGet = 0x0D,
-  ConstantHzOn = 0x0E,     // G6, TG
+  ConstantHzOn = 0x0E,  // G6, TG
   ConstantHzOff = 0x0F,
   RestartG1 = 0x40,
   Scan = 0x60,

@@ -16,8 +16,6 @@ std::uint8_t g1_version_ct(std::uint8_t major, std::uint8_t minor) {
   return static_cast<std::uint8_t>(((major & 0x3u) << 6) | ((minor & 0x1Fu) << 1));
 }
 
-std::uint8_t g1_health_ct(std::uint8_t health_bits) {
-  return static_cast<std::uint8_t>((health_bits & 0x7Fu) << 1);
-}
+std::uint8_t g1_health_ct(std::uint8_t health_bits) { return static_cast<std::uint8_t>((health_bits & 0x7Fu) << 1); }
 
 }  // namespace ydscope

@@ -16,8 +16,7 @@ inline constexpr std::size_t kG1CtHealthIndex = 3;
 // One step of the manual's CRC8: reflected polynomial 0x8C, starting value 0 at each zero packet.
 constexpr std::uint8_t ct_crc8_update(std::uint8_t crc, std::uint8_t ct) {
   crc = static_cast<std::uint8_t>(crc ^ ct);
-  for (int bit = 0; bit < 8; ++bit)
-    crc = static_cast<std::uint8_t>((crc & 1u) ? (crc >> 1) ^ 0x8Cu : crc >> 1);
+  for (int bit = 0; bit < 8; ++bit) crc = static_cast<std::uint8_t>((crc & 1u) ? (crc >> 1) ^ 0x8Cu : crc >> 1);
   return crc;
 }
 

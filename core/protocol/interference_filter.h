@@ -31,8 +31,7 @@ struct FilterCounts {
 FilterCounts filter_interference(std::vector<LapPoint>& points, InterferenceFilter filter,
                                  std::vector<LapPoint>* removed = nullptr);
 
-inline FilterCounts filter_interference(Lap& lap, InterferenceFilter filter,
-                                        std::vector<LapPoint>* removed = nullptr) {
+inline FilterCounts filter_interference(Lap& lap, InterferenceFilter filter, std::vector<LapPoint>* removed = nullptr) {
   return filter_interference(lap.points, filter, removed);
 }
 

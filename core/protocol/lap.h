@@ -31,8 +31,8 @@ struct Lap {
   // lap longer than that (a stream whose zero packets were lost) is cut and says how much.
   static constexpr std::size_t kMaxPoints = 24000;
 
-  std::uint64_t index = 0;         // 0 for the first complete lap of a stream
-  std::vector<LapPoint> points;    // in received order
+  std::uint64_t index = 0;       // 0 for the first complete lap of a stream
+  std::vector<LapPoint> points;  // in received order
   // G1 CT information; empty on other models or when the packet carrying it was not seen.
   std::optional<double> scan_hz;
   std::optional<std::uint8_t> health_bits;

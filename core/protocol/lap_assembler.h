@@ -21,12 +21,12 @@
 namespace ydscope {
 
 struct LapCounters {
-  std::uint64_t laps = 0;                  // complete laps published
-  std::uint64_t discarded_packets = 0;     // packets before the first zero packet
-  std::uint64_t crc_ok = 0;                // G1 laps whose CRC8 matched the LastCRC
-  std::uint64_t crc_mismatches = 0;        // G1 laps whose CRC8 did not match
-  std::uint64_t crc_unknown = 0;           // G1 laps closed without a LastCRC byte
-  std::uint64_t overflow_points = 0;       // points dropped because a lap exceeded Lap::kMaxPoints
+  std::uint64_t laps = 0;               // complete laps published
+  std::uint64_t discarded_packets = 0;  // packets before the first zero packet
+  std::uint64_t crc_ok = 0;             // G1 laps whose CRC8 matched the LastCRC
+  std::uint64_t crc_mismatches = 0;     // G1 laps whose CRC8 did not match
+  std::uint64_t crc_unknown = 0;        // G1 laps closed without a LastCRC byte
+  std::uint64_t overflow_points = 0;    // points dropped because a lap exceeded Lap::kMaxPoints
 };
 
 class LapAssembler {

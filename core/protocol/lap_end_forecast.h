@@ -20,10 +20,10 @@
 namespace ydscope {
 
 struct LapEndOutlook {
-  std::size_t bytes = 1;          // bytes that can arrive before a lap could close (at least 1)
-  std::size_t packet_bytes = 0;   // the size of an ordinary packet, 0 until the stream has shown it
-  std::int64_t next_close_ns = 0;  // when the next lap should close (rx clock), 0 when unknown
-  std::int64_t close_slack_ns = 0; // how early it might close all the same
+  std::size_t bytes = 1;            // bytes that can arrive before a lap could close (at least 1)
+  std::size_t packet_bytes = 0;     // the size of an ordinary packet, 0 until the stream has shown it
+  std::int64_t next_close_ns = 0;   // when the next lap should close (rx clock), 0 when unknown
+  std::int64_t close_slack_ns = 0;  // how early it might close all the same
 };
 
 class LapEndForecast {
@@ -46,17 +46,17 @@ class LapEndForecast {
 
   // What the packets so far have shown; angles in degrees.
   struct Rhythm {
-    bool have_last = false;         // a packet has been observed
+    bool have_last = false;  // a packet has been observed
     bool last_was_zero = false;
     double last_fsa = 0;
-    std::size_t last_size = 0;      // bytes
-    bool have_zero = false;         // a zero packet has been observed: its angle is where laps close
+    std::size_t last_size = 0;  // bytes
+    bool have_zero = false;     // a zero packet has been observed: its angle is where laps close
     double zero_fsa = 0;
-    double stride_degrees = 0;      // angle one ordinary packet advances, 0 until one was followed
-    std::size_t stride_bytes = 0;   // that packet's size
-    std::int64_t last_close_ns = 0; // receive time of the last zero packet
-    double period_ns = 0;           // smoothed time between zero packets, 0 until two were seen
-    double jitter_ns = 0;           // smoothed distance of a period from the estimate
+    double stride_degrees = 0;       // angle one ordinary packet advances, 0 until one was followed
+    std::size_t stride_bytes = 0;    // that packet's size
+    std::int64_t last_close_ns = 0;  // receive time of the last zero packet
+    double period_ns = 0;            // smoothed time between zero packets, 0 until two were seen
+    double jitter_ns = 0;            // smoothed distance of a period from the estimate
   };
 
   Rhythm rhythm_{};

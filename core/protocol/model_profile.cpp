@@ -12,38 +12,77 @@ constexpr std::array<std::uint16_t, 7> kG1RangingKhz{4, 5, 8, 9, 10, 16, 18};
 constexpr std::array<std::uint16_t, 3> kG6TgRangingKhz{4, 8, 9};
 
 constexpr std::array kG1Commands{
-    Command::Scan,          Command::Stop,           Command::DeviceInfo,   Command::HealthStatusBits,
-    Command::ScanHzUpTenth, Command::ScanHzDownTenth, Command::ScanHzUpOne, Command::ScanHzDownOne,
-    Command::ScanHzGet,     Command::RangingGet,     Command::PowerDownProtection, Command::RestartG1,
+    Command::Scan,
+    Command::Stop,
+    Command::DeviceInfo,
+    Command::HealthStatusBits,
+    Command::ScanHzUpTenth,
+    Command::ScanHzDownTenth,
+    Command::ScanHzUpOne,
+    Command::ScanHzDownOne,
+    Command::ScanHzGet,
+    Command::RangingGet,
+    Command::PowerDownProtection,
+    Command::RestartG1,
 };
 
 constexpr std::array kG6Commands{
-    Command::Scan,          Command::Stop,           Command::DeviceInfo,    Command::HealthStatusCode,
-    Command::LowPowerOn,    Command::LowPowerOff,    Command::MotorClockwise, Command::MotorCounterClockwise,
-    Command::MotorDirection, Command::ScanHzUpTenth, Command::ScanHzDownTenth, Command::ScanHzUpOne,
-    Command::ScanHzDownOne, Command::ScanHzGet,      Command::ConstantHzOn,  Command::ConstantHzOff,
-    Command::RangingCycle,  Command::RangingGet,     Command::PowerDownProtection, Command::RestartG6TG,
+    Command::Scan,           Command::Stop,          Command::DeviceInfo,          Command::HealthStatusCode,
+    Command::LowPowerOn,     Command::LowPowerOff,   Command::MotorClockwise,      Command::MotorCounterClockwise,
+    Command::MotorDirection, Command::ScanHzUpTenth, Command::ScanHzDownTenth,     Command::ScanHzUpOne,
+    Command::ScanHzDownOne,  Command::ScanHzGet,     Command::ConstantHzOn,        Command::ConstantHzOff,
+    Command::RangingCycle,   Command::RangingGet,    Command::PowerDownProtection, Command::RestartG6TG,
 };
 
 // The TG manual lists A5 05 (module status) in its command chart and documents motor direction.
 constexpr std::array kTgCommands{
-    Command::Scan,          Command::Stop,           Command::DeviceInfo,    Command::HealthStatusCode,
-    Command::LowPowerOn,    Command::LowPowerOff,    Command::ModuleStatus,  Command::MotorClockwise,
-    Command::MotorCounterClockwise, Command::MotorDirection, Command::ScanHzUpTenth, Command::ScanHzDownTenth,
-    Command::ScanHzUpOne,   Command::ScanHzDownOne,  Command::ScanHzGet,     Command::ConstantHzOn,
-    Command::ConstantHzOff, Command::RangingCycle,   Command::RangingGet,    Command::PowerDownProtection,
+    Command::Scan,
+    Command::Stop,
+    Command::DeviceInfo,
+    Command::HealthStatusCode,
+    Command::LowPowerOn,
+    Command::LowPowerOff,
+    Command::ModuleStatus,
+    Command::MotorClockwise,
+    Command::MotorCounterClockwise,
+    Command::MotorDirection,
+    Command::ScanHzUpTenth,
+    Command::ScanHzDownTenth,
+    Command::ScanHzUpOne,
+    Command::ScanHzDownOne,
+    Command::ScanHzGet,
+    Command::ConstantHzOn,
+    Command::ConstantHzOff,
+    Command::RangingCycle,
+    Command::RangingGet,
+    Command::PowerDownProtection,
     Command::RestartG6TG,
 };
 
 // Scan-frequency limits and defaults are not in the manuals; they are the datasheets' 5-12 Hz range.
 constexpr ModelProfile tg(Model model, std::string_view name, std::uint8_t code) {
-  return {model, name, code, 512000, 0, 0.5, false, false, Command::HealthStatusCode, Command::RestartG6TG,
-          kG6TgRangingKhz, 9, true, 5.0, 12.0, 10.0, kTgCommands};
+  return {model,
+          name,
+          code,
+          512000,
+          0,
+          0.5,
+          false,
+          false,
+          Command::HealthStatusCode,
+          Command::RestartG6TG,
+          kG6TgRangingKhz,
+          9,
+          true,
+          5.0,
+          12.0,
+          10.0,
+          kTgCommands};
 }
 
 constexpr std::array<ModelProfile, 5> kProfiles{{
-    {Model::G1, "G1", 19, 230400, 2, 1.0, true, true, Command::HealthStatusBits, Command::RestartG1,
-     kG1RangingKhz, 9, false, 5.0, 12.0, 9.0, kG1Commands},
+    {Model::G1, "G1", 19, 230400, 2, 1.0, true, true, Command::HealthStatusBits, Command::RestartG1, kG1RangingKhz, 9,
+     false, 5.0, 12.0, 9.0, kG1Commands},
     {Model::G6, "G6", 13, 512000, 0, 0.25, false, false, Command::HealthStatusCode, Command::RestartG6TG,
      kG6TgRangingKhz, 9, true, 5.0, 12.0, 8.0, kG6Commands},
     tg(Model::TG15, "TG15", 100),

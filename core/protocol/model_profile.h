@@ -24,20 +24,20 @@ constexpr bool distance_scale_in_range(double mm_per_count) {
 
 struct ModelProfile {
   Model model;
-  std::string_view name;        // "G1", "G6", "TG15", ...
-  std::uint8_t model_code;      // device-info model byte seen in the field
+  std::string_view name;    // "G1", "G6", "TG15", ...
+  std::uint8_t model_code;  // device-info model byte seen in the field
   std::uint32_t default_baud;
   // Range in mm = (S >> flag_bits) * distance_scale. The manuals: G1 S>>2 (flags in S&3),
   // G6 S/4, TG S/2. Some vendor-SDK firmware differs, so sessions may override the scale.
   unsigned flag_bits;
   double distance_scale;
-  bool ct_carries_info;         // G1: CT[7:1] holds scan frequency, version, health by packet index
-  bool last_crc_before_zero;    // G1: one CRC8 byte precedes every zero packet
-  Command health_command;       // the manual's health command (the other one is the fallback)
+  bool ct_carries_info;       // G1: CT[7:1] holds scan frequency, version, health by packet index
+  bool last_crc_before_zero;  // G1: one CRC8 byte precedes every zero packet
+  Command health_command;     // the manual's health command (the other one is the fallback)
   Command restart_command;
   std::span<const std::uint16_t> ranging_khz;  // reply byte -> kHz
   std::uint16_t default_ranging_khz;
-  bool ranging_settable;        // A5 D0 cycles through the table
+  bool ranging_settable;  // A5 D0 cycles through the table
   double min_scan_hz;
   double max_scan_hz;
   double default_scan_hz;

@@ -62,8 +62,7 @@ PacketDecoder::Check PacketDecoder::check(const std::uint8_t* p, std::size_t ava
   size = packet_size(lsn);
   if (available < size) return Check::NeedMore;
   const std::uint16_t expected = read_u16_le(p + 8);
-  const std::uint16_t header_words =
-      static_cast<std::uint16_t>(kPacketHeaderWord ^ (p[2] | (lsn << 8)) ^ fsa ^ lsa);
+  const std::uint16_t header_words = static_cast<std::uint16_t>(kPacketHeaderWord ^ (p[2] | (lsn << 8)) ^ fsa ^ lsa);
   const std::uint16_t actual = header_words ^ xor_words(p + kPacketHeaderSize, size - kPacketHeaderSize);
   return actual == expected ? Check::Packet : Check::BadChecksum;
 }
@@ -168,7 +167,8 @@ void PacketDecoder::feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns
   const std::uint8_t* const end = p + bytes.size();
   while (p < end) {
     if (*p != kPacketHeader0) {
-      const auto* next = static_cast<const std::uint8_t*>(std::memchr(p, kPacketHeader0, static_cast<std::size_t>(end - p)));
+      const auto* next =
+          static_cast<const std::uint8_t*>(std::memchr(p, kPacketHeader0, static_cast<std::size_t>(end - p)));
       if (!next) next = end;
       skip(p, static_cast<std::size_t>(next - p));
       p = next;

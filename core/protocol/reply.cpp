@@ -31,8 +31,7 @@ std::array<std::uint8_t, kReplyHeaderSize> encode_reply_header(const ReplyHeader
 }
 
 std::optional<ReplyHeader> parse_reply_header(std::span<const std::uint8_t> bytes) {
-  if (bytes.size() < kReplyHeaderSize || bytes[0] != kReplyStart0 || bytes[1] != kReplyStart1)
-    return std::nullopt;
+  if (bytes.size() < kReplyHeaderSize || bytes[0] != kReplyStart0 || bytes[1] != kReplyStart1) return std::nullopt;
   const std::uint32_t field = read_u32_le(bytes.data() + 2);
   const std::uint32_t mode_bits = field >> 30;
   if (mode_bits != kModeSingleBits && mode_bits != kModeContinuousBits) return std::nullopt;
@@ -54,8 +53,7 @@ ReplyHeader reply_header_for(Command command) {
 
 bool reply_matches(const ReplyHeader& header, Command command) {
   const ReplySpec spec = reply_spec(command);
-  if (spec.mode == ReplyMode::None || header.mode != spec.mode || header.type_code != spec.type_code)
-    return false;
+  if (spec.mode == ReplyMode::None || header.mode != spec.mode || header.type_code != spec.type_code) return false;
   return spec.mode == ReplyMode::Continuous || header.length == spec.payload_length;
 }
 
@@ -153,8 +151,7 @@ std::optional<std::uint8_t> parse_one_byte(std::span<const std::uint8_t> payload
   return payload[0];
 }
 
-std::optional<std::uint16_t> parse_ranging_khz(const ModelProfile& profile,
-                                               std::span<const std::uint8_t> payload) {
+std::optional<std::uint16_t> parse_ranging_khz(const ModelProfile& profile, std::span<const std::uint8_t> payload) {
   const auto index = parse_one_byte(payload);
   if (!index || *index >= profile.ranging_khz.size()) return std::nullopt;
   return profile.ranging_khz[*index];

@@ -29,7 +29,7 @@ inline constexpr std::size_t kMaxReplyPayload = 20;
 inline constexpr std::uint32_t kScanReplyLengthField = 5;
 
 struct ReplyHeader {
-  std::uint32_t length = 0;  // 30 bits; meaningless for Continuous
+  std::uint32_t length = 0;            // 30 bits; meaningless for Continuous
   ReplyMode mode = ReplyMode::Single;  // Single or Continuous; never None in a parsed header
   std::uint8_t type_code = 0;
 
@@ -115,8 +115,7 @@ std::optional<std::uint8_t> parse_one_byte(std::span<const std::uint8_t> payload
 
 // A5 D0 / D1: a table index; the table is per model (G1 4..18 kHz, G6/TG 4/8/9 kHz).
 // Empty when the payload is not one byte or the index is outside the model's table.
-std::optional<std::uint16_t> parse_ranging_khz(const ModelProfile& profile,
-                                               std::span<const std::uint8_t> payload);
+std::optional<std::uint16_t> parse_ranging_khz(const ModelProfile& profile, std::span<const std::uint8_t> payload);
 
 // A5 D9 (toggle): per the manuals 00 = protection now ON, 01 = now OFF.
 std::optional<bool> parse_power_down_protection(std::span<const std::uint8_t> payload);

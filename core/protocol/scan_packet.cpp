@@ -40,8 +40,7 @@ std::size_t encode_scan_packet(const ScanPacketSpec& spec, std::span<std::uint8_
   write_u16_le(p + 4, spec.fsa);
   write_u16_le(p + 6, spec.lsa);
   for (std::size_t i = 0; i < count; ++i) write_u16_le(p + kPacketHeaderSize + 2 * i, spec.samples[i]);
-  write_u16_le(p + 8, packet_checksum(spec.ct, lsn, spec.fsa, spec.lsa,
-                                      {p + kPacketHeaderSize, 2 * count}));
+  write_u16_le(p + 8, packet_checksum(spec.ct, lsn, spec.fsa, spec.lsa, {p + kPacketHeaderSize, 2 * count}));
   return size;
 }
 

@@ -141,8 +141,10 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
       metadata.name = value;
     } else if (key == "pose") {
       std::string why;
-      if (auto parsed = parse_pose(value, why)) metadata.pose = parsed;
-      else warn("metadata pose ignored: " + why);
+      if (auto parsed = parse_pose(value, why))
+        metadata.pose = parsed;
+      else
+        warn("metadata pose ignored: " + why);
     } else {
       metadata.extra[key] = value;
     }
@@ -178,8 +180,8 @@ std::string iso8601_utc(std::chrono::system_clock::time_point now) {
   std::tm utc{};
   ::gmtime_r(&seconds, &utc);
   std::array<char, 96> buffer{};  // room for any int the format could print
-  std::snprintf(buffer.data(), buffer.size(), "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900,
-                utc.tm_mon + 1, utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, static_cast<int>(millis));
+  std::snprintf(buffer.data(), buffer.size(), "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900, utc.tm_mon + 1,
+                utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, static_cast<int>(millis));
   return buffer.data();
 }
 

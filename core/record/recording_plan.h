@@ -32,17 +32,17 @@ enum class RecordingRefusal : std::uint8_t {
 
 // How one source of the recording decodes (version 2 has several; version 1 one).
 struct SourcePlan {
-  std::string name;                       // source_label(): what its laps are tagged with
+  std::string name;  // source_label(): what its laps are tagged with
   const ModelProfile* profile = nullptr;
-  std::optional<double> distance_scale;   // empty: the profile's own
+  std::optional<double> distance_scale;  // empty: the profile's own
 };
 
 struct RecordingPlan {
   RecordingRefusal refusal = RecordingRefusal::None;
-  std::string refusal_text;                 // one sentence; empty when usable
-  RecordingSummary summary;                 // when the file opened
-  const ModelProfile* profile = nullptr;    // the model to decode with, when usable
-  std::optional<double> distance_scale;     // empty: the profile's own
+  std::string refusal_text;               // one sentence; empty when usable
+  RecordingSummary summary;               // when the file opened
+  const ModelProfile* profile = nullptr;  // the model to decode with, when usable
+  std::optional<double> distance_scale;   // empty: the profile's own
   // Every source, by id; sources[0] is profile and distance_scale above. Set when usable.
   std::vector<SourcePlan> sources;
   // A version-2 recording of several lidars: its laps are tagged with their source.

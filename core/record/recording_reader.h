@@ -113,16 +113,16 @@ struct SourceSummary {
 
 // Totals of a whole recording, read in one pass (metadata fully merged).
 struct RecordingSummary {
-  RecordingMetadata metadata;  // source 0's
+  RecordingMetadata metadata;          // source 0's
   std::vector<SourceSummary> sources;  // by id; one for a version-1 file
   std::uint16_t version = 0;
   std::uint64_t records = 0;
   std::uint64_t device_bytes = 0;
   std::uint64_t host_bytes = 0;
-  std::int64_t duration_ns = 0;  // time of the last record
-  std::string warning;           // truncated tail
-  std::string error;             // corrupt record
-  std::string time_warning;      // damaged record times (RecordingReader::time_warning())
+  std::int64_t duration_ns = 0;                // time of the last record
+  std::string warning;                         // truncated tail
+  std::string error;                           // corrupt record
+  std::string time_warning;                    // damaged record times (RecordingReader::time_warning())
   std::vector<std::string> metadata_warnings;  // damaged metadata fields that were skipped
   std::vector<std::string> damage;             // all of the above as sentences (RecordingReader::damage)
 };

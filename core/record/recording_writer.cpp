@@ -55,8 +55,9 @@ std::unique_ptr<RecordingWriter> RecordingWriter::create(const std::string& path
   return create_sources(path, std::move(sources), start_ns, error);
 }
 
-std::unique_ptr<RecordingWriter> RecordingWriter::create_sources(const std::string& path, std::vector<RecordingMetadata> sources,
-                                                         std::int64_t start_ns, std::string& error) {
+std::unique_ptr<RecordingWriter> RecordingWriter::create_sources(const std::string& path,
+                                                                 std::vector<RecordingMetadata> sources,
+                                                                 std::int64_t start_ns, std::string& error) {
   if (sources.empty() || sources.size() > kMaxRecordingSources) {
     error = "cannot record " + std::to_string(sources.size()) + " sources to " + path + ": from 1 to " +
             std::to_string(kMaxRecordingSources) + " fit in one recording";

@@ -39,8 +39,9 @@ class RecordingWriter {
   // Several sources recorded at once, each with its metadata (name, pose, ...), by id: a
   // version-2 file, its metadata records first, one per source. With one source this is the
   // create() above: version 1, as a single lidar's file always was.
-  static std::unique_ptr<RecordingWriter> create_sources(const std::string& path, std::vector<RecordingMetadata> sources,
-                                                 std::int64_t start_ns, std::string& error);
+  static std::unique_ptr<RecordingWriter> create_sources(const std::string& path,
+                                                         std::vector<RecordingMetadata> sources, std::int64_t start_ns,
+                                                         std::string& error);
   ~RecordingWriter();  // close()
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;

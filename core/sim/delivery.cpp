@@ -36,8 +36,9 @@ std::optional<DeliveryModel> parse_delivery(std::string_view text, std::string* 
     if (colon == std::string_view::npos || !parse_unsigned(rest.substr(0, colon), a) ||
         !parse_unsigned(rest.substr(colon + 1), b) || a < 1 || a > kMaxBurstBytes || b < 1 ||
         b > static_cast<std::uint64_t>(kMaxIntervalUs))
-      return fail(error, "burst needs BYTES (1..4096) and an interval in microseconds (1..1000000), such as "
-                         "burst:64:1000");
+      return fail(error,
+                  "burst needs BYTES (1..4096) and an interval in microseconds (1..1000000), such as "
+                  "burst:64:1000");
     model.kind = DeliveryKind::Burst;
     model.burst_bytes = static_cast<std::uint32_t>(a);
     model.interval_ns = static_cast<std::int64_t>(b) * 1000;
@@ -50,8 +51,9 @@ std::optional<DeliveryModel> parse_delivery(std::string_view text, std::string* 
     model.max_piece = static_cast<std::uint32_t>(a);
     return model;
   }
-  return fail(error, "the delivery models are whole, burst:BYTES:US (e.g. burst:64:1000) and random:MAX (e.g. "
-                     "random:17)");
+  return fail(error,
+              "the delivery models are whole, burst:BYTES:US (e.g. burst:64:1000) and random:MAX (e.g. "
+              "random:17)");
 }
 
 std::string delivery_text(const DeliveryModel& model) {
@@ -70,9 +72,7 @@ DeliveryShaper::DeliveryShaper(const DeliveryModel& model, std::uint32_t baud, s
       random_(seed ^ kRandomSalt),
       next_tick_ns_(now_ns + model.interval_ns) {}
 
-std::size_t DeliveryShaper::next_random_piece() {
-  return 1 + random_.below(model_.max_piece);
-}
+std::size_t DeliveryShaper::next_random_piece() { return 1 + random_.below(model_.max_piece); }
 
 std::int64_t DeliveryShaper::random_due_ns() const {
   // The next write goes once its n bytes are here and the line could have carried them since the

@@ -28,9 +28,9 @@ enum class DeliveryKind : std::uint8_t { Whole, Burst, Random };
 
 struct DeliveryModel {
   DeliveryKind kind = DeliveryKind::Whole;
-  std::uint32_t burst_bytes = 64;         // Burst: a full USB packet
-  std::int64_t interval_ns = 1'000'000;   // Burst: the latency timer
-  std::uint32_t max_piece = 32;           // Random: the largest write
+  std::uint32_t burst_bytes = 64;        // Burst: a full USB packet
+  std::int64_t interval_ns = 1'000'000;  // Burst: the latency timer
+  std::uint32_t max_piece = 32;          // Random: the largest write
 
   friend bool operator==(const DeliveryModel&, const DeliveryModel&) = default;
 };
@@ -70,9 +70,9 @@ class DeliveryShaper {
   FaultRandom random_;
   std::deque<std::uint8_t> bytes_;
   std::deque<std::pair<std::int64_t, std::size_t>> arrivals_;  // (time, bytes) of what is held, oldest first
-  std::int64_t next_tick_ns_;       // Burst: the next latency-timer tick
-  std::int64_t line_free_ns_ = 0;   // Random: when the previous write would have finished on the line
-  std::size_t piece_ = 0;           // Random: size of the next write (0 = not drawn yet)
+  std::int64_t next_tick_ns_;                                  // Burst: the next latency-timer tick
+  std::int64_t line_free_ns_ = 0;  // Random: when the previous write would have finished on the line
+  std::size_t piece_ = 0;          // Random: size of the next write (0 = not drawn yet)
 };
 
 }  // namespace ydscope

@@ -17,8 +17,6 @@ bool FaultRandom::chance(double p) {
   return unit < p;
 }
 
-std::uint32_t FaultRandom::below(std::uint32_t n) {
-  return n == 0 ? 0 : static_cast<std::uint32_t>(next() % n);
-}
+std::uint32_t FaultRandom::below(std::uint32_t n) { return n == 0 ? 0 : static_cast<std::uint32_t>(next() % n); }
 
 }  // namespace ydscope

@@ -38,9 +38,9 @@ struct FaultCounters {
   std::uint64_t corrupted_packets = 0;  // packets whose checksum the flips really broke
   std::uint64_t dropped_bytes = 0;
   std::uint64_t lost_packets = 0;
-  std::uint64_t stalls = 0;             // stall windows begun
-  std::uint64_t stalled_packets = 0;    // scan packets discarded by a stall
-  std::uint64_t stalled_bytes = 0;      // all bytes (packets and replies) discarded by a stall
+  std::uint64_t stalls = 0;           // stall windows begun
+  std::uint64_t stalled_packets = 0;  // scan packets discarded by a stall
+  std::uint64_t stalled_bytes = 0;    // all bytes (packets and replies) discarded by a stall
   std::uint64_t junk_bytes = 0;
 };
 

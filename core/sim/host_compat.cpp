@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::uint8_t kTypeAnswer = 0x04;  // what YDLidar-SDK calls LIDAR_ANS_TYPE_DEVINFO
 constexpr std::uint8_t kTypeHealth = 0x06;
-constexpr double kQuarterDegrees = 4.0;     // the SDK's zero-offset angle scale for G1 and TG
+constexpr double kQuarterDegrees = 4.0;  // the SDK's zero-offset angle scale for G1 and TG
 
 // YDLidar-SDK 1.2.19, YDlidarDriver and CYdLidar start-up (see host_compat.h).
 constexpr std::array kYdlidarSdkCommands{

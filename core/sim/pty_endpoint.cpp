@@ -31,7 +31,8 @@ void PtyEndpoint::check_link_free(const std::string& link) {
   struct stat target {};
   if (S_ISLNK(st.st_mode) && read_link(link).rfind("/dev/pts/", 0) == 0 && ::stat(link.c_str(), &target) != 0)
     return;  // a dangling link into /dev/pts: left behind by an earlier virtual lidar
-  throw std::runtime_error(link + " already exists and is not a stale pseudo-terminal link; remove it or choose another path");
+  throw std::runtime_error(link +
+                           " already exists and is not a stale pseudo-terminal link; remove it or choose another path");
 }
 
 PtyEndpoint::PtyEndpoint(std::string link) : link_(std::move(link)) {

@@ -81,8 +81,7 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
                               std::vector<float>* scene_angles) {
   const bool zero = next_sample_ == 0;
   const std::uint32_t first = next_sample_;
-  const std::uint32_t last =
-      zero ? 0 : std::min<std::uint32_t>(first + kSamplesPerPacket - 1, samples_per_lap_ - 1);
+  const std::uint32_t last = zero ? 0 : std::min<std::uint32_t>(first + kSamplesPerPacket - 1, samples_per_lap_ - 1);
   const auto lsn = static_cast<std::uint8_t>(last - first + 1);
 
   StreamPacket packet;
@@ -143,7 +142,7 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
     }
     if (!converged) {
       double lo = level1 + kFarCorrectionDeg - 0.2;  // residual < 0: no correction is below -8 degrees
-      double hi = level1 + 1.0;                     // residual > 0 for any range beyond ~140 mm
+      double hi = level1 + 1.0;                      // residual > 0 for any range beyond ~140 mm
       if (residual(lo) < 0.0 && residual(hi) > 0.0) {
         for (int k = 0; k < kBisectionSteps; ++k) {
           const double mid = 0.5 * (lo + hi);
@@ -167,8 +166,7 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
       last_correction_deg_ = theta - level1;
     }
     samples_.push_back(word);
-    if (truth)
-      truth->push_back({static_cast<float>(normalize_degrees(theta)), static_cast<float>(range), flag});
+    if (truth) truth->push_back({static_cast<float>(normalize_degrees(theta)), static_cast<float>(range), flag});
     if (scene_angles) scene_angles->push_back(static_cast<float>(sampled_at));
   }
 

@@ -22,9 +22,9 @@ class Scene;
 struct StreamPacket {
   std::int64_t ready_ns = 0;
   std::uint64_t lap = 0;
-  std::uint32_t index = 0;         // within the lap; 0 = zero packet
+  std::uint32_t index = 0;  // within the lap; 0 = zero packet
   std::uint8_t ct = 0;
-  std::size_t packet_offset = 0;   // where AA 55 starts in the bytes (G1 zero packet: after LastCRC)
+  std::size_t packet_offset = 0;  // where AA 55 starts in the bytes (G1 zero packet: after LastCRC)
   std::uint8_t lsn = 0;
 };
 
@@ -33,9 +33,8 @@ class ScanStream {
   static constexpr std::size_t kSamplesPerPacket = 40;
 
   // scene_epoch_ns: the device time the scene's clock counts from.
-  ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene,
-             std::int64_t scene_epoch_ns, std::uint8_t version_major, std::uint8_t version_minor,
-             std::uint64_t seed);
+  ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene, std::int64_t scene_epoch_ns,
+             std::uint8_t version_major, std::uint8_t version_minor, std::uint64_t seed);
 
   void start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz);
   void set_health(std::uint8_t bits) { health_ = bits; }
@@ -68,8 +67,8 @@ class ScanStream {
   std::uint8_t debug_salt_;
   std::uint8_t health_ = 0;
 
-  double scan_hz_ = 10.0;            // set rate
-  double motor_hz_ = 10.0;           // actual rate of the current lap
+  double scan_hz_ = 10.0;   // set rate
+  double motor_hz_ = 10.0;  // actual rate of the current lap
   double motor_offset_hz_ = 0.0;
   double motor_wobble_hz_ = 0.0;
   double ranging_hz_ = 9000.0;
@@ -78,9 +77,9 @@ class ScanStream {
   std::int64_t lap_start_ns_ = 0;
   double lap_period_ns_ = 1e8;
   std::uint64_t lap_ = 0;
-  std::uint32_t next_sample_ = 0;   // 0 = the next packet is a zero packet
+  std::uint32_t next_sample_ = 0;  // 0 = the next packet is a zero packet
   std::uint32_t packet_index_ = 0;
-  std::uint8_t crc_ = 0;            // G1 CRC8 over this lap's CT bytes so far
+  std::uint8_t crc_ = 0;  // G1 CRC8 over this lap's CT bytes so far
   bool first_zero_ = true;
   double last_correction_deg_ = -8.0;  // first guess of the next sample's angle correction
   std::vector<std::uint16_t> samples_;

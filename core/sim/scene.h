@@ -10,7 +10,7 @@
 namespace ydscope {
 
 struct SceneReturn {
-  double range_mm = 0.0;  // 0 = no return
+  double range_mm = 0.0;             // 0 = no return
   PointFlag flag = PointFlag::None;  // G1 interference flag (specular, ambient light)
 };
 

@@ -53,7 +53,8 @@ SceneReturn BoothScene::sample(double angle_deg, std::int64_t t_ns) const {
   double best = hit_segment(origin, d, kHallEndSouth.a, kHallEndSouth.b);
   for (const Segment& w : kWalls) best = std::min(best, hit_segment(origin, d, w.a, w.b));
   best = std::min(best, hit_circle(origin, d, kKiosk, kKioskRadius));
-  for (int i = 0; i < kVisitors; ++i) best = std::min(best, hit_circle(origin, d, visitor(seed_, i, t), kVisitorRadius));
+  for (int i = 0; i < kVisitors; ++i)
+    best = std::min(best, hit_circle(origin, d, visitor(seed_, i, t), kVisitorRadius));
   SceneReturn out;
   if (best == kNoHit) return out;
   const auto angle_key = static_cast<std::int64_t>(std::llround(angle_deg * 1000.0));

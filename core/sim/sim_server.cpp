@@ -58,11 +58,11 @@ class SimServer::Impl {
   mutable std::mutex mu;
   std::condition_variable cv;
   std::unique_ptr<VirtualLidar> device;
-  std::unique_ptr<DeliveryShaper> shaper;  // null for DeliveryKind::Whole
+  std::unique_ptr<DeliveryShaper> shaper;      // null for DeliveryKind::Whole
   std::deque<std::uint64_t> shaped_zero_ends;  // stream offsets of zero-packet ends still held
   std::uint64_t shaped_in = 0;                 // bytes given to the shaper so far
   std::uint64_t shaped_out = 0;                // bytes it has released so far
-  std::unique_ptr<SimEndpoint> endpoint;  // the server thread's, or start/stop's while it is not running
+  std::unique_ptr<SimEndpoint> endpoint;       // the server thread's, or start/stop's while it is not running
   std::thread thread;
   int wake_fd = -1;
   bool running = false;

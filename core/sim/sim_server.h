@@ -49,11 +49,11 @@ struct SimServerOptions {
 };
 
 struct SimServerCounters {
-  std::uint64_t bytes_in = 0;        // host bytes handed to the device
-  std::uint64_t bytes_written = 0;   // device bytes a host could read
-  std::uint64_t bytes_unheard = 0;   // device bytes lost because no host had the port open
-  std::uint64_t host_connections = 0;// TCP accepts, or pty opens noticed
-  std::uint64_t rejected_hosts = 0;  // TCP hosts turned away because one was already connected
+  std::uint64_t bytes_in = 0;          // host bytes handed to the device
+  std::uint64_t bytes_written = 0;     // device bytes a host could read
+  std::uint64_t bytes_unheard = 0;     // device bytes lost because no host had the port open
+  std::uint64_t host_connections = 0;  // TCP accepts, or pty opens noticed
+  std::uint64_t rejected_hosts = 0;    // TCP hosts turned away because one was already connected
   std::uint64_t unplugs = 0;
   std::uint64_t replugs = 0;
   std::uint64_t zero_packets_written = 0;

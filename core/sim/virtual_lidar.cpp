@@ -194,8 +194,10 @@ void VirtualLidar::produce(std::int64_t now_ns, std::vector<std::uint8_t>& out,
     std::size_t next_zero = zero_base;
     for (std::size_t read = base; read < out.size(); ++read) {
       const bool drop = drop_random_.chance(faults_.drop_byte_rate);
-      if (!drop) out[write++] = out[read];
-      else ++fault_counters_.dropped_bytes;
+      if (!drop)
+        out[write++] = out[read];
+      else
+        ++fault_counters_.dropped_bytes;
       while (zero_packet_ends && next_zero < zero_packet_ends->size() && (*zero_packet_ends)[next_zero] == read + 1)
         (*zero_packet_ends)[next_zero++] = write;
     }

@@ -76,24 +76,24 @@ struct DeviceCounters {
   std::uint64_t stray_bytes = 0;          // host bytes that were not part of an A5 xx pair
   std::uint64_t keepalives = 0;           // A5 60 during a scan with power-down protection on
   std::uint64_t scans_started = 0;
-  std::uint64_t power_down_stops = 0;     // scans stopped by the 3 s watchdog
+  std::uint64_t power_down_stops = 0;  // scans stopped by the 3 s watchdog
   std::uint64_t restarts = 0;
-  std::uint64_t packets = 0;              // scan packets generated (including those faults kept off the line)
+  std::uint64_t packets = 0;  // scan packets generated (including those faults kept off the line)
   std::uint64_t zero_packets = 0;
-  std::uint64_t packets_sent = 0;         // scan packets whose last byte has gone out on the line
+  std::uint64_t packets_sent = 0;  // scan packets whose last byte has gone out on the line
   std::uint64_t points = 0;
-  std::uint64_t bytes_out = 0;            // bytes handed out by produce()
+  std::uint64_t bytes_out = 0;  // bytes handed out by produce()
 };
 
 // Ground truth of one generated packet, for tests: what a correct host decodes from it.
 struct TruthPacket {
-  std::uint64_t lap = 0;        // 0 = the lap begun by the first zero packet of this scan
-  std::uint32_t index = 0;      // index within the lap; 0 = zero packet
+  std::uint64_t lap = 0;    // 0 = the lap begun by the first zero packet of this scan
+  std::uint32_t index = 0;  // index within the lap; 0 = zero packet
   std::uint8_t ct = 0;
-  bool lost = false;            // never sent (lost-packet fault or stall)
-  bool corrupted = false;       // sent with a broken checksum
-  std::int64_t ready_ns = 0;    // when its last sample was measured
-  std::vector<LapPoint> points; // corrected angle in [0, 360), range in mm, flag
+  bool lost = false;             // never sent (lost-packet fault or stall)
+  bool corrupted = false;        // sent with a broken checksum
+  std::int64_t ready_ns = 0;     // when its last sample was measured
+  std::vector<LapPoint> points;  // corrected angle in [0, 360), range in mm, flag
   // Direction the scene was sampled at for each point; equals the point's angle once the
   // fixed-point iteration converged (it may not at an object's edge).
   std::vector<float> scene_angle_deg;

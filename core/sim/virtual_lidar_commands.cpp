@@ -72,7 +72,8 @@ void VirtualLidar::handle_command(std::uint8_t code, std::int64_t now_ns) {
     const auto min = static_cast<long>(std::lround(profile_->min_scan_hz * 100.0));
     const auto max = static_cast<long>(std::lround(profile_->max_scan_hz * 100.0));
     scan_centihz_ = static_cast<std::uint32_t>(std::clamp(static_cast<long>(scan_centihz_) + centihz, min, max));
-    answer(*command, encode_scan_frequency({scan_centihz_ + reported_scan_hz_offset_centihz(config_.host_compat, *profile_)}),
+    answer(*command,
+           encode_scan_frequency({scan_centihz_ + reported_scan_hz_offset_centihz(config_.host_compat, *profile_)}),
            now_ns);
   };
 
@@ -107,9 +108,7 @@ void VirtualLidar::handle_command(std::uint8_t code, std::int64_t now_ns) {
       answer(*command, encode_one_byte(low_power_ ? 1 : 0), now_ns);
       break;
     case Command::MotorClockwise: direction_ = MotorDirection::Clockwise; [[fallthrough]];
-    case Command::MotorDirection:
-      answer(*command, encode_motor_direction(direction_), now_ns);
-      break;
+    case Command::MotorDirection: answer(*command, encode_motor_direction(direction_), now_ns); break;
     case Command::MotorCounterClockwise:
       direction_ = MotorDirection::CounterClockwise;
       answer(*command, encode_motor_direction(direction_), now_ns);
@@ -171,6 +170,5 @@ void VirtualLidar::send_reply(std::span<const std::uint8_t> reply, std::int64_t 
   ++counters_.replies;
   pacer_->enqueue(now_ns, bytes);
 }
-
 
 }  // namespace ydscope

@@ -38,8 +38,7 @@ LapStream::~LapStream() {
 std::unique_ptr<LapSubscription> LapStream::subscribe(std::string name, std::size_t capacity,
                                                       LapSubscription::WakeFn wake) {
   // The ring (and every lap slot in it) is made before the producer can see it.
-  std::unique_ptr<LapSubscription> subscription(
-      new LapSubscription(hub_, std::move(name), capacity, std::move(wake)));
+  std::unique_ptr<LapSubscription> subscription(new LapSubscription(hub_, std::move(name), capacity, std::move(wake)));
   std::lock_guard lock(hub_->mutex);
   hub_->consumers.push_back(subscription.get());
   return subscription;

@@ -76,7 +76,10 @@ TEST(Acceptance, EachFaultFailsExactlyItsCriterion) {
       {"another model's code", [](CheckObservations& o) { o.identity.model_code = 19; }, "identity"},
       {"no serial", [](CheckObservations& o) { o.identity.serial.clear(); }, "identity"},
       {"no device info", [](CheckObservations& o) { o.identity.answered = false; }, "identity"},
-      {"a health error after the run", [](CheckObservations& o) { o.health[1] = {"A5 91 after", true, "error"}; },
+      {"a health error after the run",
+       [](CheckObservations& o) {
+         o.health[1] = {"A5 91 after", true, "error"};
+       },
        "health"},
       {"no health reading", [](CheckObservations& o) { o.health.clear(); }, "health"},
       {"rate 3 % high", [](CheckObservations& o) { o.timing.mean_hz = 8.24; }, "scan_rate"},

@@ -75,7 +75,8 @@ TEST(LapTiming, PacketsDroppedForABadChecksumAreLostSamplesToo) {
   if (t.interruptions == 0) {
     EXPECT_EQ(t.lost_samples, truly_missing(run));
   } else {
-    EXPECT_NEAR(static_cast<double>(t.lost_samples), static_cast<double>(truly_missing(run)), 2.0 * static_cast<double>(t.interruptions));
+    EXPECT_NEAR(static_cast<double>(t.lost_samples), static_cast<double>(truly_missing(run)),
+                2.0 * static_cast<double>(t.interruptions));
   }
 }
 

@@ -101,7 +101,7 @@ TEST(SectorStatistics, TheMirrorIsValidOnG6ButFlaggedSpecularOnG1) {
   EXPECT_NEAR(a.valid_share, (10.0 - 4.8) / 20.0, 0.05);
   EXPECT_GT(b.valid_share, 0.97);
   for (std::size_t bin = 0; bin < 14; ++bin) EXPECT_DOUBLE_EQ(a.valid_share_by_angle[bin], 0.0) << bin;  // 350..4
-  for (std::size_t bin = 16; bin < 20; ++bin) EXPECT_GT(a.valid_share_by_angle[bin], 0.9) << bin;      // 6..10
+  for (std::size_t bin = 16; bin < 20; ++bin) EXPECT_GT(a.valid_share_by_angle[bin], 0.9) << bin;        // 6..10
 }
 
 TEST(SectorStatistics, ClearStartsOverForTheNextLap) {

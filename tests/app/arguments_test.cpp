@@ -72,7 +72,8 @@ TEST(Arguments, FarMissesAndAmbiguityPointToTheHelp) {
 }
 
 TEST(Arguments, StrayArgumentsAreErrors) {
-  EXPECT_EQ(mistake({"--port", "x", "garbage"}), "unexpected argument 'garbage': this command takes only options (see --help)");
+  EXPECT_EQ(mistake({"--port", "x", "garbage"}),
+            "unexpected argument 'garbage': this command takes only options (see --help)");
   EXPECT_EQ(mistake({"a.bin", "b.bin"}, 1), "unexpected argument 'b.bin' after 'a.bin' (see --help)");
   EXPECT_EQ(mistake({"--port", "x", "laps", "3"}), "unexpected argument 'laps'; did you mean --laps?");
 }

@@ -82,10 +82,13 @@ TEST(BridgeStress, AClientThatNeverReadsLosesOnlyItsOwnLapsAndTheyAreCounted) {
   ASSERT_TRUE(slow.subscribe(1, "/scan") && slow.subscribe(2, "/points"));
 
   // It reads nothing until its queue has overflowed well past its 64 messages.
-  ASSERT_TRUE(eventually([&] {
-    const auto s = stats_of(*server, slow.local_port());
-    return s && s->dropped > 200;
-  }, 120s)) << "the never-reading client's drops were not counted";
+  ASSERT_TRUE(eventually(
+      [&] {
+        const auto s = stats_of(*server, slow.local_port());
+        return s && s->dropped > 200;
+      },
+      120s))
+      << "the never-reading client's drops were not counted";
 
   const std::uint64_t last = feed.scan_times().back();
   steady_a.finish_at(last);
@@ -106,8 +109,10 @@ TEST(BridgeStress, AClientThatNeverReadsLosesOnlyItsOwnLapsAndTheyAreCounted) {
   while (scans.empty() || scans.back() < last) {
     const auto message = slow.read(30s);
     ASSERT_TRUE(message) << "the slow client stopped getting messages";
-    if (message->text) warned = warned || message->json.find("messages dropped") != std::string::npos;
-    else if (message->subscription == 1) scans.push_back(message->log_time_ns);
+    if (message->text)
+      warned = warned || message->json.find("messages dropped") != std::string::npos;
+    else if (message->subscription == 1)
+      scans.push_back(message->log_time_ns);
   }
   ASSERT_FALSE(scans.empty());
   EXPECT_TRUE(std::is_sorted(scans.begin(), scans.end()));

@@ -18,8 +18,8 @@
 
 namespace ydscope::test {
 
-using foxglove::FoxgloveServer;
 using foxglove::ClientStats;
+using foxglove::FoxgloveServer;
 
 // The real server on 127.0.0.1, a free port, the topics serve advertises.
 inline std::unique_ptr<FoxgloveServer> start_server(foxglove::ServerOptions options = {}) {
@@ -51,7 +51,8 @@ bool eventually(Condition condition, std::chrono::milliseconds timeout = 30s) {
 
 // Every lap the feed published from the collector's first one to its last, nothing else; and
 // it got at least as far as `last`.
-inline void expect_every_lap(const ScanCollector& collector, const std::vector<std::uint64_t>& published, std::uint64_t last) {
+inline void expect_every_lap(const ScanCollector& collector, const std::vector<std::uint64_t>& published,
+                             std::uint64_t last) {
   EXPECT_FALSE(collector.failed()) << "the steady client timed out or was disconnected";
   const auto got = collector.times();
   ASSERT_FALSE(got.empty());
@@ -61,7 +62,8 @@ inline void expect_every_lap(const ScanCollector& collector, const std::vector<s
   ASSERT_NE(first, published.end()) << "the steady client got a lap the feed never published";
   ASSERT_NE(end, published.end()) << "the steady client got a lap the feed never published";
   const std::vector<std::uint64_t> expected(first, end + 1);
-  EXPECT_EQ(got, expected) << "laps lost, repeated or out of order: got " << got.size() << ", published " << expected.size();
+  EXPECT_EQ(got, expected) << "laps lost, repeated or out of order: got " << got.size() << ", published "
+                           << expected.size();
   EXPECT_GE(got.size(), 20u) << "too few laps to prove anything";
 }
 

@@ -30,10 +30,12 @@ TEST(BridgeTimeouts, ConnectionsThatNeverFinishTheHandshakeAreClosed) {
   for (int i = 0; i < 6; ++i) {
     silent.emplace_back(io);
     silent.back().connect({asio::ip::make_address("127.0.0.1"), server->port()});
-    if (i % 2) asio::write(silent.back(), asio::buffer(std::string("GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n")));  // half a request
+    if (i % 2)
+      asio::write(silent.back(), asio::buffer(std::string("GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n")));  // half a request
   }
   ASSERT_TRUE(eventually([&] { return server->clients().size() == 6; })) << "the server did not accept them";
-  EXPECT_TRUE(eventually([&] { return server->clients().empty(); })) << server->clients().size() << " silent connections kept";
+  EXPECT_TRUE(eventually([&] { return server->clients().empty(); }))
+      << server->clients().size() << " silent connections kept";
   // The server closed them: each reads end-of-file (the server sends nothing before the upgrade).
   for (auto& socket : silent) {
     char byte = 0;

@@ -37,16 +37,19 @@ void LidarFeed::run(foxglove::FoxgloveServer& server, double speed) {
     device_ns += kStepNs;
     bytes.clear();
     lidar.produce(device_ns, bytes);
-    encoder.device_bytes(bytes, device_ns, [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
-      // Noted before it is published, so no client can have a lap the test does not know of.
-      if (topic == RosTopic::Scan) {
-        std::lock_guard lock(mutex_);
-        scan_times_.push_back(log_time);
-        published_.notify_all();
-      }
-      server.publish(foxglove::channel_id(topic), log_time, std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
-    });
-    std::this_thread::sleep_until(started + std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(device_ns) / speed)));
+    encoder.device_bytes(bytes, device_ns,
+                         [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+                           // Noted before it is published, so no client can have a lap the test does not know of.
+                           if (topic == RosTopic::Scan) {
+                             std::lock_guard lock(mutex_);
+                             scan_times_.push_back(log_time);
+                             published_.notify_all();
+                           }
+                           server.publish(foxglove::channel_id(topic), log_time,
+                                          std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
+                         });
+    std::this_thread::sleep_until(
+        started + std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(device_ns) / speed)));
   }
 }
 

@@ -47,9 +47,10 @@ TEST(ServeSources, EachLidarUnderItsNameAndEveryPoseOnTfStatic) {
     sims.push_back(std::make_unique<SimServer>(options));
     sims.back()->start();
   }
-  std::vector<std::string> text{YDSCOPE_CLI_PATH, "serve", "--port", (dir / "g1").string(), "--name", "front",
-                                "--pose", "0.2,0,0", "--port", (dir / "g6").string(), "--name", "back",
-                                "--pose", "-0.2,0,180,flip", "--listen", "127.0.0.1:0", "--seconds", "30"};
+  std::vector<std::string> text{
+      YDSCOPE_CLI_PATH, "serve",           "--port",   (dir / "g1").string(), "--name",    "front",
+      "--pose",         "0.2,0,0",         "--port",   (dir / "g6").string(), "--name",    "back",
+      "--pose",         "-0.2,0,180,flip", "--listen", "127.0.0.1:0",         "--seconds", "30"};
   std::vector<char*> argv;
   for (auto& a : text) argv.push_back(a.data());
   argv.push_back(nullptr);

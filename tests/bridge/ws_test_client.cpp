@@ -53,8 +53,7 @@ bool WsTestClient::run_bounded(Start start, std::chrono::milliseconds timeout) {
   return false;
 }
 
-WsTestClient::WsTestClient(std::uint16_t port, int receive_buffer_bytes, std::chrono::milliseconds timeout)
-    : ws_(io_) {
+WsTestClient::WsTestClient(std::uint16_t port, int receive_buffer_bytes, std::chrono::milliseconds timeout) : ws_(io_) {
   const tcp::endpoint server(asio::ip::make_address("127.0.0.1"), port);
   auto& socket = ws_.next_layer();
   socket.open(tcp::v4());
@@ -72,7 +71,8 @@ WsTestClient::WsTestClient(std::uint16_t port, int receive_buffer_bytes, std::ch
 std::uint32_t WsTestClient::channel_of(std::string_view topic, std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!channels_.count(topic)) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left <= 0ms || !read(left)) return 0;
   }
   return channels_.find(topic)->second;
@@ -115,7 +115,8 @@ std::optional<WsMessage> WsTestClient::read(std::chrono::milliseconds timeout) {
 std::optional<WsMessage> WsTestClient::read_binary(std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left <= 0ms) return std::nullopt;
     auto message = read(left);
     if (!message || !message->text) return message;
@@ -150,7 +151,9 @@ void WsTestClient::reset_socket() {
 
 bool WsTestClient::write_raw(std::string_view bytes, std::chrono::milliseconds timeout) {
   return run_bounded(
-      [&](auto handler) { asio::async_write(ws_.next_layer(), asio::buffer(bytes.data(), bytes.size()), std::move(handler)); },
+      [&](auto handler) {
+        asio::async_write(ws_.next_layer(), asio::buffer(bytes.data(), bytes.size()), std::move(handler));
+      },
       timeout);
 }
 
@@ -159,10 +162,12 @@ std::size_t WsTestClient::read_raw(std::size_t bytes, std::chrono::milliseconds 
   std::size_t got = 0;
   const bool ok = run_bounded(
       [&](auto handler) {
-        ws_.next_layer().async_read_some(asio::buffer(raw), [&got, handler = std::move(handler)](const boost::system::error_code& ec, std::size_t n) mutable {
-          got = n;
-          handler(ec, n);
-        });
+        ws_.next_layer().async_read_some(
+            asio::buffer(raw),
+            [&got, handler = std::move(handler)](const boost::system::error_code& ec, std::size_t n) mutable {
+              got = n;
+              handler(ec, n);
+            });
       },
       timeout);
   return ok ? got : 0;

@@ -22,8 +22,8 @@ using namespace std::chrono_literals;
 
 struct WsMessage {
   bool text = false;
-  std::string json;               // text messages
-  std::uint32_t subscription = 0; // binary Message Data
+  std::string json;                // text messages
+  std::uint32_t subscription = 0;  // binary Message Data
   std::uint64_t log_time_ns = 0;
   std::size_t payload_bytes = 0;
   std::vector<std::uint8_t> payload;  // the message (CDR), to decode
@@ -34,8 +34,7 @@ class WsTestClient {
   // Connects to 127.0.0.1:port and completes the handshake offering foxglove.websocket.v1.
   // receive_buffer_bytes > 0 shrinks SO_RCVBUF first (a client the server can fill quickly).
   // Throws std::runtime_error with one sentence when it cannot.
-  explicit WsTestClient(std::uint16_t port, int receive_buffer_bytes = 0,
-                        std::chrono::milliseconds timeout = 10s);
+  explicit WsTestClient(std::uint16_t port, int receive_buffer_bytes = 0, std::chrono::milliseconds timeout = 10s);
 
   // The channel id the server advertised for `topic` (reads until the advertise arrives); 0 if
   // it did not within the timeout.

@@ -78,9 +78,8 @@ TEST_F(BadInputCli, DamagedTimesPlayToTheEndWithAWarning) {
   const std::string back = demo_with_times("back.ydrec", 200, [](std::int64_t t, std::size_t i) {
     return i == 0 ? std::numeric_limits<std::int64_t>::min() : t;
   });
-  const std::string ahead = demo_with_times("ahead.ydrec", 200, [](std::int64_t t, std::size_t) {
-    return t + 1'000'000'000'000'000'000;
-  });
+  const std::string ahead =
+      demo_with_times("ahead.ydrec", 200, [](std::int64_t t, std::size_t) { return t + 1'000'000'000'000'000'000; });
   for (const std::string& file : {back, ahead}) {
     const auto run = run_cli_apart("replay --speed 100 --format summary '" + file + "'");
     EXPECT_EQ(run.status, 0) << run.err;
@@ -115,7 +114,8 @@ TEST_F(BadInputCli, RecordingsThisYdscopeCannotReadAreAUsageError) {
                          "anything was recorded\n");
   const auto folder = run_cli_apart("replay '" + dir_.string() + "'");
   EXPECT_EQ(folder.status, 1);
-  EXPECT_EQ(folder.err, "ydscope-cli replay: " + dir_.string() + " is a folder; pass a recording file (.ydrec) instead\n");
+  EXPECT_EQ(folder.err,
+            "ydscope-cli replay: " + dir_.string() + " is a folder; pass a recording file (.ydrec) instead\n");
 }
 
 // A recording's distance_scale once went unchecked into replay ("points":[[nan,nan,0],...) and
@@ -126,8 +126,9 @@ TEST_F(BadInputCli, RecordedDistanceScaleIsCheckedAndTheSameInDecodeAndReplay) {
   ASSERT_TRUE(demo) << error;
   const auto with_scale = [&](const std::string& name, const std::string& scale) {
     // The demo's start too, so the summaries agree on it as they must on the laps.
-    RawRecording recording(1, 16, "model=G6\ndistance_scale=" + scale + "\nstart_wall_time=" +
-                                      demo->metadata().start_wall_time.value_or("") + "\n");
+    RawRecording recording(1, 16,
+                           "model=G6\ndistance_scale=" + scale +
+                               "\nstart_wall_time=" + demo->metadata().start_wall_time.value_or("") + "\n");
     demo->rewind();
     RecordView record;
     while (demo->next(record))
@@ -171,8 +172,9 @@ TEST_F(BadInputCli, RecordChecksItsOutputBeforeStarting) {
     std::string sentence;
   };
   const std::vector<Case> cases{
-      {"/dev/null", "cannot record to /dev/null: it is not a regular file (a device or a pipe), and a recording must "
-                    "be read back; give a file name such as bench.ydrec"},
+      {"/dev/null",
+       "cannot record to /dev/null: it is not a regular file (a device or a pipe), and a recording must "
+       "be read back; give a file name such as bench.ydrec"},
       {dir_.string(), "cannot record to " + dir_.string() + ": it is a folder; give a file name such as " +
                           (dir_ / "bench.ydrec").string()},
       {path("missing/x.ydrec"), "cannot record to " + path("missing/x.ydrec") + ": the folder " + path("missing") +

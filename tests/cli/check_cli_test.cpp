@@ -120,11 +120,11 @@ TEST(CheckCli, AFlatTargetAtTheRightDistancePassesAndAtTheWrongOneFailsTheBias) 
 TEST(CheckCli, MistakesAreUsageErrorsWithOneSentence) {
   SimOnPty sim(Model::G6);
   const std::string port = " --port " + sim.port();
-  for (const std::string& args : {std::string("check"), "check" + port + " --target-mm 2000",
-                                  "check" + port + " --sector 10", "check" + port + " --format xml",
-                                  "check" + port + " --tolerance-mm 5", "check" + port + " --seconds 0",
-                                  "check" + port + " --scan-hz 20", "check" + port + " --ranging-khz 5",
-                                  "check" + port + " --band 1:2", "check" + port + " --sector 10:20 --band 5"}) {
+  for (const std::string& args :
+       {std::string("check"), "check" + port + " --target-mm 2000", "check" + port + " --sector 10",
+        "check" + port + " --format xml", "check" + port + " --tolerance-mm 5", "check" + port + " --seconds 0",
+        "check" + port + " --scan-hz 20", "check" + port + " --ranging-khz 5", "check" + port + " --band 1:2",
+        "check" + port + " --sector 10:20 --band 5"}) {
     const CliResult run = run_cli(args);
     EXPECT_EQ(run.status, 2) << args << "\n" << run.out;
     EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << args << "\n" << run.out;
@@ -138,7 +138,8 @@ std::string read_text(const std::filesystem::path& path) {
 
 TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
   SimOnPty sim(Model::G6);
-  const auto report = std::filesystem::path(::testing::TempDir()) / ("check-report-" + std::to_string(getpid()) + ".html");
+  const auto report =
+      std::filesystem::path(::testing::TempDir()) / ("check-report-" + std::to_string(getpid()) + ".html");
   const CliResult run = check(sim, " --sector 260:280 --target-mm 2300 --report " + report.string());
   EXPECT_EQ(run.status, 3) << run.out;
   const std::string html = read_text(report);
@@ -154,8 +155,9 @@ TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
   EXPECT_NE(failed.find(",range_bias,"), std::string::npos) << run.out;
   for (const char* id : {"identity", "scan_rate", "link", "range_bias"}) {
     const bool fails = failed.find(std::string(",") + id + ",") != std::string::npos;
-    EXPECT_NE(html.find(std::string("<tr data-id=\"") + id + "\"><td class=\"v " + (fails ? "fail\">FAIL" : "pass\">PASS")),
-              std::string::npos)
+    EXPECT_NE(
+        html.find(std::string("<tr data-id=\"") + id + "\"><td class=\"v " + (fails ? "fail\">FAIL" : "pass\">PASS")),
+        std::string::npos)
         << id;
   }
   EXPECT_EQ(count(html, "<svg "), 4u) << "scan rate, sector histogram, valid share by angle, polar snapshot";
@@ -182,7 +184,8 @@ TEST(CheckCli, AMissingPortIsADeviceFailure) {
 
 TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   SimOnPty sim(Model::G6);
-  const auto report = std::filesystem::path(::testing::TempDir()) / ("check-ctrl-c-" + std::to_string(getpid()) + ".html");
+  const auto report =
+      std::filesystem::path(::testing::TempDir()) / ("check-ctrl-c-" + std::to_string(getpid()) + ".html");
   int out_pipe[2];
   ASSERT_EQ(pipe(out_pipe), 0);
   const pid_t child = fork();

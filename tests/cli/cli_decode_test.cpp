@@ -39,18 +39,20 @@ std::vector<std::string> lines(const std::string& text) {
 
 std::string write_temp(const std::string& name, const Bytes& bytes) {
   const std::string path = scratch().file(name);
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                              static_cast<std::streamsize>(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   return path;
 }
 
 TEST(CliDecode, SummaryOfRealCaptures) {
   auto run = run_cli_apart("decode --model G6 --format summary " + capture_arg("x4-scan1.bin"));
   EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_EQ(run.out, R"({"type":"summary","bytes":38074,"packets":455,"checksum_errors":0,"zero_packets":28,"laps":27})" "\n");
+  EXPECT_EQ(run.out, R"({"type":"summary","bytes":38074,"packets":455,"checksum_errors":0,"zero_packets":28,"laps":27})"
+                     "\n");
   run = run_cli_apart("decode --model g6 --format summary " + capture_arg("x4class-with-bad-checksum.bin"));
   EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_EQ(run.out, R"({"type":"summary","bytes":244,"packets":2,"checksum_errors":1,"zero_packets":1,"laps":0})" "\n");
+  EXPECT_EQ(run.out, R"({"type":"summary","bytes":244,"packets":2,"checksum_errors":1,"zero_packets":1,"laps":0})"
+                     "\n");
 }
 
 TEST(CliDecode, JsonlLapsThenSummary) {
@@ -59,7 +61,8 @@ TEST(CliDecode, JsonlLapsThenSummary) {
   const auto all = lines(run.out);
   ASSERT_EQ(all.size(), 28u);  // 27 laps + summary
   for (std::size_t i = 0; i < 27; ++i) {
-    EXPECT_EQ(all[i].rfind(R"({"type":"lap","index":)" + std::to_string(i) + R"(,"t":)", 0), 0u) << all[i].substr(0, 60);
+    EXPECT_EQ(all[i].rfind(R"({"type":"lap","index":)" + std::to_string(i) + R"(,"t":)", 0), 0u)
+        << all[i].substr(0, 60);
     EXPECT_NE(all[i].find(R"(,"points":[[)"), std::string::npos) << all[i].substr(0, 60);
     EXPECT_NE(all[i].find(R"(],"scan_hz":null,"health":null,"crc_ok":null,"packets":)"), std::string::npos);
     EXPECT_EQ(all[i].back(), '}');
@@ -95,7 +98,8 @@ TEST(CliDecode, G1CtInformationCrcAndFilters) {
   stream.push_back(crc);
   const std::vector<std::uint8_t> cts{g1_zero_packet_ct(9.6), 0x00};
   append(stream, test::packet(cts[0], 0.0, 0.0, {1000 << 2}));
-  append(stream, test::packet(cts[1], 90.0, 93.0, {(1000 << 2) | 1, (1000 << 2) | 2, (1000 << 2) | 3, (1000 << 2) | 2}));
+  append(stream,
+         test::packet(cts[1], 90.0, 93.0, {(1000 << 2) | 1, (1000 << 2) | 2, (1000 << 2) | 3, (1000 << 2) | 2}));
   stream.push_back(ct_crc8(cts));
   append(stream, test::packet(cts[0], 0.0, 0.0, {1000 << 2}));
   const std::string path = write_temp("g1.bin", stream);
@@ -104,7 +108,8 @@ TEST(CliDecode, G1CtInformationCrcAndFilters) {
   ASSERT_EQ(run.status, 0) << run.err;
   auto all = lines(run.out);
   ASSERT_EQ(all.size(), 4u);
-  EXPECT_NE(all[0].find(R"("scan_hz":9.6,"health":32,"crc_ok":true,"packets":5,"checksum_errors":0})"), std::string::npos)
+  EXPECT_NE(all[0].find(R"("scan_hz":9.6,"health":32,"crc_ok":true,"packets":5,"checksum_errors":0})"),
+            std::string::npos)
       << all[0];
   // Lap 2 is too short to carry a health packet; its CRC matches.
   EXPECT_NE(all[2].find(R"("scan_hz":9.6,"health":null,"crc_ok":true,"packets":2,)"), std::string::npos) << all[2];

@@ -179,7 +179,8 @@ TEST(CliSim, NeedsExactlyOneTransport) {
 // Issue 17: a stall as long as its period was accepted, and the virtual lidar went silent for good.
 TEST(CliSim, AStallMustBeShorterThanItsPeriod) {
   for (const char* stall : {"1000", "1500"}) {
-    Child child({"sim", "--model", "G6", "--pty", "/tmp/ydscope-never", "--stall-ms", stall, "--stall-every-ms", "1000"});
+    Child child(
+        {"sim", "--model", "G6", "--pty", "/tmp/ydscope-never", "--stall-ms", stall, "--stall-every-ms", "1000"});
     EXPECT_EQ(child.wait(10s), 2) << stall;
     EXPECT_EQ(child.read_stderr(), "ydscope-cli sim: --stall-ms (" + std::string(stall) +
                                        ") must be shorter than --stall-every-ms (1000), or the virtual lidar never "
@@ -225,8 +226,8 @@ TEST(CliSim, ASecondHostIsTurnedAwayAndToldWhy) {
 }
 
 TEST(CliSim, MotorFaultsOutsideTheirSpanAreUsageErrors) {
-  for (const std::vector<std::string>& args : {std::vector<std::string>{"--scan-offset-hz", "6"},
-                                               std::vector<std::string>{"--scan-wobble-hz", "-1"}}) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--scan-offset-hz", "6"}, std::vector<std::string>{"--scan-wobble-hz", "-1"}}) {
     std::vector<std::string> all{"sim", "--model", "G6", "--pty", "/tmp/ydscope-never"};
     all.insert(all.end(), args.begin(), args.end());
     Child child(all);
@@ -299,7 +300,8 @@ TEST(CliSim, HelpExplainsTheHostOptions) {
   Child child({"sim", "--help"});
   EXPECT_EQ(child.wait(10s), 0);
   const std::string help = child.read_stdout();
-  for (const char* option : {"--host-compat", "ydlidar-sdk", "--firmware", "--delivery", "burst:BYTES:US", "random:MAX"})
+  for (const char* option :
+       {"--host-compat", "ydlidar-sdk", "--firmware", "--delivery", "burst:BYTES:US", "random:MAX"})
     EXPECT_NE(help.find(option), std::string::npos) << option;
 }
 

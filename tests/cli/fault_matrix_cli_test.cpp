@@ -128,8 +128,10 @@ TEST_P(FaultMatrix, EndsWithItsSentenceAndDeliversEveryUntouchedLap) {
 
   const bool event = fault.event != LinkEvent::None;
   std::vector<std::string> args;
-  if (scan) args = {"scan", "--port", sim.port(), "--laps", event ? "100000" : "8"};
-  else args = {"record", "--port", sim.port(), "--out", path("run.ydrec"), "--seconds", event ? "60" : "1"};
+  if (scan)
+    args = {"scan", "--port", sim.port(), "--laps", event ? "100000" : "8"};
+  else
+    args = {"record", "--port", sim.port(), "--out", path("run.ydrec"), "--seconds", event ? "60" : "1"};
   CliProcess cli(args, path("stdout"), path("stderr"));
   ASSERT_TRUE(cli.started());
   apply_event(sim, [&] {
@@ -169,8 +171,8 @@ TEST_P(FaultMatrix, EndsWithItsSentenceAndDeliversEveryUntouchedLap) {
   // falls in and, through the resync, the next.
   const std::size_t drop_allowance = 2 * counters.faults.dropped_bytes;
   EXPECT_LE(match.untouched_missing, drop_allowance)
-      << match.untouched_missing << " of " << match.untouched << " untouched laps did not come out ("
-      << match.touched << " touched, " << match.printed << " printed)";
+      << match.untouched_missing << " of " << match.untouched << " untouched laps did not come out (" << match.touched
+      << " touched, " << match.printed << " printed)";
   EXPECT_GE(match.untouched, 1u) << "the fault touched every lap: make it rarer";
   // A printed lap the device never sent whole is a lap a fault touched.
   EXPECT_LE(match.printed_unknown, match.touched + drop_allowance) << laps_text.substr(0, 300);

@@ -33,7 +33,8 @@ struct LapSignature {
   double range_sum = 0;
   bool same_as(const LapSignature& other) const {
     // The CLI rounds each range to 0.01 mm.
-    return points == other.points && std::abs(range_sum - other.range_sum) <= 0.006 * static_cast<double>(points) + 0.01;
+    return points == other.points &&
+           std::abs(range_sum - other.range_sum) <= 0.006 * static_cast<double>(points) + 0.01;
   }
 };
 
@@ -112,10 +113,10 @@ inline std::vector<PrintedLap> printed_laps(const std::string& jsonl) {
 }
 
 struct LapMatch {
-  std::size_t printed = 0;           // laps printed
-  std::size_t printed_unknown = 0;   // printed laps matching no lap the device sent
-  std::size_t untouched_missing = 0; // untouched laps the device sent (up to the last printed one) not printed
-  std::size_t untouched = 0;         // untouched laps in that span
+  std::size_t printed = 0;            // laps printed
+  std::size_t printed_unknown = 0;    // printed laps matching no lap the device sent
+  std::size_t untouched_missing = 0;  // untouched laps the device sent (up to the last printed one) not printed
+  std::size_t untouched = 0;          // untouched laps in that span
   // Touched laps in that span and as many laps after it as printed laps matched none (a printed
   // lap that is not a lap the device sent whole stands for at least one touched lap).
   std::size_t touched = 0;

@@ -43,7 +43,8 @@ TEST(HealthCli, AG6HealthErrorIsOneLineTheLapsCarryItTheSummaryToo) {
   const auto lines = lines_of(run.out);
   ASSERT_EQ(lines.size(), 4u) << run.out.substr(0, 300);
   for (std::size_t i = 0; i < 3; ++i)
-    EXPECT_NE(lines[i].find(R"j("scan_hz":null,"health":2,"crc_ok":null,)j"), std::string::npos) << lines[i].substr(0, 80);
+    EXPECT_NE(lines[i].find(R"j("scan_hz":null,"health":2,"crc_ok":null,)j"), std::string::npos)
+        << lines[i].substr(0, 80);
   EXPECT_NE(lines[3].find(R"j(,"health":{"level":"error","source":"A5 91","summary":"error (error code 0x0012)"}})j"),
             std::string::npos)
       << lines[3];
@@ -65,8 +66,9 @@ TEST(HealthCli, RecordSaysItOnStderrAndInItsSummaryLine) {
   const CliResult run = run_cli_apart("record --port " + sim.port() + " --out " + file + " --seconds 0.5");
   EXPECT_EQ(run.status, 3) << run.err;
   EXPECT_EQ(count(run.err, "\n"), 1u) << run.err;
-  EXPECT_EQ(run.err.rfind("ydscope-cli record: health error: the lidar answered A5 91 with error (error code 0x00FF);", 0),
-            0u)
+  EXPECT_EQ(
+      run.err.rfind("ydscope-cli record: health error: the lidar answered A5 91 with error (error code 0x00FF);", 0),
+      0u)
       << run.err;
   EXPECT_EQ(run.out.rfind("recorded " + file + ": ", 0), 0u) << run.out;
   const std::string tail = "; the lidar reported a health error: error (error code 0x00FF) (A5 91)\n";
@@ -81,8 +83,8 @@ TEST(HealthCli, AG1HealthChangeMidScanIsANewLineAndSoIsTheWayBack) {
   SimOnPty sim(Model::G1);
   const test::TempDir dir("health-scan");
   const auto err_path = dir / "stderr.txt";
-  const std::string command = std::string("'") + YDSCOPE_CLI_PATH + "' scan --port " + sim.port() + " --laps 40 2>'" +
-                              err_path.string() + "'";
+  const std::string command =
+      std::string("'") + YDSCOPE_CLI_PATH + "' scan --port " + sim.port() + " --laps 40 2>'" + err_path.string() + "'";
   std::FILE* pipe = ::popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::string line;

@@ -154,10 +154,12 @@ TEST_F(LapOutputCli, ScanStampsLapsWithReceiveTimesAndTheSummaryWithTheStart) {
 
 TEST_F(LapOutputCli, AnUnknownFormatNamesTheThreeThatExist) {
   const std::string file = write_recording(1);
-  for (const std::string& command : std::vector<std::string>{"decode --model G6 -", "replay '" + file + "'", "scan --port /dev/null --laps 1"}) {
+  for (const std::string& command :
+       std::vector<std::string>{"decode --model G6 -", "replay '" + file + "'", "scan --port /dev/null --laps 1"}) {
     const CliResult run = run_cli_apart(command + " --format xml < /dev/null");
     EXPECT_EQ(run.status, 2) << command;
-    EXPECT_NE(run.err.find("--format must be jsonl, csv or summary, not 'xml'"), std::string::npos) << command << ": " << run.err;
+    EXPECT_NE(run.err.find("--format must be jsonl, csv or summary, not 'xml'"), std::string::npos)
+        << command << ": " << run.err;
   }
 }
 

@@ -87,13 +87,13 @@ TEST_F(SeveralLidarsCli, RecordsThreeLidarsAndReplaysEachOnesLapsTagged) {
     ASSERT_GT(laps.count(name), 0u) << name << " has no laps:\n" << replay.out.substr(0, 400);
     // Two seconds of a 5-12 Hz lidar: a handful of whole laps at least.
     EXPECT_GE(laps.at(name), 5u) << name;
-    const std::string summary_line = "{\"type\":\"summary\",\"source\":\"" + std::string(name) +
-                                     "\",\"bytes\":";
+    const std::string summary_line = "{\"type\":\"summary\",\"source\":\"" + std::string(name) + "\",\"bytes\":";
     EXPECT_EQ(count(replay.out, summary_line), 1u) << replay.out.substr(replay.out.size() - 600);
-    EXPECT_NE(record.out.find(std::string(name) + ": ") , std::string::npos);
+    EXPECT_NE(record.out.find(std::string(name) + ": "), std::string::npos);
     // record counted the laps a replay gives.
     EXPECT_NE(record.out.find(", " + std::to_string(laps.at(name)) + " laps"), std::string::npos)
-        << name << " " << laps.at(name) << "\n" << record.out;
+        << name << " " << laps.at(name) << "\n"
+        << record.out;
   }
   // decode prints the same lines as replay, and CSV gets a source column.
   const auto decode = run_cli_apart("decode '" + out + "'");
@@ -110,9 +110,9 @@ TEST_F(SeveralLidarsCli, RecordsTwoLidarsLiveIntoOneMcapEachUnderItsName) {
   test::SimOnPty g1(Model::G1);
   test::SimOnPty g6(Model::G6);
   const std::string mcap = path("two.mcap");
-  const auto record = run_cli_apart("record --port '" + g1.port() + "' --name front --pose 0.2,0,0 --port '" +
-                                    g6.port() + "' --name back --pose -0.2,0,180,flip --mcap '" + mcap +
-                                    "' --seconds 2");
+  const auto record =
+      run_cli_apart("record --port '" + g1.port() + "' --name front --pose 0.2,0,0 --port '" + g6.port() +
+                    "' --name back --pose -0.2,0,180,flip --mcap '" + mcap + "' --seconds 2");
   ASSERT_EQ(record.status, 0) << record.out << record.err;
   EXPECT_EQ(record.out.rfind("wrote " + mcap + ": ", 0), 0u) << record.out;
 
@@ -138,14 +138,16 @@ TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
   const std::string port = "'" + g6.port() + "'";
   const std::string out = " --out '" + path("x.ydrec") + "' --seconds 1";
   const std::pair<std::string, std::string> cases[] = {
-      {"record --port " + port + " --port /dev/ydscope-no-such-port" + out, "there is no port /dev/ydscope-no-such-port"},
+      {"record --port " + port + " --port /dev/ydscope-no-such-port" + out,
+       "there is no port /dev/ydscope-no-such-port"},
       {"record --port " + port + " --pose 1,2 --port tcp://127.0.0.1:9 --pose 0,0,0" + out, "'1,2'"},
       {"record --port " + port + " --name a --port tcp://127.0.0.1:9 --name a" + out, "--name a is given to two ports"},
       {"record --port " + port + " --name 1st --port tcp://127.0.0.1:9 --name b" + out, "--name '1st'"},
       {"record --port " + port + " --port " + port + out, "is given twice"},
       {"record --port " + port + " --pose 0,0,0 --port tcp://127.0.0.1:9" + out, "once per --port (2 ports)"},
       {"record --port " + port + " --port tcp://127.0.0.1:9 --seconds 1", "say where to record"},
-      {"record --port " + port + " --port tcp://127.0.0.1:9 --out '" + path("x.ydrec") + "' --mcap '" + path("x.ydrec") + "'",
+      {"record --port " + port + " --port tcp://127.0.0.1:9 --out '" + path("x.ydrec") + "' --mcap '" +
+           path("x.ydrec") + "'",
        "must be different files"},
       {"record --port " + port + " --name front" + out, "--name and --pose"},
   };

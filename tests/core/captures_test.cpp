@@ -28,7 +28,7 @@ TEST_P(X4Capture, DecodesWithExactCounts) {
   EXPECT_EQ(c.packets, expected.packets);
   EXPECT_EQ(c.zero_packets, expected.zero_packets);
   EXPECT_EQ(c.checksum_errors, 0u);
-  EXPECT_EQ(c.resync_bytes, 7u);  // exactly the scan reply header
+  EXPECT_EQ(c.resync_bytes, 7u);                 // exactly the scan reply header
   EXPECT_EQ(c.pending_bytes, expected.pending);  // the cut-off packet at the end
   EXPECT_EQ(c.laps, expected.laps);
   EXPECT_EQ(c.discarded_packets, expected.discarded);

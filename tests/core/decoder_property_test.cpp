@@ -125,7 +125,8 @@ TEST(DecoderProperty, CorruptionNeverLosesAnUntouchedPacket) {
       s = pick < 40 ? 0x55AA : static_cast<std::uint16_t>(pick * 257 + byte_dist(rng));
     }
     offsets.push_back(stream.size());
-    originals.push_back(test::packet(static_cast<std::uint8_t>(i % 10 == 0), (i % 72) * 5.0, (i % 72) * 5.0 + 4.0, samples));
+    originals.push_back(
+        test::packet(static_cast<std::uint8_t>(i % 10 == 0), (i % 72) * 5.0, (i % 72) * 5.0 + 4.0, samples));
     append(stream, originals.back());
   }
   for (int round = 0; round < 40; ++round) {
@@ -142,7 +143,8 @@ TEST(DecoderProperty, CorruptionNeverLosesAnUntouchedPacket) {
     // Also drop a random run of bytes, as a lossy UART does.
     const std::size_t cut = where(rng);
     const std::size_t cut_len = std::min<std::size_t>(1 + byte_dist(rng), damaged.size() - cut);
-    damaged.erase(damaged.begin() + static_cast<std::ptrdiff_t>(cut), damaged.begin() + static_cast<std::ptrdiff_t>(cut + cut_len));
+    damaged.erase(damaged.begin() + static_cast<std::ptrdiff_t>(cut),
+                  damaged.begin() + static_cast<std::ptrdiff_t>(cut + cut_len));
     for (std::size_t i = 0; i < originals.size(); ++i)
       if (offsets[i] < cut + cut_len && offsets[i] + originals[i].size() > cut) touched[i] = true;
 

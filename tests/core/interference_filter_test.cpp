@@ -6,9 +6,9 @@ namespace ydscope {
 namespace {
 
 std::vector<LapPoint> sample_points() {
-  return {{1.0f, 100.0f, PointFlag::None},     {2.0f, 200.0f, PointFlag::Specular},
+  return {{1.0f, 100.0f, PointFlag::None},         {2.0f, 200.0f, PointFlag::Specular},
           {3.0f, 300.0f, PointFlag::AmbientLight}, {4.0f, 400.0f, PointFlag::Reserved},
-          {5.0f, 500.0f, PointFlag::Specular}, {6.0f, 600.0f, PointFlag::None}};
+          {5.0f, 500.0f, PointFlag::Specular},     {6.0f, 600.0f, PointFlag::None}};
 }
 
 TEST(InterferenceFilter, RemovesSelectedFlagsAndCountsThem) {

@@ -276,8 +276,7 @@ TEST(Laps, PointStorageIsBounded) {
   // A stream that never sends the next zero packet cannot grow a lap past Lap::kMaxPoints.
   Bytes stream = packet(kCtLapStart, 0.0, 0.0, {40});
   const std::size_t packets = Lap::kMaxPoints / 255 + 2;
-  for (std::size_t i = 0; i < packets; ++i)
-    append(stream, packet(0, 10.0, 20.0, std::vector<std::uint16_t>(255, 100)));
+  for (std::size_t i = 0; i < packets; ++i) append(stream, packet(0, 10.0, 20.0, std::vector<std::uint16_t>(255, 100)));
   append(stream, packet(kCtLapStart, 0.0, 0.0, {40}));
   const auto decoded = decode(profile_for(Model::G6), stream);
   ASSERT_EQ(decoded.laps.size(), 1u);

@@ -17,8 +17,8 @@ void expect_near(CommonPoint got, float x_mm, float y_mm) {
 
 TEST(Pose, TheOriginPoseKeepsTheViewsOwnLayout) {
   const Pose pose;
-  expect_near(pose.to_common(at(0, 1000)), 0, 1000);     // 0 degrees: forward
-  expect_near(pose.to_common(at(90, 1000)), 1000, 0);    // clockwise: 90 is to the right
+  expect_near(pose.to_common(at(0, 1000)), 0, 1000);   // 0 degrees: forward
+  expect_near(pose.to_common(at(90, 1000)), 1000, 0);  // clockwise: 90 is to the right
   expect_near(pose.to_common(at(180, 500)), 0, -500);
   expect_near(pose.to_common(at(270, 2000)), -2000, 0);
 }
@@ -83,8 +83,8 @@ TEST(PoseText, ParsesAndFormatsBothForms) {
 }
 
 TEST(PoseText, EachMistakeIsOneSentenceNamingTheText) {
-  const char* mistakes[] = {"",        "1,2",         "1,2,3,4,5", "1,,3",     "a,b,c", "1,2,90deg",
-                            "1,2,nan", "1,2,inf",     "1500,0,0",  "0,0,400", "0,0,0,flipped", "0,0,0,"};
+  const char* mistakes[] = {"",        "1,2",     "1,2,3,4,5", "1,,3",    "a,b,c",         "1,2,90deg",
+                            "1,2,nan", "1,2,inf", "1500,0,0",  "0,0,400", "0,0,0,flipped", "0,0,0,"};
   for (const char* text : mistakes) {
     std::string error;
     EXPECT_FALSE(parse_pose(text, error)) << text;

@@ -89,9 +89,7 @@ inline Bytes read_file(const std::filesystem::path& path) {
   return Bytes(std::istreambuf_iterator<char>(in), {});
 }
 
-inline std::filesystem::path capture(const std::string& name) {
-  return captures_dir() / name;
-}
+inline std::filesystem::path capture(const std::string& name) { return captures_dir() / name; }
 
 // The .hex captures: whitespace-separated hex bytes; lines starting with '#' are notes.
 inline Bytes read_hex_capture(const std::filesystem::path& path) {
@@ -123,9 +121,8 @@ inline Decoded decode(const ModelProfile& profile, const Bytes& bytes, std::vect
   while (pos < bytes.size()) {
     std::size_t size = chunks.empty() ? bytes.size() : chunks[next_chunk++ % chunks.size()];
     size = std::min(size, bytes.size() - pos);
-    decoder.feed({bytes.data() + pos, size}, static_cast<std::int64_t>(pos), [&](const Lap& lap) {
-      result.laps.push_back(lap);
-    });
+    decoder.feed({bytes.data() + pos, size}, static_cast<std::int64_t>(pos),
+                 [&](const Lap& lap) { result.laps.push_back(lap); });
     pos += size;
   }
   decoder.finish([&](const Lap& lap) { result.laps.push_back(lap); });

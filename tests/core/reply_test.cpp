@@ -20,8 +20,8 @@ TEST(ReplyHeader, ManualHeadersOfEachCommand) {
   EXPECT_EQ(header_bytes(Command::HealthStatusBits), (Bytes{0xA5, 0x5A, 0x03, 0x00, 0x00, 0x00, 0x06}));
   EXPECT_EQ(header_bytes(Command::HealthStatusCode), (Bytes{0xA5, 0x5A, 0x03, 0x00, 0x00, 0x00, 0x06}));
   EXPECT_EQ(header_bytes(Command::Scan), (Bytes{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81}));
-  for (Command c : {Command::ScanHzUpTenth, Command::ScanHzDownTenth, Command::ScanHzUpOne,
-                    Command::ScanHzDownOne, Command::ScanHzGet})
+  for (Command c : {Command::ScanHzUpTenth, Command::ScanHzDownTenth, Command::ScanHzUpOne, Command::ScanHzDownOne,
+                    Command::ScanHzGet})
     EXPECT_EQ(header_bytes(c), (Bytes{0xA5, 0x5A, 0x04, 0x00, 0x00, 0x00, 0x04})) << command_name(c);
   for (Command c : {Command::RangingGet, Command::RangingCycle, Command::PowerDownProtection, Command::LowPowerOn,
                     Command::LowPowerOff, Command::MotorClockwise, Command::MotorCounterClockwise,

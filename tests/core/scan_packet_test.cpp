@@ -40,8 +40,8 @@ TEST(ScanPacket, ChecksumMatchesRealTg15Packet) {
   ASSERT_GE(bytes.size(), 90u);
   const std::uint8_t lsn = bytes[3];
   ASSERT_EQ(lsn, 40);
-  const std::uint16_t cs = packet_checksum(bytes[2], lsn, read_u16_le(&bytes[4]), read_u16_le(&bytes[6]),
-                                           {bytes.data() + 10, 2u * lsn});
+  const std::uint16_t cs =
+      packet_checksum(bytes[2], lsn, read_u16_le(&bytes[4]), read_u16_le(&bytes[6]), {bytes.data() + 10, 2u * lsn});
   EXPECT_EQ(cs, 0x7834);  // the CS field of the captured packet
 }
 
@@ -64,7 +64,7 @@ TEST(ScanPacket, SampleEncodingPerModelFormula) {
   // G6: S/4: E5 6F is 7161.25 mm. TG: S/2: the same word is 14322.5 mm.
   EXPECT_EQ(encode_sample(7161.25, PointFlag::None, 0, 0.25), 0x6FE5);
   EXPECT_EQ(encode_sample(14322.5, PointFlag::Specular, 0, 0.5), 0x6FE5);  // no flag bits: flag dropped
-  EXPECT_EQ(encode_sample(1e9, PointFlag::None, 2, 1.0), 0xFFFC);           // saturates
+  EXPECT_EQ(encode_sample(1e9, PointFlag::None, 2, 1.0), 0xFFFC);          // saturates
   EXPECT_EQ(encode_sample(-5, PointFlag::None, 0, 0.25), 0);
 }
 

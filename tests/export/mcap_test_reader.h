@@ -146,15 +146,20 @@ inline McapContents read_mcap(const std::vector<std::uint8_t>& file) {
     if (data_end && op != 0x02 && op != 0x03 && op != 0x04 && op != 0x08 && op != 0x0B && op != 0x0D && op != 0x0E)
       throw std::runtime_error("record " + std::to_string(op) + " in the summary section");
     switch (op) {
-      case 0x01: out.profile = r.str(); out.library = r.str(); break;
+      case 0x01:
+        out.profile = r.str();
+        out.library = r.str();
+        break;
       case 0x03: {
         const auto id = static_cast<std::uint16_t>(r.le(2));
         ReadSchema s{r.str(), r.str(), {}};
         const auto n = static_cast<std::size_t>(r.le(4));
         const auto b = r.bytes(n);
         s.data.assign(b.begin(), b.end());
-        if (!data_end) out.schemas[id] = s;
-        else if (out.schemas.at(id).data != s.data) throw std::runtime_error("summary schema differs");
+        if (!data_end)
+          out.schemas[id] = s;
+        else if (out.schemas.at(id).data != s.data)
+          throw std::runtime_error("summary schema differs");
         if (data_end) ++out.stat_schemas;
         break;
       }
@@ -207,7 +212,8 @@ inline McapContents read_mcap(const std::vector<std::uint8_t>& file) {
           const auto t = r.le(8);
           entries.emplace_back(t, r.le(8));
         }
-        if (chunk_messages[last_chunk][channel] != entries) throw std::runtime_error("message index disagrees with its chunk");
+        if (chunk_messages[last_chunk][channel] != entries)
+          throw std::runtime_error("message index disagrees with its chunk");
         message_index_at[record_at] = channel;
         break;
       }
@@ -244,13 +250,15 @@ inline McapContents read_mcap(const std::vector<std::uint8_t>& file) {
         r.le(8);
         const auto chunk_at = r.le(8);
         r.le(8);
-        if (!chunk_messages.count(chunk_at) && file[chunk_at] != 0x06) throw std::runtime_error("chunk index points at no chunk");
+        if (!chunk_messages.count(chunk_at) && file[chunk_at] != 0x06)
+          throw std::runtime_error("chunk index points at no chunk");
         if (file[chunk_at] != 0x06) throw std::runtime_error("chunk index points at no chunk");
         const auto n = static_cast<std::size_t>(r.le(4)) / 10;
         for (std::size_t i = 0; i < n; ++i) {
           const auto id = static_cast<std::uint16_t>(r.le(2));
           const auto at = r.le(8);
-          if (!message_index_at.count(at) || message_index_at[at] != id) throw std::runtime_error("chunk index's message index offset is wrong");
+          if (!message_index_at.count(at) || message_index_at[at] != id)
+            throw std::runtime_error("chunk index's message index offset is wrong");
         }
         ++out.chunk_indexes;
         break;
@@ -266,8 +274,10 @@ inline McapContents read_mcap(const std::vector<std::uint8_t>& file) {
         r.le(8);
         const auto crc = static_cast<std::uint32_t>(r.le(4));
         if (start != summary_start) throw std::runtime_error("footer summary_start is wrong");
-        if (crc != test_crc32(file.data() + start, c.offset() - 4 - start)) throw std::runtime_error("summary CRC mismatch");
-        if (c.left() != 8 || std::memcmp(file.data() + c.offset(), kMagic, 8) != 0) throw std::runtime_error("no trailing magic");
+        if (crc != test_crc32(file.data() + start, c.offset() - 4 - start))
+          throw std::runtime_error("summary CRC mismatch");
+        if (c.left() != 8 || std::memcmp(file.data() + c.offset(), kMagic, 8) != 0)
+          throw std::runtime_error("no trailing magic");
         out.complete = true;
         return out;
       }

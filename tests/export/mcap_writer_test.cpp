@@ -26,8 +26,8 @@ TEST_P(McapWriterCompression, EveryRecordAndIndexAgreesWithTheSpec) {
   options.chunk_size = 4000;  // several chunks
   McapWriter writer(sink, options);
   const std::string schema_text = "int32 x\n";
-  const auto schema = writer.add_schema("pkg/msg/A", "ros2msg",
-                                        {reinterpret_cast<const std::uint8_t*>(schema_text.data()), schema_text.size()});
+  const auto schema = writer.add_schema(
+      "pkg/msg/A", "ros2msg", {reinterpret_cast<const std::uint8_t*>(schema_text.data()), schema_text.size()});
   const auto a = writer.add_channel(schema, "/a", "cdr", {{"k", "v"}});
   const auto b = writer.add_channel(schema, "/b", "cdr", {});
   ASSERT_TRUE(writer.write_metadata("ydscope.recording", {{"model", "G6"}}));
@@ -80,7 +80,8 @@ TEST(McapWriter, AChunkNeverSpansMoreThanItsTimeLimit) {
   const auto s = writer.add_schema("pkg/msg/A", "ros2msg", {});
   const auto ch = writer.add_channel(s, "/a", "cdr", {});
   for (int i = 0; i < 50; ++i)  // 10 Hz for 5 s
-    ASSERT_TRUE(writer.write_message(ch, 0, static_cast<std::uint64_t>(i) * 100'000'000ull, static_cast<std::uint64_t>(i) * 100'000'000ull, payload(10, 1)));
+    ASSERT_TRUE(writer.write_message(ch, 0, static_cast<std::uint64_t>(i) * 100'000'000ull,
+                                     static_cast<std::uint64_t>(i) * 100'000'000ull, payload(10, 1)));
   ASSERT_TRUE(writer.close());
   const auto contents = test::read_mcap(sink.bytes());
   EXPECT_EQ(contents.messages.size(), 50u);

@@ -28,16 +28,16 @@ TEST(CdrWriter, AlignsFromTheEndOfTheEncapsulationHeader) {
   cdr.u32(0x01020304);
   cdr.string("ab");
   cdr.f64(1.0);
-  const std::vector<std::uint8_t> expected = {0, 1, 0, 0,  7, 0, 0, 0,  4, 3, 2, 1,  3, 0, 0, 0, 'a', 'b', 0,
+  const std::vector<std::uint8_t> expected = {0, 1, 0, 0, 7, 0, 0,    0,   4, 3, 2, 1, 3, 0, 0, 0, 'a', 'b', 0,
                                               0,  // to 8-byte alignment: offset 16 after the header
                                               0, 0, 0, 0, 0, 0, 0xF0, 0x3F};
   EXPECT_EQ(out, expected);
 }
 
 TEST(RosAngle, FollowsTheDriversReversionAndInversion) {
-  RosFrameOptions frame;  // reversion and inverted, as the official parameter files
-  EXPECT_NEAR(ros_angle_rad(0.0f, frame), kPi, 1e-12);        // device 0 deg -> behind
-  EXPECT_NEAR(ros_angle_rad(90.0f, frame), kPi / 2, 1e-12);   // clockwise 90 -> counter-clockwise +90
+  RosFrameOptions frame;                                     // reversion and inverted, as the official parameter files
+  EXPECT_NEAR(ros_angle_rad(0.0f, frame), kPi, 1e-12);       // device 0 deg -> behind
+  EXPECT_NEAR(ros_angle_rad(90.0f, frame), kPi / 2, 1e-12);  // clockwise 90 -> counter-clockwise +90
   EXPECT_NEAR(ros_angle_rad(180.0f, frame), 0.0, 1e-12);
   EXPECT_NEAR(ros_angle_rad(270.0f, frame), -kPi / 2, 1e-12);
   frame.reversion = frame.inverted = false;
@@ -79,10 +79,10 @@ TEST(LaserScan, BinsLikeTheOfficialDriver) {
   // ROS angle = 180 - device angle; bin = ceil((angle + 180) / 120 deg): 10 deg -> 170 -> bin 3,
   // 100 -> 80 -> bin 3 (overwrites, with its range zeroed), 190 -> -10 -> bin 2, 280 -> -100 -> bin 1.
   EXPECT_EQ(ranges[0], 0.0f);
-  EXPECT_EQ(ranges[1], 0.0f);                              // no return
+  EXPECT_EQ(ranges[1], 0.0f);  // no return
   EXPECT_FLOAT_EQ(ranges[2], 2.5005f);
-  EXPECT_EQ(intensities[2], 2.0f);                         // the G1 flag
-  EXPECT_EQ(ranges[3], 0.0f);                              // 30 m is out of range
+  EXPECT_EQ(intensities[2], 2.0f);  // the G1 flag
+  EXPECT_EQ(ranges[3], 0.0f);       // 30 m is out of range
 }
 
 TEST(PointCloud2, KeepsEveryPointExactly) {
@@ -156,7 +156,8 @@ TEST(McapRecordingExport, CarriesExactlyTheLapsTheDecoderGives) {
   exporter.metadata(metadata, 0);
   std::int64_t t = 0;
   for (std::size_t at = 0; at < stream.size(); at += 100, t += 1'000'000)
-    exporter.record(RecordType::DeviceToHost, std::span(stream).subspan(at, std::min<std::size_t>(100, stream.size() - at)), t);
+    exporter.record(RecordType::DeviceToHost,
+                    std::span(stream).subspan(at, std::min<std::size_t>(100, stream.size() - at)), t);
   exporter.record(RecordType::HostToDevice, std::vector<std::uint8_t>{0xA5, 0x65}, t);
   ASSERT_TRUE(exporter.finish()) << exporter.error();
 

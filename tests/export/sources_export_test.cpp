@@ -47,7 +47,8 @@ TEST(RosTf, EachTransformCarriesTheLidarsPointsWhereThePosePutsThem) {
   for (const RosFrameOptions& frame : frames) {
     for (const Pose& pose : poses) {
       const RosTransform t = ros_transform_of(pose, frame, kCommonFrameId, "front");
-      EXPECT_NEAR(std::hypot(std::hypot(t.rotation[0], t.rotation[1]), std::hypot(t.rotation[2], t.rotation[3])), 1.0, 1e-12);
+      EXPECT_NEAR(std::hypot(std::hypot(t.rotation[0], t.rotation[1]), std::hypot(t.rotation[2], t.rotation[3])), 1.0,
+                  1e-12);
       for (const float angle : {0.0f, 37.5f, 90.0f, 200.0f, 359.0f}) {
         SCOPED_TRACE(format_pose(pose) + " at " + std::to_string(angle) + (frame.reversion ? " rev" : "") +
                      (frame.inverted ? " inv" : ""));
@@ -86,7 +87,8 @@ std::vector<std::uint8_t> g6_bytes() {
 
 TEST(McapRecordingExport, SeveralSourcesEachUnderItsNameWithTfStatic) {
   McapMemorySink sink;
-  McapRecordingExport exporter(sink, {}, {{"front", {0.2, 0, 0, false}, Model::G6}, {"back", {-0.2, 0, 180, true}, {}}});
+  McapRecordingExport exporter(sink, {},
+                               {{"front", {0.2, 0, 0, false}, Model::G6}, {"back", {-0.2, 0, 180, true}, {}}});
   for (std::uint16_t source = 0; source < 2; ++source) {
     RecordingMetadata metadata;
     metadata.model = "G6";
@@ -130,9 +132,8 @@ TEST(McapRecordingExport, SeveralSourcesEachUnderItsNameWithTfStatic) {
       EXPECT_EQ(r.str(), child);
       double v[7];
       for (double& x : v) std::memcpy(&x, r.take(8, 8), 8);
-      const RosTransform expected = ros_transform_of(std::string(child) == "front" ? Pose{0.2, 0, 0, false}
-                                                                                    : Pose{-0.2, 0, 180, true},
-                                                     {}, kCommonFrameId, child);
+      const RosTransform expected = ros_transform_of(
+          std::string(child) == "front" ? Pose{0.2, 0, 0, false} : Pose{-0.2, 0, 180, true}, {}, kCommonFrameId, child);
       for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(v[i], expected.translation[i]);
       for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(v[3 + i], expected.rotation[i]);
     }

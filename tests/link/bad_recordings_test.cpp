@@ -29,7 +29,6 @@ constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
 
 class BadRecordings : public ::testing::Test {
  protected:
-
   std::string write(const std::string& name, const Bytes& bytes) const {
     const std::string file = dir_.file(name);
     test::write_file_bytes(file, bytes);
@@ -70,9 +69,10 @@ TEST_F(BadRecordings, ATimeThatGoesBackIsReadAsThePreviousOne) {
   // of INT64_MIN) is damage too and plays at once; then the spacing of the file resumes.
   EXPECT_EQ(device_times(*reader), (std::vector<std::int64_t>{1 * kMs, 2 * kMs, 2 * kMs, 2 * kMs, 3 * kMs}));
   EXPECT_EQ(reader->time_corrections(), 2u);
-  EXPECT_EQ(reader->time_warning(), file + " has damaged record times: the record at byte 75 goes back 9.22e+09 s "
-                                           "in time (2 such records); each plays right after the record before it, "
-                                           "and the ones after keep their spacing");
+  EXPECT_EQ(reader->time_warning(), file +
+                                        " has damaged record times: the record at byte 75 goes back 9.22e+09 s "
+                                        "in time (2 such records); each plays right after the record before it, "
+                                        "and the ones after keep their spacing");
   // Rewinding starts the check over: the same times the second time through.
   reader->rewind();
   EXPECT_EQ(device_times(*reader), (std::vector<std::int64_t>{1 * kMs, 2 * kMs, 2 * kMs, 2 * kMs, 3 * kMs}));
@@ -87,9 +87,10 @@ TEST_F(BadRecordings, AJumpShiftsTheRestOfTheRecordingBackInPlace) {
   const auto summary = summarize_recording(file, error);
   ASSERT_TRUE(summary) << error;
   EXPECT_EQ(summary->duration_ns, 5 * kMs);
-  EXPECT_EQ(summary->time_warning, file + " has damaged record times: the record at byte 75 jumps 1e+09 s ahead "
-                                          "(more than 60 s); each plays right after the record before it, and the "
-                                          "ones after keep their spacing");
+  EXPECT_EQ(summary->time_warning, file +
+                                       " has damaged record times: the record at byte 75 jumps 1e+09 s ahead "
+                                       "(more than 60 s); each plays right after the record before it, and the "
+                                       "ones after keep their spacing");
   auto reader = RecordingReader::open(file, error);
   ASSERT_TRUE(reader) << error;
   EXPECT_EQ(device_times(*reader), (std::vector<std::int64_t>{1 * kMs, 2 * kMs, 2 * kMs, 3 * kMs, 5 * kMs}));
@@ -147,7 +148,9 @@ TEST_F(BadRecordings, HeadersSayWhatIsReallyWrong) {
   RawRecording version_7(7, 16);
   const std::vector<Case> cases{
       {"empty", {}, RecordingOpenFailure::NotARecording, " is empty, not a ydscope recording"},
-      {"raw", {0xAA, 0x55, 0x01, 0x01}, RecordingOpenFailure::NotARecording,
+      {"raw",
+       {0xAA, 0x55, 0x01, 0x01},
+       RecordingOpenFailure::NotARecording,
        " is not a ydscope recording (no YDSCOPE-REC header)"},
       {"cut15", Bytes(whole.begin(), whole.begin() + 15), RecordingOpenFailure::NotARecording,
        " ends after 15 bytes, inside its 16-byte file header: the recording was cut off before anything was recorded"},
@@ -159,7 +162,8 @@ TEST_F(BadRecordings, HeadersSayWhatIsReallyWrong) {
        " has an impossible file-header size of 65535 bytes in a 41-byte file (version 1 writes 16): the file is "
        "damaged"},
       {"version0", version_0.bytes(), RecordingOpenFailure::Unsupported,
-       " says it is a version 0 recording, which does not exist (this ydscope reads versions 1 and 2): the file is damaged"},
+       " says it is a version 0 recording, which does not exist (this ydscope reads versions 1 and 2): the file is "
+       "damaged"},
       {"version7", version_7.bytes(), RecordingOpenFailure::Unsupported,
        " is a version 7 recording; this ydscope reads versions 1 and 2, update ydscope"},
   };

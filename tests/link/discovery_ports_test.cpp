@@ -63,7 +63,8 @@ class FakeSystem : public ::testing::Test {
 
 TEST_F(FakeSystem, ListsUsbSerialPortsWithTheirIdentityKnownBridgesFirst) {
   for (const char* name : {"ttyUSB0", "ttyUSB1", "ttyUSB10", "ttyACM0", "ttyS0", "ttyUSBx", "tty1", "null"}) node(name);
-  const fs::path cp2102 = usb_device("1-1", "10c4", "ea60", "Silicon Labs", "CP2102 USB to UART Bridge Controller", "0001");
+  const fs::path cp2102 =
+      usb_device("1-1", "10c4", "ea60", "Silicon Labs", "CP2102 USB to UART Bridge Controller", "0001");
   class_tty("ttyUSB1", cp2102 / "1-1:1.0" / "ttyUSB1", "cp210x");
   const fs::path ch340 = usb_device("1-3", "1a86", "7523", "", "USB Serial", "");
   class_tty("ttyUSB0", ch340 / "1-3:1.0" / "ttyUSB0", "ch341-uart");
@@ -87,7 +88,9 @@ TEST_F(FakeSystem, ListsUsbSerialPortsWithTheirIdentityKnownBridgesFirst) {
   const auto& cp = ports[1];
   EXPECT_TRUE(cp.known_lidar_bridge);
   EXPECT_EQ(cp.path, (dev() / "ttyUSB1").string());
-  EXPECT_EQ(cp.by_id, (dev() / "serial" / "by-id" / "usb-Silicon_Labs_CP2102_USB_to_UART_Bridge_Controller_0001-if00-port0").string());
+  EXPECT_EQ(
+      cp.by_id,
+      (dev() / "serial" / "by-id" / "usb-Silicon_Labs_CP2102_USB_to_UART_Bridge_Controller_0001-if00-port0").string());
   EXPECT_EQ(cp.preferred_path(), cp.by_id);
   EXPECT_EQ(cp.vendor_id, 0x10c4);
   EXPECT_EQ(cp.product_id, 0xea60);
@@ -198,10 +201,11 @@ TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
 
   const auto [json, json_status] = run_cli("ports --format json " + roots);
   EXPECT_EQ(json_status, 0);
-  EXPECT_EQ(json, "[\n  {\"path\":\"" + (dev() / "ttyUSB0").string() +
-                      "\",\"by_id\":null,\"alias\":null,\"name\":\"ttyUSB0\",\"vendor_id\":\"10c4\",\"product_id\":\"ea60\","
-                      "\"manufacturer\":\"Silicon Labs\",\"product\":\"CP2102 \\\"Bridge\\\"\",\"serial\":\"0001\","
-                      "\"driver\":\"cp210x\",\"known_lidar_bridge\":true,\"on_board_uart\":false}\n]\n");
+  EXPECT_EQ(json,
+            "[\n  {\"path\":\"" + (dev() / "ttyUSB0").string() +
+                "\",\"by_id\":null,\"alias\":null,\"name\":\"ttyUSB0\",\"vendor_id\":\"10c4\",\"product_id\":\"ea60\","
+                "\"manufacturer\":\"Silicon Labs\",\"product\":\"CP2102 \\\"Bridge\\\"\",\"serial\":\"0001\","
+                "\"driver\":\"cp210x\",\"known_lidar_bridge\":true,\"on_board_uart\":false}\n]\n");
 
   EXPECT_EQ(run_cli("ports --format json --dev-root " + (root_ / "none").string()).first, "[]\n");
   EXPECT_EQ(run_cli("ports --format xml").second, 2);
@@ -210,9 +214,12 @@ TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
 TEST_F(FakeSystem, CliJsonIsValidUtf8WhateverTheDeviceSays) {
   node("ttyUSB0");
   // A cheap bridge's manufacturer string: Latin-1 bytes, a cut-off UTF-8 sequence, a control byte.
-  const fs::path bridge = usb_device("1-2", "1a86", "7523", "Caf\xe9 \xc3", "ok \xc3\xa9\x01", "\xff" "1");
+  const fs::path bridge = usb_device("1-2", "1a86", "7523", "Caf\xe9 \xc3", "ok \xc3\xa9\x01",
+                                     "\xff"
+                                     "1");
   class_tty("ttyUSB0", bridge / "1-2:1.0" / "ttyUSB0", "ch341");
-  const auto [json, status] = run_cli("ports --format json --dev-root " + dev().string() + " --sys-root " + sys().string());
+  const auto [json, status] =
+      run_cli("ports --format json --dev-root " + dev().string() + " --sys-root " + sys().string());
   EXPECT_EQ(status, 0);
   EXPECT_NE(json.find(R"("manufacturer":"Caf\ufffd \ufffd")"), std::string::npos) << json;
   EXPECT_NE(json.find("\"product\":\"ok \xc3\xa9\\u0001\""), std::string::npos) << json;  // valid UTF-8 kept

@@ -79,11 +79,12 @@ class ReplyRewriter final : public ByteLink {
   std::uint32_t length_ = 0;
 };
 
-SessionConfig lying_config(const SimOnPty& sim, Model model, ReplyRewriter::Lies lies, std::map<std::uint8_t, int>& sent) {
+SessionConfig lying_config(const SimOnPty& sim, Model model, ReplyRewriter::Lies lies,
+                           std::map<std::uint8_t, int>& sent) {
   SessionConfig config = config_for(sim.port(), model, /*scan=*/false);
   const std::string port = sim.port();
-  config.open_link = [port, lies, &sent](boost::asio::io_context& io, std::uint32_t baud, std::string& error)
-      -> std::unique_ptr<ByteLink> {
+  config.open_link = [port, lies, &sent](boost::asio::io_context& io, std::uint32_t baud,
+                                         std::string& error) -> std::unique_ptr<ByteLink> {
     auto serial = SerialLink::open(io, port, baud, error);
     if (!serial) return nullptr;
     return std::make_unique<ReplyRewriter>(std::move(serial), lies, sent);
@@ -106,7 +107,8 @@ TEST(LyingDeviceSession, ARangingFrequencyThatNeverChangesEndsTheCyclingWithASen
     Session session;
     // Every ranging answer says code 0, whatever the device really did.
     session.connect(lying_config(sim, Model::G6, {{kRangingCycle, {{0, 0}}}, {kRangingGet, {{0, 0}}}}, sent));
-    ASSERT_EQ(wait_for_state(session, LinkState::Ready).state, LinkState::Ready) << describe_snapshot(session.snapshot());
+    ASSERT_EQ(wait_for_state(session, LinkState::Ready).state, LinkState::Ready)
+        << describe_snapshot(session.snapshot());
     result = run_command([&](CommandCallback done) { session.set_ranging_khz(target, std::move(done)); });
   }
   EXPECT_FALSE(result.ok);
@@ -125,7 +127,8 @@ TEST(LyingDeviceSession, ARangingCodeOutsideTheTableIsNamedAndNotCycledOn) {
   {
     Session session;
     session.connect(lying_config(sim, Model::TG30, {{kRangingCycle, {{0, 0x7F}}}, {kRangingGet, {{0, 0x7F}}}}, sent));
-    ASSERT_EQ(wait_for_state(session, LinkState::Ready).state, LinkState::Ready) << describe_snapshot(session.snapshot());
+    ASSERT_EQ(wait_for_state(session, LinkState::Ready).state, LinkState::Ready)
+        << describe_snapshot(session.snapshot());
     result = run_command([&](CommandCallback done) { session.set_ranging_khz(tg.ranging_khz[0], std::move(done)); });
   }
   EXPECT_FALSE(result.ok);

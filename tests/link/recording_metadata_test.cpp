@@ -40,7 +40,8 @@ TEST(RecordingMetadata, EmptyMetadataEncodesToNothing) {
 
 TEST(RecordingMetadata, DamagedFieldsAreSkippedWithWarnings) {
   std::vector<std::string> warnings;
-  const auto metadata = RecordingMetadata::parse("model=G1\nbaud=fast\ngarbage\ndistance_scale=x\nhardware=2\n", &warnings);
+  const auto metadata =
+      RecordingMetadata::parse("model=G1\nbaud=fast\ngarbage\ndistance_scale=x\nhardware=2\n", &warnings);
   EXPECT_EQ(metadata.model, "G1");
   EXPECT_FALSE(metadata.baud);
   EXPECT_FALSE(metadata.distance_scale);
@@ -57,8 +58,9 @@ TEST(RecordingMetadata, DistanceScaleIsHeldToTheBoundsOfTheOption) {
     EXPECT_FALSE(metadata.distance_scale) << bad;
     EXPECT_EQ(metadata.model, "G6");
     ASSERT_EQ(warnings.size(), 1u) << bad;
-    EXPECT_EQ(warnings[0], "metadata distance_scale='" + bad +
-                               "' is not a number from 1e-06 to 1e+06 mm per count; ignored, the model's own scale is used");
+    EXPECT_EQ(warnings[0],
+              "metadata distance_scale='" + bad +
+                  "' is not a number from 1e-06 to 1e+06 mm per count; ignored, the model's own scale is used");
   }
   for (const double good : {kMinDistanceScale, 0.25, 1.0, kMaxDistanceScale}) {
     RecordingMetadata metadata;

@@ -74,8 +74,10 @@ void record_and_replay(Model model) {
     Lap lap;
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
     while (live.size() < 8 && std::chrono::steady_clock::now() < give_up) {
-      if (session.laps().try_pop(lap)) live.push_back(lap);
-      else std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      if (session.laps().try_pop(lap))
+        live.push_back(lap);
+      else
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     std::promise<CommandResult> stopped;
     session.stop_recording([&stopped](const CommandResult& r) { stopped.set_value(r); });
@@ -130,7 +132,8 @@ TEST(ReplayThroughASession, ShowsTheDeviceTheRecordingCameFrom) {
   config.address = file;
   config.model = Model::G6;
   config.reconnect = false;
-  config.open_link = [file](boost::asio::io_context& io, std::uint32_t, std::string& error) -> std::unique_ptr<ByteLink> {
+  config.open_link = [file](boost::asio::io_context& io, std::uint32_t,
+                            std::string& error) -> std::unique_ptr<ByteLink> {
     return ReplayLink::open(io, file, {.speed = 1}, error);
   };
   session.connect(config);

@@ -117,7 +117,8 @@ TEST(SessionCommands, PowerDownProtectionKeepsTheScanAlivePastThreeSeconds) {
   EXPECT_GE(device.keepalives, 3u);
   EXPECT_EQ(device.ignored_during_scan, 0u);
   // And off again: the keepalive stops with it.
-  const CommandResult off = run_command([&](CommandCallback done) { g6.session.set_power_down_protection(false, done); });
+  const CommandResult off =
+      run_command([&](CommandCallback done) { g6.session.set_power_down_protection(false, done); });
   ASSERT_TRUE(off.ok) << off.message;
   EXPECT_EQ(off.power_down_protection, false);
 }
@@ -135,7 +136,8 @@ TEST(SessionCommands, NothingButStopReachesAScanningDevice) {
     tg.session.refresh_health([p2](const CommandResult& r) { p2->set_value(r); });
     auto p3 = std::make_shared<std::promise<CommandResult>>();
     results.push_back(p3->get_future());
-    tg.session.set_ranging_khz(static_cast<std::uint16_t>(i % 2 ? 4 : 8), [p3](const CommandResult& r) { p3->set_value(r); });
+    tg.session.set_ranging_khz(static_cast<std::uint16_t>(i % 2 ? 4 : 8),
+                               [p3](const CommandResult& r) { p3->set_value(r); });
   }
   for (auto& f : results) {
     ASSERT_EQ(f.wait_for(kPatience), std::future_status::ready);

@@ -34,7 +34,8 @@ TEST(SessionCutPoints, ALiveSessionCountsThePointsItCut) {
   config.address = file;
   config.model = Model::G6;
   config.reconnect = false;
-  config.open_link = [file](boost::asio::io_context& io, std::uint32_t, std::string& error) -> std::unique_ptr<ByteLink> {
+  config.open_link = [file](boost::asio::io_context& io, std::uint32_t,
+                            std::string& error) -> std::unique_ptr<ByteLink> {
     return ReplayLink::open(io, file, {.speed = 0}, error);
   };
   session.connect(config);

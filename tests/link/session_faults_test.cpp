@@ -16,8 +16,8 @@ TEST(SessionFaults, UnplugAndReplugRecoversByItself) {
   ASSERT_EQ(take_laps(session, 2), 2u) << describe_snapshot(session.snapshot());
 
   sim.server().unplug();
-  const SessionSnapshot lost = session.wait_until(
-      [](const SessionSnapshot& s) { return s.state == LinkState::Reconnecting; }, kPatience);
+  const SessionSnapshot lost =
+      session.wait_until([](const SessionSnapshot& s) { return s.state == LinkState::Reconnecting; }, kPatience);
   ASSERT_EQ(lost.state, LinkState::Reconnecting) << describe_snapshot(lost);
   EXPECT_FALSE(lost.message.empty());
 
@@ -43,8 +43,8 @@ TEST(SessionFaults, APortThatComesBackEndsTheBackoffAtOnce) {
   ASSERT_EQ(take_laps(session, 2), 2u) << describe_snapshot(session.snapshot());
 
   sim.server().unplug();
-  const SessionSnapshot lost = session.wait_until(
-      [](const SessionSnapshot& s) { return s.state == LinkState::Reconnecting; }, kPatience);
+  const SessionSnapshot lost =
+      session.wait_until([](const SessionSnapshot& s) { return s.state == LinkState::Reconnecting; }, kPatience);
   ASSERT_EQ(lost.state, LinkState::Reconnecting) << describe_snapshot(lost);
   EXPECT_NE(lost.message.find("retrying when " + sim.port() + " comes back"), std::string::npos) << lost.message;
 

@@ -27,7 +27,9 @@ TEST(SessionNewSource, ReplayAfterALiveG1ShowsNoneOfTheG1sAnswers) {
   live.reconnect = false;
   session.connect(live);
   const auto g1 = session.wait_until(
-      [](const SessionSnapshot& s) { return (s.state == LinkState::Scanning && s.health && s.counters.laps > 2) || s.state == LinkState::Failed; },
+      [](const SessionSnapshot& s) {
+        return (s.state == LinkState::Scanning && s.health && s.counters.laps > 2) || s.state == LinkState::Failed;
+      },
       std::chrono::seconds(20));
   ASSERT_EQ(g1.state, LinkState::Scanning) << g1.message;
   ASSERT_TRUE(g1.health);
@@ -40,13 +42,15 @@ TEST(SessionNewSource, ReplayAfterALiveG1ShowsNoneOfTheG1sAnswers) {
   replay.address = file;
   replay.model = Model::G6;
   replay.reconnect = false;
-  replay.open_link = [file](boost::asio::io_context& io, std::uint32_t, std::string& error) -> std::unique_ptr<ByteLink> {
+  replay.open_link = [file](boost::asio::io_context& io, std::uint32_t,
+                            std::string& error) -> std::unique_ptr<ByteLink> {
     return ReplayLink::open(io, file, {.speed = 1}, error);
   };
   session.connect(replay);
   const auto g6 = session.wait_until(
       [](const SessionSnapshot& s) {
-        return (s.state == LinkState::Scanning && s.device && s.device->profile->model == Model::G6) || s.state == LinkState::Failed;
+        return (s.state == LinkState::Scanning && s.device && s.device->profile->model == Model::G6) ||
+               s.state == LinkState::Failed;
       },
       std::chrono::seconds(20));
   ASSERT_EQ(g6.state, LinkState::Scanning) << g6.message;
@@ -67,8 +71,9 @@ TEST(SessionNewSource, CountersStartAtZeroOnANewConnection) {
   config.address = first.device_path();
   config.reconnect = false;
   session.connect(config);
-  const auto before = session.wait_until(
-      [](const SessionSnapshot& s) { return s.counters.laps >= 6 || s.state == LinkState::Failed; }, std::chrono::seconds(20));
+  const auto before =
+      session.wait_until([](const SessionSnapshot& s) { return s.counters.laps >= 6 || s.state == LinkState::Failed; },
+                         std::chrono::seconds(20));
   ASSERT_GE(before.counters.laps, 6u) << before.message;
   session.disconnect();
   session.wait_until([](const SessionSnapshot& s) { return s.state == LinkState::Idle; }, std::chrono::seconds(10));
@@ -79,7 +84,8 @@ TEST(SessionNewSource, CountersStartAtZeroOnANewConnection) {
   session.connect(config);
   // Right after the probe the new connection has counted at most a lap or two.
   const auto after = session.wait_until(
-      [](const SessionSnapshot& s) { return s.state == LinkState::Scanning || s.state == LinkState::Failed; }, std::chrono::seconds(20));
+      [](const SessionSnapshot& s) { return s.state == LinkState::Scanning || s.state == LinkState::Failed; },
+      std::chrono::seconds(20));
   ASSERT_EQ(after.state, LinkState::Scanning) << after.message;
   EXPECT_LT(after.counters.laps, before.counters.laps);
   session.disconnect();

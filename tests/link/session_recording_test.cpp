@@ -58,7 +58,8 @@ TEST(SessionRecording, RecordsBothDirectionsAndTheDeviceMetadata) {
   EXPECT_EQ(metadata.port, sim.port());
   // Start-up asked stop, device info, health, scan Hz, ranging, then scanned; the set stopped first.
   for (const std::string command : {"\xA5\x65", "\xA5\x90", "\xA5\x91", "\xA5\x0D", "\xA5\xD1", "\xA5\x60", "\xA5\x0B"})
-    EXPECT_NE(sent.find(command), std::string::npos) << "command byte " << static_cast<int>(static_cast<std::uint8_t>(command[1]));
+    EXPECT_NE(sent.find(command), std::string::npos)
+        << "command byte " << static_cast<int>(static_cast<std::uint8_t>(command[1]));
   // The recording's device bytes hold every lap the session decoded (a lap cut by a command's
   // stop is one the session discards too, so the counts can differ by those).
   EXPECT_GE(decoded_laps + 2, session_laps);

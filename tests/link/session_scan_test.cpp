@@ -122,8 +122,9 @@ TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
   std::vector<Lap> before;
   ASSERT_EQ(take_laps(session, 2, &before), 2u);
   session.set_distance_scale(1.0);  // the vendor SDK's TG scale for newer firmware: twice the manual's
-  ASSERT_TRUE(session.wait_until([](const SessionSnapshot& s) { return s.distance_scale == 1.0; }, kPatience)
-                  .distance_scale == 1.0);
+  ASSERT_TRUE(
+      session.wait_until([](const SessionSnapshot& s) { return s.distance_scale == 1.0; }, kPatience).distance_scale ==
+      1.0);
   Lap lap;
   while (session.laps().try_pop(lap)) {
   }
@@ -178,8 +179,8 @@ TEST(SessionScan, AStreamWithoutItsReplyHeaderStillDecodes) {
   Session session(64);
   SessionConfig config = config_for(sim.port(), Model::G6);
   const std::string port = sim.port();
-  config.open_link = [port](boost::asio::io_context& io, std::uint32_t baud, std::string& error)
-      -> std::unique_ptr<ByteLink> {
+  config.open_link = [port](boost::asio::io_context& io, std::uint32_t baud,
+                            std::string& error) -> std::unique_ptr<ByteLink> {
     auto serial = SerialLink::open(io, port, baud, error);
     if (!serial) return nullptr;
     return std::make_unique<ScanHeaderEater>(std::move(serial));

@@ -80,7 +80,8 @@ class WrongBaudGarbler final : public ByteLink {
       inner_->async_write(bytes, std::move(handler));
     } else {  // the device hears noise: send nothing it could take for a command
       static const std::uint8_t noise[2] = {0x00, 0x00};
-      inner_->async_write(std::span<const std::uint8_t>(noise, bytes.size() < 2 ? bytes.size() : 2), std::move(handler));
+      inner_->async_write(std::span<const std::uint8_t>(noise, bytes.size() < 2 ? bytes.size() : 2),
+                          std::move(handler));
     }
   }
   void close() override { inner_->close(); }
@@ -110,8 +111,8 @@ TEST(SessionStartup, ProbesBaudsUntilTheDeviceAnswers) {
     config.reply_timeout = 300ms;
     config.command_attempts = 1;
     const std::string port = sim.port();
-    config.open_link = [port, &tried](boost::asio::io_context& io, std::uint32_t baud, std::string& error)
-        -> std::unique_ptr<ByteLink> {
+    config.open_link = [port, &tried](boost::asio::io_context& io, std::uint32_t baud,
+                                      std::string& error) -> std::unique_ptr<ByteLink> {
       auto serial = SerialLink::open(io, port, baud, error);
       if (!serial) return nullptr;
       return std::make_unique<WrongBaudGarbler>(std::move(serial), baud, 512000, tried);

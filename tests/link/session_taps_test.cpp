@@ -12,7 +12,8 @@ namespace {
 using namespace test;
 
 // The device bytes a tap holds now (waiting up to `wait` for the first), and whether it is open.
-std::size_t device_bytes_in(RecordTap& tap, bool& open, std::chrono::milliseconds wait = std::chrono::milliseconds(500)) {
+std::size_t device_bytes_in(RecordTap& tap, bool& open,
+                            std::chrono::milliseconds wait = std::chrono::milliseconds(500)) {
   std::vector<TapRecord> records;
   open = tap.wait_and_take(records, wait);
   std::size_t bytes = 0;
@@ -54,7 +55,8 @@ TEST(SessionTaps, TwoTapsAreFedAtOnceAndStopOneByOne) {
 
   // A tap that is not the session's is not closed by asking.
   auto stranger = std::make_shared<RecordTap>();
-  EXPECT_EQ(run_command([&](CommandCallback done) { session.stop_tap(stranger, done); }).message, "that tap was not open");
+  EXPECT_EQ(run_command([&](CommandCallback done) { session.stop_tap(stranger, done); }).message,
+            "that tap was not open");
   device_bytes_in(*stranger, open, std::chrono::milliseconds(10));
   EXPECT_TRUE(open);
 }

@@ -74,7 +74,8 @@ TEST(SeveralLidars, ThreeAtOnceKeepTheirLapsTheirCommandsAndTheirFaultsApart) {
   std::vector<std::unique_ptr<SimOnPty>> sims;
   for (int i = 0; i < 3; ++i) {
     sims.push_back(std::make_unique<SimOnPty>(models[i]));
-    sims[i]->server().with_device([&truth, i](VirtualLidar& d) { d.set_truth([&truth, i](const TruthPacket& p) { truth[i].add(p); }); });
+    sims[i]->server().with_device(
+        [&truth, i](VirtualLidar& d) { d.set_truth([&truth, i](const TruthPacket& p) { truth[i].add(p); }); });
   }
   Received received[3];
   std::vector<std::unique_ptr<Session>> sessions;
@@ -112,14 +113,17 @@ TEST(SeveralLidars, ThreeAtOnceKeepTheirLapsTheirCommandsAndTheirFaultsApart) {
     std::uint64_t heard[3];
     for (int i = 0; i < 3; ++i) heard[i] = sims[i]->counters().server.bytes_in;
     const std::size_t first = received[target].size();
-    const CommandResult result = run_command([&](CommandCallback done) { sessions[target]->refresh_health(std::move(done)); });
+    const CommandResult result =
+        run_command([&](CommandCallback done) { sessions[target]->refresh_health(std::move(done)); });
     EXPECT_TRUE(result.ok) << result.message;
     EXPECT_TRUE(laps_beyond(target, received[target].size() + 2));  // scanning again
     received[target].interruptions.push_back({first, received[target].size()});
     for (int i = 0; i < 3; ++i) {
       const std::uint64_t now = sims[i]->counters().server.bytes_in;
-      if (i == target) EXPECT_GT(now, heard[i]) << "the command never reached source " << i;
-      else EXPECT_EQ(now, heard[i]) << "source " << target << "'s command reached source " << i;
+      if (i == target)
+        EXPECT_GT(now, heard[i]) << "the command never reached source " << i;
+      else
+        EXPECT_EQ(now, heard[i]) << "source " << target << "'s command reached source " << i;
     }
   }
 

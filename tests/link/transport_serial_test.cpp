@@ -119,8 +119,7 @@ TEST(SerialLink, CarriesEveryByteValueBothWays) {
   // All 256 values: raw mode must not translate CR/LF, eat ^C/^S or echo anything.
   std::vector<std::uint8_t> device_bytes(256);
   for (std::size_t i = 0; i < device_bytes.size(); ++i) device_bytes[i] = static_cast<std::uint8_t>(i);
-  ASSERT_EQ(::write(pty.master(), device_bytes.data(), device_bytes.size()),
-            static_cast<ssize_t>(device_bytes.size()));
+  ASSERT_EQ(::write(pty.master(), device_bytes.data(), device_bytes.size()), static_cast<ssize_t>(device_bytes.size()));
 
   const auto received = test::read_from_link(io, *link, device_bytes.size(), 64, kHangGuard);
   EXPECT_FALSE(received.end) << received.end.message();
@@ -227,7 +226,8 @@ TEST(SerialLink, RegularFileIsNotASerialPort) {
 
 TEST(SerialLink, OpenErrorSentencesSayWhatToDo) {
   EXPECT_NE(serial_open_error("/dev/ttyUSB0", EACCES).find("dialout"), std::string::npos);
-  EXPECT_NE(serial_open_error("/dev/ttyUSB0", EACCES).find("/usr/lib/udev/rules.d/70-ydlidar.rules"), std::string::npos);
+  EXPECT_NE(serial_open_error("/dev/ttyUSB0", EACCES).find("/usr/lib/udev/rules.d/70-ydlidar.rules"),
+            std::string::npos);
   EXPECT_EQ(serial_open_error("/tmp", EISDIR),
             "cannot open /tmp: it is a folder, not a serial port; give a device such as /dev/ttyUSB0 "
             "('ydscope-cli ports' lists them)");

@@ -91,7 +91,8 @@ class SilentListener {
   // the unanswered connect's sentence.
   bool fill_accept_queue(std::string& error) {
     for (int i = 0; i < 16; ++i) {
-      auto link = test::run_awaitable(io_, TcpLink::connect(io_, "127.0.0.1", port(), error, std::chrono::milliseconds(300)));
+      auto link =
+          test::run_awaitable(io_, TcpLink::connect(io_, "127.0.0.1", port(), error, std::chrono::milliseconds(300)));
       if (!link) return true;
       queued_.push_back(std::move(link));
     }
@@ -138,7 +139,8 @@ TEST(TcpLink, AConnectThatWaitsLeavesTheIoContextFreeForOtherWork) {
 TEST(TcpLink, UnknownHostIsOneSentence) {
   boost::asio::io_context io;
   std::string error;
-  EXPECT_FALSE(test::run_awaitable(io, TcpLink::connect(io, "no-such-host.invalid", 2000, error, std::chrono::milliseconds(2000))));
+  EXPECT_FALSE(test::run_awaitable(
+      io, TcpLink::connect(io, "no-such-host.invalid", 2000, error, std::chrono::milliseconds(2000))));
   EXPECT_NE(error.find("unknown host 'no-such-host.invalid'"), std::string::npos) << error;
 }
 

@@ -176,8 +176,7 @@ TEST_F(RecordingFileTest, CutInsideTheLastRecordKeepsEveryEarlierRecord) {
     if (reader->truncated()) {
       EXPECT_NE(reader->warning().find("at byte " + std::to_string(before_last)), std::string::npos)
           << reader->warning();
-      EXPECT_NE(reader->warning().find("the 5 records before it are intact"), std::string::npos)
-          << reader->warning();
+      EXPECT_NE(reader->warning().find("the 5 records before it are intact"), std::string::npos) << reader->warning();
     }
   }
 }
@@ -268,7 +267,8 @@ TEST_F(RecordingFileTest, OversizedReadIsSplitWithoutLosingBytes) {
   ASSERT_TRUE(reader) << error;
   Bytes joined;
   for (const auto& record : read_all(*reader))
-    if (record.type == RecordType::DeviceToHost) joined.insert(joined.end(), record.payload.begin(), record.payload.end());
+    if (record.type == RecordType::DeviceToHost)
+      joined.insert(joined.end(), record.payload.begin(), record.payload.end());
   EXPECT_EQ(joined, big);
 }
 

@@ -35,11 +35,11 @@ RecordingMetadata source(const char* name, const char* model, const char* port, 
 
 TEST_F(RecordingSourcesTest, ThreeSourcesRoundTripWithTheirIdsAndMetadata) {
   std::string error;
-  auto writer = RecordingWriter::create_sources(path("three.ydrec"),
-                                        {source("left", "G1", "/dev/pts/1", {0.1, 0.2, 90, false}),
-                                         source("mid", "G6", "/dev/pts/2", {0, 0, 0, false}),
-                                         source("right", "TG30", "tcp://h:1", {-0.1, 0.2, -90, true})},
-                                        kStart, error);
+  auto writer = RecordingWriter::create_sources(
+      path("three.ydrec"),
+      {source("left", "G1", "/dev/pts/1", {0.1, 0.2, 90, false}), source("mid", "G6", "/dev/pts/2", {0, 0, 0, false}),
+       source("right", "TG30", "tcp://h:1", {-0.1, 0.2, -90, true})},
+      kStart, error);
   ASSERT_TRUE(writer) << error;
   ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{1, 1}, kStart + 10, 0));
   ASSERT_TRUE(writer->append(Direction::HostToDevice, Bytes{0xA5, 0x60}, kStart + 20, 2));
@@ -151,8 +151,9 @@ TEST_F(RecordingSourcesTest, ASourceIdBeyondTheLimitIsCorruptionInOneSentence) {
   while (reader->next(record)) ++records;
   EXPECT_EQ(records, 2);
   ASSERT_TRUE(reader->corrupt());
-  EXPECT_EQ(reader->error(), path("bad.ydrec") + " is corrupt at byte 58 (source 64; at most 64 sources); the 2 records "
-                                                  "before it are intact");
+  EXPECT_EQ(reader->error(), path("bad.ydrec") +
+                                 " is corrupt at byte 58 (source 64; at most 64 sources); the 2 records "
+                                 "before it are intact");
 }
 
 TEST_F(RecordingSourcesTest, ADamagedPoseIsAWarningAndTheRestOfTheMetadataStays) {

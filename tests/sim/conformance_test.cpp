@@ -24,8 +24,9 @@ std::vector<std::uint8_t> single(std::uint8_t length, std::uint8_t type, std::ve
 }
 std::vector<std::uint8_t> one_byte(std::uint8_t value) { return single(0x01, 0x04, {value}); }
 std::vector<std::uint8_t> scan_hz(std::uint32_t centihz) {
-  return single(0x04, 0x04, {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
-                             static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
+  return single(0x04, 0x04,
+                {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
+                 static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
 }
 const std::vector<std::uint8_t> kNoReply;
 const std::vector<std::uint8_t> kScanHeader{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81};
@@ -69,8 +70,8 @@ TEST_P(Conformance, DeviceInfoCarriesModelFirmwareHardwareSerial) {
   EXPECT_EQ(head, single(0x14, 0x04, {profile().model_code, 2, 5, 3}));
   for (std::size_t i = 11; i < reply.size(); ++i) EXPECT_LT(reply[i], 10) << "serial digit " << i - 11;
   // The model codes seen in the field (DESIGN.md): G1 19, G6 13, TG15/30/50 100/101/102.
-  const std::map<Model, int> codes{{Model::G1, 19}, {Model::G6, 13}, {Model::TG15, 100}, {Model::TG30, 101},
-                                   {Model::TG50, 102}};
+  const std::map<Model, int> codes{
+      {Model::G1, 19}, {Model::G6, 13}, {Model::TG15, 100}, {Model::TG30, 101}, {Model::TG50, 102}};
   EXPECT_EQ(reply[7], codes.at(GetParam()));
 }
 
@@ -193,7 +194,7 @@ TEST_P(Conformance, RestartAnswersNothingAndRestoresPowerOnState) {
 TEST_P(Conformance, UnknownCodesAndStrayBytesGetNoReply) {
   VirtualLidar lidar(config());
   EXPECT_EQ(exchange(lidar, {0x00, 0x12, 0xA5, 0x33, 0xA5, 0xA5, 0x90}, now).size(), 27u);  // only A5 90 answers
-  EXPECT_EQ(lidar.counters().unsupported, 1u);  // A5 33
+  EXPECT_EQ(lidar.counters().unsupported, 1u);                                              // A5 33
   EXPECT_EQ(lidar.counters().stray_bytes, 3u);  // 00, 12, and the A5 without a code
 }
 

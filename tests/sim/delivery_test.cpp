@@ -45,8 +45,8 @@ struct Write {
 };
 
 struct Delivered {
-  std::vector<std::uint8_t> line;   // what the device's line carried, in order
-  std::vector<Write> writes;        // what the bridge handed the host
+  std::vector<std::uint8_t> line;  // what the device's line carried, in order
+  std::vector<Write> writes;       // what the bridge handed the host
 };
 
 // The virtual lidar scanning for `duration`, its line drained every `step`, through the shaper.
@@ -130,8 +130,8 @@ TEST_P(DeliverySameLaps, EveryDeliveryGivesTheSameBytesAndTheSameLaps) {
   const Decoded reference = decode(model, whole.writes);
   ASSERT_GE(reference.laps.size(), 10u);
   EXPECT_EQ(reference.counters.checksum_errors, 0u);
-  for (const std::string text : {"burst:64:1000", "burst:62:16000", "burst:32:250", "random:17", "random:1",
-                                 "random:300"}) {
+  for (const std::string text :
+       {"burst:64:1000", "burst:62:16000", "burst:32:250", "random:17", "random:1", "random:300"}) {
     const Delivered d = deliver(model, *parse_delivery(text), duration);
     EXPECT_EQ(d.line, whole.line) << text << ": the device sent the same";
     EXPECT_EQ(joined(d.writes), d.line) << text << ": nothing lost, added or reordered";

@@ -55,8 +55,8 @@ class HostPort {
 
   bool send(std::vector<std::uint8_t> bytes) {
     // MSG_NOSIGNAL: a server that turned us away must fail the send, not kill the test with SIGPIPE.
-    const ssize_t n = socket_ ? ::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL)
-                              : ::write(fd_, bytes.data(), bytes.size());
+    const ssize_t n =
+        socket_ ? ::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL) : ::write(fd_, bytes.data(), bytes.size());
     return n == static_cast<ssize_t>(bytes.size());
   }
 

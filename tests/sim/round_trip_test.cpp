@@ -71,7 +71,8 @@ void expect_laps_match_truth(const ScanRun& run) {
     for (std::size_t i = 0; i < expected.size(); ++i) {
       // Angles: both sides interpolate the same 1/64-degree FSA/LSA; only the correction's
       // float rounding differs. Ranges: the same raw value times the same scale.
-      ASSERT_LE(angle_gap(lap.points[i].angle_deg, expected[i].angle_deg), 0.5 / 64) << "lap " << lap.index << " point " << i;
+      ASSERT_LE(angle_gap(lap.points[i].angle_deg, expected[i].angle_deg), 0.5 / 64)
+          << "lap " << lap.index << " point " << i;
       ASSERT_NEAR(lap.points[i].range_mm, expected[i].range_mm, 1e-3) << "lap " << lap.index << " point " << i;
       ASSERT_EQ(lap.points[i].flag, expected[i].flag) << "lap " << lap.index << " point " << i;
     }
@@ -136,8 +137,8 @@ TEST_P(RoundTrip, LapsComeAtTheSetScanFrequencyWithinTheLineRate) {
   const ScanRun run = scan(c, 3'000 * kMs);
   const ModelProfile& profile = profile_for(c.model);
   ASSERT_GE(run.laps.size(), 10u);
-  const double period_ns =
-      static_cast<double>(run.laps.back().last_rx_ns - run.laps.front().last_rx_ns) / static_cast<double>(run.laps.size() - 1);
+  const double period_ns = static_cast<double>(run.laps.back().last_rx_ns - run.laps.front().last_rx_ns) /
+                           static_cast<double>(run.laps.size() - 1);
   EXPECT_NEAR(1e9 / period_ns, profile.default_scan_hz, 0.1);
   EXPECT_LE(static_cast<double>(run.bytes), 3.0 * profile.default_baud / 10.0);
   const double per_lap = static_cast<double>(run.laps[3].points.size());
@@ -145,7 +146,8 @@ TEST_P(RoundTrip, LapsComeAtTheSetScanFrequencyWithinTheLineRate) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ModelsAndScenes, RoundTrip,
-                         ::testing::Combine(::testing::Values(Model::G1, Model::G6, Model::TG15, Model::TG30, Model::TG50),
+                         ::testing::Combine(::testing::Values(Model::G1, Model::G6, Model::TG15, Model::TG30,
+                                                              Model::TG50),
                                             ::testing::Values("room", "demo", "booth")),
                          [](const auto& param) {
                            return std::string(profile_for(std::get<0>(param.param)).name) + "_" +

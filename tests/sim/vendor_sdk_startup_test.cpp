@@ -37,8 +37,9 @@ Bytes single(std::uint8_t length, std::uint8_t type, const Bytes& payload) {
   return out;
 }
 Bytes scan_hz(std::uint32_t centihz) {
-  return single(0x04, 0x04, {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
-                             static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
+  return single(0x04, 0x04,
+                {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
+                 static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
 }
 const Bytes kNoReply;
 const Bytes kHealthGood = single(0x03, 0x06, {0x00, 0x00, 0x00});
@@ -144,8 +145,8 @@ TEST_P(VendorSdkStartup, HealthFaultsReachTheSdksHealthRequest) {
   c.faults.health_bits = 0x05;
   VirtualLidar lidar(c);
   // G1's A5 92 is its manual's (status bits); G6/TG answer A5 92 as their A5 91: status 2 + code.
-  const Bytes expected = GetParam() == Model::G1 ? single(0x03, 0x06, {0x05, 0x00, 0x00})
-                                                 : single(0x03, 0x06, {0x02, 0x05, 0x00});
+  const Bytes expected =
+      GetParam() == Model::G1 ? single(0x03, 0x06, {0x05, 0x00, 0x00}) : single(0x03, 0x06, {0x02, 0x05, 0x00});
   EXPECT_EQ(exchange(lidar, {0xA5, 0x92}, now), expected);
 }
 

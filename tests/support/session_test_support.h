@@ -46,8 +46,7 @@ class SimOnPty {
   std::unique_ptr<SimServer> server_;
 };
 
-inline SessionConfig config_for(const std::string& port, std::optional<Model> model = std::nullopt,
-                                bool scan = true) {
+inline SessionConfig config_for(const std::string& port, std::optional<Model> model = std::nullopt, bool scan = true) {
   SessionConfig config;
   config.address = port;
   config.model = model;

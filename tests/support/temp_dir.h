@@ -14,7 +14,8 @@ class TempDir {
   // `tag` names the directory (ydscope-TAG-XXXXXX), so one left by a crashed test says whose it is.
   explicit TempDir(const std::string& tag = "test") {
     std::string pattern = (std::filesystem::temp_directory_path() / ("ydscope-" + tag + "-XXXXXX")).string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw std::filesystem::filesystem_error("mkdtemp", pattern, std::error_code(errno, std::generic_category()));
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw std::filesystem::filesystem_error("mkdtemp", pattern, std::error_code(errno, std::generic_category()));
     path_ = pattern;
   }
   ~TempDir() {
