@@ -8,6 +8,7 @@
 
 #include "ui/view/colour_map.h"
 #include "ui/view/point_cloud.h"
+#include "ui/view/source_set.h"
 
 namespace ydscope::ui {
 
@@ -30,6 +31,8 @@ struct ViewSettings {
   bool smooth = true;
   std::string last_replay_file;
   std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
+  // Sources by name: a source of a remembered name gets its pose and colour back.
+  std::vector<SourceLook> sources;
 
   friend bool operator==(const ViewSettings&, const ViewSettings&) = default;
 };
