@@ -137,6 +137,9 @@ TEST(SourceSet, LegendSaysScanningOrHowLongNothingCameAndWhy) {
   input.seconds_since_lap = 5.2;
   EXPECT_EQ(source_legend_line("G6", describe_view_state(input), input.seconds_since_lap),
             "G6: no data 5 s, reconnecting");
+  input.seconds_since_lap = 0.3;  // just gone: no age yet
+  EXPECT_EQ(source_legend_line("G6", describe_view_state(input), input.seconds_since_lap), "G6: no data, reconnecting");
+  input.seconds_since_lap = 5.2;
   input.state = LinkState::Scanning;  // scanning, says the link, but nothing for a while
   EXPECT_EQ(source_legend_line("G6", describe_view_state(input), input.seconds_since_lap), "G6: no data 5 s");
   input.state = LinkState::Connecting;

@@ -48,7 +48,8 @@ std::string source_legend_line(std::string_view name, const ViewState& state, st
   if (state.live) return line + state.status;
   // How long nothing came says more than "no data" alone; the link's own state follows.
   if (seconds_since_lap) {
-    line += "no data " + format_age(*seconds_since_lap);
+    // Under a second "0 s" reads as a glitch; the age counts up from 1 s.
+    line += *seconds_since_lap >= 1.0 ? "no data " + format_age(*seconds_since_lap) : std::string("no data");
     if (state.status != "no data") line += ", " + state.status;
     return line;
   }
