@@ -13,11 +13,11 @@ std::string App::watch_sector(const std::string& spec) {
   const std::optional<Sector> sector = parse_sector_spec(spec, error);
   if (!sector) return error;
   const std::string canonical = sector_spec(*sector);
-  for (const ui::SectorWatch& w : model_.sectors)
+  for (const ui::SectorWatch& w : model().sectors)
     if (w.spec() == canonical) return "sector " + canonical + " is watched already";
-  if (model_.sectors.size() >= ui::kMaxWatchedSectors)
+  if (model().sectors.size() >= ui::kMaxWatchedSectors)
     return "at most " + std::to_string(ui::kMaxWatchedSectors) + " sectors; remove one first";
-  model_.sectors.emplace_back(*sector);
+  model().sectors.emplace_back(*sector);
   return {};
 }
 
@@ -31,14 +31,14 @@ void App::restore_sectors() {
 }
 
 void App::unwatch_sector(std::size_t index) {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   if (index >= m.sectors.size()) return;
   m.sectors.erase(m.sectors.begin() + static_cast<std::ptrdiff_t>(index));
   sync_sectors();
 }
 
 void App::sync_sectors() {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   settings_.sectors.clear();
   std::vector<ui::SectorShape> shapes;
   for (std::size_t i = 0; i < m.sectors.size(); ++i) {

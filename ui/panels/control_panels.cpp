@@ -116,6 +116,10 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::RadioButton("motion", &mode, 3);
   help_marker("Returns closer than the room learned over the last 5 s (people walking past) hot, with fading trails; "
               "the room calm. The booth view's default.");
+  if (m.several_sources() || v.colours.mode == ColourMode::Source) {
+    ImGui::SameLine();
+    ImGui::RadioButton("source", &mode, 4);
+  }
   v.colours.mode = static_cast<ColourMode>(mode);
   if (v.colours.mode != ColourMode::Flag && v.colours.mode != ColourMode::Motion) {
     int palette = static_cast<int>(v.colours.palette);

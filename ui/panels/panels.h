@@ -15,6 +15,12 @@ void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
 void draw_plots_panel(const UiModel& model);
 void draw_sectors_panel(UiModel& model);
+// Several sources: the selector over the tabs (which source the panels show and command), and the
+// Sources tab (the list, hide/pause, pose, add and remove).
+void draw_source_selector(UiModel& model);
+void draw_sources_panel(UiModel& model);
+// Several sources: a line per source over the view, its colour and its state in words.
+void draw_source_legend(const UiModel& model, float view_left, float view_width);
 
 // The whole left sidebar (full window height). Returns its width in pixels so the polar view can
 // use the rest of the window.
@@ -43,5 +49,8 @@ void link_state_text(LinkState state, const char* message);
 // outcome for a few seconds).
 CommandCallback track_command(UiModel& model, CommandControl control);
 void command_feedback_line(UiModel& model, CommandControl control);
+// A combo of the models, 1-based in all_profiles(); `none` names choice 0 ("detect"), or null
+// when a model must be chosen. True when the choice changed.
+bool model_combo(const char* label, int& choice, const char* none);
 
 }  // namespace ydscope::ui

@@ -70,6 +70,7 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
     // Three tabs, so each one's panels fit an 800 px tall window without scrolling: the lidar and
     // its settings, how it is drawn, and the numbers.
+    draw_source_selector(m);
     if (ImGui::BeginTabBar("sidebar")) {
       const int wanted = m.show_sidebar_tab;
       const auto tab = [&m](const char* name, SidebarTab which) {
@@ -91,6 +92,10 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
       if (tab("Statistics", SidebarTab::Statistics)) {
         draw_stats_panel(m);
         draw_plots_panel(m);
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Sources")) {
+        draw_sources_panel(m);
         ImGui::EndTabItem();
       }
       if (wanted == m.show_sidebar_tab) m.show_sidebar_tab = -1;

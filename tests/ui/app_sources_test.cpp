@@ -1,0 +1,142 @@
+// Several lidars in one view, under an Xvfb of the test's own: each source's colour must appear
+// where its pose puts it (not just "something was drawn"), and when one of them dies only its own
+// cloud dims and its legend line turns amber while the others keep drawing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app_test_support.h"
+#include "private_display.h"
+#include "ui/view/source_set.h"
+
+namespace ydscope::test {
+namespace {
+
+#ifdef YDSCOPE_APP_PATH
+
+constexpr int kViewLeft = 448;  // the view is right of the panels (~430 px of 1280)
+constexpr double kPi = 3.14159265358979;
+
+double hue_deg(const unsigned char* p) {
+  const double r = p[0], g = p[1], b = p[2];
+  const double hi = std::max({r, g, b}), lo = std::min({r, g, b});
+  if (hi - lo < 1.0) return 0.0;
+  double h = hi == r ? (g - b) / (hi - lo) : hi == g ? 2.0 + (b - r) / (hi - lo) : 4.0 + (r - g) / (hi - lo);
+  h *= 60.0;
+  return h < 0 ? h + 360.0 : h;
+}
+
+// A bright scan point of this source's colour (the hue survives the lap fading, brightness not).
+bool is_source_point(const unsigned char* p, ui::Rgba8 colour) {
+  if (!is_point_pixel(p)) return false;
+  const unsigned char c[3] = {colour.r, colour.g, colour.b};
+  const double d = std::fabs(hue_deg(p) - hue_deg(c));
+  return std::min(d, 360.0 - d) < 20.0;
+}
+
+struct SourcePixels {
+  int total = 0;
+  int towards_pose = 0;  // within 60 degrees of the bearing of its pose from the view's centre
+};
+
+SourcePixels source_pixels(const Image& image, ui::Rgba8 colour, const Pose& pose) {
+  const int cx = (kViewLeft + image.width) / 2, cy = image.height / 2;
+  const double bearing = std::atan2(pose.x_m, pose.y_m);  // clockwise from straight up, as the view draws
+  SourcePixels counted;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = kViewLeft; x < image.width; ++x) {
+      if (!is_source_point(image.at(x, y), colour)) continue;
+      ++counted.total;
+      const double off = std::remainder(std::atan2(x - cx, cy - y) - bearing, 2.0 * kPi);
+      counted.towards_pose += std::fabs(off) < kPi / 3.0;
+    }
+  }
+  return counted;
+}
+
+TEST(AppSources, ThreeVirtualLidarsDrawInTheirColoursWhereTheirPosesPutThem) {
+  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
+  PrivateDisplay display;
+  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
+  const std::filesystem::path dir = fresh_temp_dir("ydscope-three-sources");
+  const std::string png = (dir / "three.png").string();
+  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G1,G6,TG30", "--screenshot", png, "--frames", "120"});
+  int status = 0;
+  ASSERT_EQ(waitpid(app, &status, 0), app);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the app did not exit 0";
+  const Image image = load_png(png);
+  ASSERT_TRUE(image) << png;
+  // Started together, the three sit round the origin, each in the next colour of the palette.
+  const std::vector<Pose> poses = ui::spread_poses(3);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const SourcePixels pixels = source_pixels(image, ui::source_colour(i), poses[i]);
+    EXPECT_GT(pixels.total, 1000) << "source " << i << "'s colour is hardly on the view";
+    EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
+        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total << " of its points lie towards its pose";
+  }
+  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
+}
+
+// Amber legend words (255, 190, 80): the legend line of a source whose data stopped; the orange
+// of the first source (255, 150, 40) is not amber.
+bool is_amber(const unsigned char* p) { return p[0] > 220 && p[1] > 170 && p[1] < 210 && p[2] > 40 && p[2] < 120; }
+
+TEST(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
+  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
+  PrivateDisplay display;
+  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
+  const std::filesystem::path dir = fresh_temp_dir("ydscope-two-sources");
+  const std::string left_link = (dir / "left").string(), right_link = (dir / "right").string();
+  const auto sim_at = [&](const std::string& link) {
+    return spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty", link});
+  };
+  const pid_t left_sim = sim_at(left_link);
+  const pid_t right_sim = sim_at(right_link);
+  ASSERT_TRUE(wait_for_path(left_link, std::chrono::seconds(15)) && wait_for_path(right_link, std::chrono::seconds(15)));
+  Pose left, right;
+  left.y_m = 2.0;    // above the centre
+  right.y_m = -2.0;  // below it
+  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left),
+                                   "--port", right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"});
+  std::set<std::string> seen;
+  const auto count = [&](const Image& image) {
+    return std::pair{source_pixels(image, ui::source_colour(0), left), source_pixels(image, ui::source_colour(1), right)};
+  };
+  const auto legend_amber = [](const Image& image) { return count_pixels(image, {kViewLeft - 10, 0, kViewLeft + 400, 120}, is_amber); };
+
+  std::pair<SourcePixels, SourcePixels> before;
+  int amber_before = 0;
+  for (const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30); std::chrono::steady_clock::now() < deadline;) {
+    const Image image = screenshot_of(app, dir, seen);
+    if (!image) continue;
+    before = count(image);
+    amber_before = legend_amber(image);
+    if (before.first.total > 1000 && before.second.total > 1000) break;
+  }
+  ASSERT_GT(before.first.total, 1000) << "the left lidar's cloud never showed";
+  ASSERT_GT(before.second.total, 1000) << "the right lidar's cloud never showed";
+  EXPECT_LT(amber_before, 30) << "amber legend words while both scan";
+
+  stop_process(right_sim, SIGKILL);  // a crash: the pty's other end vanishes mid-stream
+  std::pair<SourcePixels, SourcePixels> after;
+  int amber_after = 0;
+  for (const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20); std::chrono::steady_clock::now() < deadline;) {
+    const Image image = screenshot_of(app, dir, seen);
+    if (!image) continue;
+    after = count(image);
+    amber_after = legend_amber(image);
+    if (after.second.total < before.second.total / 10 && amber_after > 100) break;
+  }
+  EXPECT_LT(after.second.total, before.second.total / 10) << "the dead lidar's cloud stays bright";
+  EXPECT_GT(amber_after, 100) << "its legend line did not turn amber";
+  EXPECT_GT(after.first.total, before.first.total / 2) << "the live lidar's cloud dimmed too";
+
+  EXPECT_EQ(stop_process(app, SIGTERM), 0);
+  stop_process(left_sim, SIGTERM);
+  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
+}
+
+#endif
+
+}  // namespace
+}  // namespace ydscope::test
