@@ -116,6 +116,11 @@ TEST(SourceSet, TheFirstColoursAreDistinct) {
 
 TEST(SourceSet, SpreadPosesKeepLidarsApart) {
   EXPECT_EQ(spread_poses(1), std::vector<Pose>(1));  // one lidar stays at the origin
+  for (const Pose& pose : spread_poses(5)) {
+    EXPECT_GT(pose.yaw_deg, -180.0);
+    EXPECT_LE(pose.yaw_deg, 180.0);
+    EXPECT_FALSE(std::signbit(pose.yaw_deg) && pose.yaw_deg == 0.0) << "-0 shows as -0.0 in the panel";
+  }
   for (std::size_t count : {2u, 3u, 4u}) {
     const auto poses = spread_poses(count);
     ASSERT_EQ(poses.size(), count);
@@ -166,6 +171,10 @@ TEST(SourceSet, RememberedSourcesRoundTripAndABadLineIsSkippedWithANote) {
   std::vector<std::string> notes;
   EXPECT_EQ(parse_settings(format_settings(settings), &notes).sources, settings.sources);
   EXPECT_TRUE(notes.empty());
+  // A pose dragged by mouse is kept to the millimetre and the hundredth of a degree.
+  look.pose.x_m = 3.3149449005126956;
+  look.pose.yaw_deg = -118.6637740153493;
+  EXPECT_EQ(format_source_line(look), "front_left; 3.315,-1.5,-118.66,flip; #FF9628");
 
   const std::string text = "source = G6; 1,2,30; #3CD2FF\n"
                            "source = bad pose; 1,2; #FFFFFF\n"

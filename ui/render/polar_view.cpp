@@ -64,6 +64,7 @@ void PolarView::handle_input(ViewSettings& settings, bool pointer_in_window, dou
     // The selected source's cloud follows the pointer (Alt) or turns with it (Ctrl).
     const Vec2 before = view_.screen_to_world(mouse - Vec2{io.MouseDelta.x, io.MouseDelta.y});
     pose_drag_ = PoseDrag{pose_drag_ ? pose_drag_->from_world : before, *cursor_world_, io.KeyCtrl};
+    settings.auto_range = false;  // a view that refits mid-drag would pull the cloud from under the pointer
   } else if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     reset(settings);
   } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {

@@ -37,7 +37,8 @@ std::vector<Pose> spread_poses(std::size_t count) {
       const double rad = turn * 3.14159265358979 / 180.0;
       poses[i].x_m = std::round(kRadiusM * std::sin(rad) * 100.0) / 100.0;
       poses[i].y_m = std::round(kRadiusM * std::cos(rad) * 100.0) / 100.0;
-      poses[i].yaw_deg = -turn;  // each faces outwards, so the clouds differ in shape too
+      // Each faces its own way, so the clouds differ in shape too; within (-180, 180], never -0.
+      poses[i].yaw_deg = i == 0 ? 0.0 : (turn > 180.0 ? 360.0 - turn : -turn);
     }
   }
   return poses;
@@ -67,7 +68,12 @@ std::string unique_source_name(std::string_view base, const std::vector<std::str
 std::string format_source_line(const SourceLook& look) {
   char colour[8];
   std::snprintf(colour, sizeof colour, "#%02X%02X%02X", look.colour.r, look.colour.g, look.colour.b);
-  return look.name + "; " + format_pose(look.pose) + "; " + colour;
+  // A pose set by mouse carries float noise: a millimetre and a hundredth of a degree are plenty.
+  Pose rounded = look.pose;
+  rounded.x_m = std::round(rounded.x_m * 1000.0) / 1000.0;
+  rounded.y_m = std::round(rounded.y_m * 1000.0) / 1000.0;
+  rounded.yaw_deg = std::round(rounded.yaw_deg * 100.0) / 100.0 + 0.0;  // + 0.0: no "-0"
+  return look.name + "; " + format_pose(rounded) + "; " + colour;
 }
 
 std::optional<SourceLook> parse_source_line(std::string_view text, std::string& error) {
