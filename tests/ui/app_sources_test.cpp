@@ -99,37 +99,26 @@ TEST(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left),
                                    "--port", right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"});
   std::set<std::string> seen;
-  const auto count = [&](const Image& image) {
-    return std::pair{source_pixels(image, ui::source_colour(0), left), source_pixels(image, ui::source_colour(1), right)};
+  struct Reading {
+    SourcePixels left, right;
+    int amber = 0;  // legend words of a source whose data stopped
   };
-  const auto legend_amber = [](const Image& image) { return count_pixels(image, {kViewLeft - 10, 0, kViewLeft + 400, 120}, is_amber); };
-
-  std::pair<SourcePixels, SourcePixels> before;
-  int amber_before = 0;
-  for (const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30); std::chrono::steady_clock::now() < deadline;) {
-    const Image image = screenshot_of(app, dir, seen);
-    if (!image) continue;
-    before = count(image);
-    amber_before = legend_amber(image);
-    if (before.first.total > 1000 && before.second.total > 1000) break;
-  }
-  ASSERT_GT(before.first.total, 1000) << "the left lidar's cloud never showed";
-  ASSERT_GT(before.second.total, 1000) << "the right lidar's cloud never showed";
-  EXPECT_LT(amber_before, 30) << "amber legend words while both scan";
+  const auto read = [&](const Image& image) {
+    return Reading{source_pixels(image, ui::source_colour(0), left), source_pixels(image, ui::source_colour(1), right),
+                   count_pixels(image, {kViewLeft - 10, 0, kViewLeft + 400, 120}, is_amber)};
+  };
+  const Reading before = screenshot_until(
+      app, dir, seen, read, [](const Reading& r) { return r.left.total > 1000 && r.right.total > 1000; }, std::chrono::seconds(30));
+  ASSERT_GT(before.left.total, 1000) << "the left lidar's cloud never showed";
+  ASSERT_GT(before.right.total, 1000) << "the right lidar's cloud never showed";
+  EXPECT_LT(before.amber, 30) << "amber legend words while both scan";
 
   stop_process(right_sim, SIGKILL);  // a crash: the pty's other end vanishes mid-stream
-  std::pair<SourcePixels, SourcePixels> after;
-  int amber_after = 0;
-  for (const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20); std::chrono::steady_clock::now() < deadline;) {
-    const Image image = screenshot_of(app, dir, seen);
-    if (!image) continue;
-    after = count(image);
-    amber_after = legend_amber(image);
-    if (after.second.total < before.second.total / 10 && amber_after > 100) break;
-  }
-  EXPECT_LT(after.second.total, before.second.total / 10) << "the dead lidar's cloud stays bright";
-  EXPECT_GT(amber_after, 100) << "its legend line did not turn amber";
-  EXPECT_GT(after.first.total, before.first.total / 2) << "the live lidar's cloud dimmed too";
+  const auto right_dimmed = [&](const Reading& r) { return r.right.total < before.right.total / 10 && r.amber > 100; };
+  const Reading after = screenshot_until(app, dir, seen, read, right_dimmed, std::chrono::seconds(20));
+  EXPECT_LT(after.right.total, before.right.total / 10) << "the dead lidar's cloud stays bright";
+  EXPECT_GT(after.amber, 100) << "its legend line did not turn amber";
+  EXPECT_GT(after.left.total, before.left.total / 2) << "the live lidar's cloud dimmed too";
 
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
   stop_process(left_sim, SIGTERM);
