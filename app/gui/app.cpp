@@ -57,6 +57,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   } else {
     ImGui::GetIO().IniFilename = nullptr;  // screenshot runs must not depend on a user's layout
   }
+  if (options_.split) settings_.split_view = true;
   if (options_.fullscreen) {
     settings_.show_panels = false;
     toggle_fullscreen();
@@ -276,42 +277,11 @@ void App::frame() {
   fill_source_rows();
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
-  view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
-  view_->set_status_band(ui::status_band_height());
-  view_->enable_pose_drag(sources_.size() > 1);
-  view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
-                       seconds_since_start(last_frame_));
-  if (const auto drag = view_->take_pose_drag()) {  // Alt/Ctrl+drag: the selected source's pose
-    ui::SourceLook look = sel().look;
-    look.pose = ui::dragged_pose(look.pose, *drag);
-    look.paused = model().paused_view;
-    model().requests.push_back(ui::SetSourceLook{selected_, look});
-  }
-  if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
-    char spec[48];
-    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
-    model().requests.push_back(ui::WatchSector{spec});
-  }
-  // One lidar is drawn as always; several (or one in its source colour) go through the layers.
-  const bool several = sources_.size() > 1;
-  const bool layered = several || settings_.colours.mode == ui::ColourMode::Source;
-  const auto layers = layered ? source_layers() : std::span<const ui::SourceLayer>();
-  view_->set_source_marks(marks_);
-  if (layered) view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings_);
-  else view_->auto_range(history(), settings_);
   if (animating()) shown_phase_ = sel().lap_phase.at(seconds_since_start(last_frame_));
   else if (!settings_.smooth) shown_phase_ = 0.0f;
-  model().cloud = layered ? view_->update_cloud(layers, settings_, shown_phase_)
-                          : view_->update_cloud(history(), settings_, &sel().motion, shown_phase_);
-  model().laps_on_screen = history().size();
-  model().points_drawn_total = view_->vertex_count();
+  if (split_active()) lay_out_split_view(sidebar, view_w, static_cast<float>(win_h));
+  else lay_out_common_view(sidebar, view_w, static_cast<float>(win_h));
   ui::draw_view_header(model(), sidebar, view_w);
-
-  // The hover box reads one lidar's own frame, which several do not share.
-  static const ui::LapHistory no_laps;
-  view_->lay_out(several ? no_laps : history(), settings_);
-  if (several) ui::draw_source_legend(model(), sidebar, view_w);  // each source's state in its own line
-  else ui::draw_view_overlay(model(), sidebar, view_w, static_cast<float>(win_h));
   model().booth = fullscreen_;
   if (model().booth) {
     model().legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
@@ -325,7 +295,7 @@ void App::frame() {
 
 bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
   std::uint64_t signature = ui::draw_signature(*ImGui::GetDrawData());
-  for (const std::uint64_t part : {view_->gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
+  for (const std::uint64_t part : {gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
                                    static_cast<std::uint64_t>(settings_.show_grid),
                                    static_cast<std::uint64_t>(settings_.point_size_px * 1000.0f)})
     signature = ui::mix_signature(signature, part);
@@ -341,7 +311,11 @@ bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
   glViewport(0, 0, fb_w, fb_h);
   glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
   glClear(GL_COLOR_BUFFER_BIT);
-  view_->draw_gl(settings_, fb_scale, fb_h);
+  if (split_active()) {
+    for (const auto& tile : tiles_) tile->draw_gl(settings_, fb_scale, fb_h);
+  } else {
+    view_->draw_gl(settings_, fb_scale, fb_h);
+  }
   glViewport(0, 0, fb_w, fb_h);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   return true;

@@ -61,6 +61,9 @@ class App {
   // No lap will come until the user picks another source: it did not start, or it is a replay
   // that went round without one.
   bool no_laps_coming() const { return !model().start_error.empty() || model().view_state.give_up; }
+  // With several sources, a line per source (laps from the device, drawn, lost) and the frame
+  // work, for the end of a run; nothing with one.
+  std::vector<std::string> summary() const;
   // Saves a timestamped PNG after the next frame, as the S key does (SIGUSR1 asks for it).
   void request_screenshot() { model().requests.push_back(ui::SaveScreenshot{}); }
 
@@ -103,6 +106,13 @@ class App {
   void install_key_callback();
   void remove_key_callback();
   void handle_keys();
+  // The view of a frame (app_view.cpp): every source in one common view, or (app_split_view.cpp)
+  // two to four side by side when View > split is on and there are several.
+  void lay_out_common_view(float left, float width, float height);
+  bool split_active() const;
+  void lay_out_split_view(float left, float width, float height);
+  // Changes whenever the GL layer of the view (or of the split view's tiles) would draw otherwise.
+  std::uint64_t gl_generation() const;
   // The frame's requests from panels, keys and mouse, in order (app_requests.cpp).
   void carry_out_requests(int framebuffer_width, int framebuffer_height);
   // Renders the GL layer and ImGui's draw data unless the frame would repeat the last one.
@@ -171,6 +181,7 @@ class App {
   double pointer_moved_s_ = 0.0;                         // the booth view hides a resting pointer
   bool cursor_hidden_ = false;
   std::unique_ptr<ui::PolarView> view_;
+  std::vector<std::unique_ptr<ui::PolarView>> tiles_;  // the split view's, one per source shown
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::optional<std::chrono::steady_clock::time_point> last_present_;

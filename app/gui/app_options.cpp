@@ -61,7 +61,7 @@ std::vector<SourceChoice> several_sims(const std::string& models) {
 AppOptions parse_app_options(std::span<const std::string> raw) {
   const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed", "share-port",
                         "record", "name", "pose"},
-                       {"fullscreen", "once", "share"}, 0, source_repeatable_options());
+                       {"fullscreen", "once", "share", "split"}, 0, source_repeatable_options());
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
   if (int(port) + int(sim) + int(replay) > 1)
@@ -119,6 +119,9 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if ((args.has("name") || args.has("pose")) && !port)
     throw UsageError("--name and --pose go with --port, once per port; name and place virtual lidars in the Sources panel.");
   if (port) options.sources = several_ports(args);
+  options.split = args.has("split");
+  if (options.split && options.sources.empty())
+    throw UsageError("--split puts several sources side by side; give --sim with several models or --port more than once.");
   if (!options.sources.empty() && (options.share || !options.record.empty()))
     throw UsageError("--share and --record serve or record one source; with several, use ydscope-cli serve or record.");
   return options;

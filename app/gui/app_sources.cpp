@@ -142,6 +142,26 @@ void App::fill_source_rows() {
   model().selected_source = selected_;
 }
 
+std::vector<std::string> App::summary() const {
+  std::vector<std::string> lines;
+  if (sources_.size() < 2) return lines;  // one source's run says what it always said
+  for (const auto& slot : sources_) {
+    const SessionSnapshot s = slot->session.snapshot();
+    std::uint64_t lost = 0;  // laps one of the app's rings could not take
+    for (const LapConsumerStats& consumer : s.consumers) lost += consumer.dropped;
+    char line[256];
+    std::snprintf(line, sizeof line, "%s: %llu laps from the device, %llu drawn, %llu lost", slot->look.name.c_str(),
+                  static_cast<unsigned long long>(s.counters.laps), static_cast<unsigned long long>(slot->model.laps_shown),
+                  static_cast<unsigned long long>(lost));
+    lines.emplace_back(line);
+  }
+  char frames[128];
+  std::snprintf(frames, sizeof frames, "frame work %.1f ms (mean of the last 60 frames; the slowest %.1f ms)",
+                model().frame_ms.mean(), model().frame_ms.max());
+  lines.emplace_back(frames);
+  return lines;
+}
+
 std::span<const ui::SourceLayer> App::source_layers() {
   const bool several = sources_.size() > 1;
   layers_.clear();

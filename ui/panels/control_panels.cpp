@@ -148,6 +148,11 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::Checkbox("grid", &v.show_grid);
   ImGui::SameLine();
   ImGui::Checkbox("auto-range", &v.auto_range);
+  if (m.several_sources()) {
+    ImGui::SameLine();
+    ImGui::Checkbox("split", &v.split_view);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Up to four sources side by side, each around itself");
+  }
   if (ImGui::Button("Reset view")) m.requests.push_back(ResetView{});
   ImGui::SameLine();
   if (ImGui::Button(m.paused_view ? "Resume" : "Freeze")) m.paused_view = !m.paused_view;

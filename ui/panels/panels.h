@@ -21,6 +21,8 @@ void draw_source_selector(UiModel& model);
 void draw_sources_panel(UiModel& model);
 // Several sources: a line per source over the view, its colour and its state in words.
 void draw_source_legend(const UiModel& model, float view_left, float view_width);
+// One source's legend line at `top_left` (a tile of the split view); `selected` rings its swatch.
+void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected);
 
 // The whole left sidebar (full window height). Returns its width in pixels so the polar view can
 // use the rest of the window.
@@ -33,7 +35,7 @@ float status_band_height();
 // The booth view (full screen): model, state and rates in large type, and the colour legend.
 void draw_booth_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 // When model.view_state says the picture is not live: dim the view and say why in large type.
-void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height);
+void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height, float view_top = 0.0f);
 
 // Small helpers shared by the panels.
 // The colour of words of this severity over the view: green, blue, amber, red.

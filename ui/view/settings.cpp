@@ -106,6 +106,8 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.show_grid = *b;
     } else if (key == "smooth" && b) {
       s.smooth = *b;
+    } else if (key == "split_view" && b) {
+      s.split_view = *b;
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
     } else if (key == "source") {
@@ -149,6 +151,7 @@ std::string format_settings(const ViewSettings& s) {
       << "show_panels = " << yes(s.show_panels) << "\n"
       << "show_grid = " << yes(s.show_grid) << "\n"
       << "smooth = " << yes(s.smooth) << "\n"
+      << "split_view = " << yes(s.split_view) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
   for (const SourceLook& source : s.sources) out << "source = " << format_source_line(source) << "\n";
