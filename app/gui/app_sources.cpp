@@ -1,6 +1,7 @@
 // App, the source list: several lidars at once, each with its own session, panels and look, one
 // selected for the panels; started from the command line, added, removed and posed while running,
 // and drawn together in the common frame.
+#include <algorithm>
 #include <cstdio>
 
 #define GLFW_INCLUDE_NONE
@@ -12,10 +13,14 @@
 namespace ydscope::gui {
 
 SourceSlot& App::add_slot(ui::SourceLook look) {
-  std::vector<std::string> taken;
-  for (const auto& slot : sources_) taken.push_back(slot->look.name);
-  look.name = ui::unique_source_name(look.name, taken);
-  if (look.colour == ui::Rgba8{}) look.colour = ui::source_colour(sources_.size());
+  std::vector<std::string> names;
+  std::vector<ui::Rgba8> colours;
+  for (const auto& slot : sources_) {
+    names.push_back(slot->look.name);
+    colours.push_back(slot->look.colour);
+  }
+  look.name = ui::unique_source_name(look.name, names);
+  if (look.colour == ui::Rgba8{}) look.colour = ui::unused_source_colour(colours);
   auto slot = std::make_unique<SourceSlot>(std::move(look), [] { glfwPostEmptyEvent(); });
   slot->history.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
   sources_.push_back(std::move(slot));
@@ -26,7 +31,11 @@ void App::recall_look(ui::SourceLook& look, bool pose_given) const {
   for (const ui::SourceLook& remembered : settings_.sources) {
     if (remembered.name != look.name) continue;
     if (!pose_given) look.pose = remembered.pose;
-    look.colour = remembered.colour;
+    // Two sources never share a colour: a remembered one another source now has is left.
+    const bool colour_taken = std::any_of(sources_.begin(), sources_.end(), [&](const auto& slot) {
+      return slot->look.name != look.name && slot->look.colour == remembered.colour;
+    });
+    if (!colour_taken) look.colour = remembered.colour;
   }
 }
 
@@ -104,8 +113,10 @@ void App::change_sources(const ui::SetSourceLook& request) {
 void App::change_sources(const ui::AddSource& request) {
   ui::SourceLook look;
   look.name = request.name.empty() ? request.request.model.value_or("lidar") : request.name;
-  // Beside the others, not on top of them: one step further round the spread.
-  look.pose = ui::spread_poses(sources_.size() + 1).back();
+  // Beside the others, not on top of them.
+  std::vector<Pose> taken;
+  for (const auto& slot : sources_) taken.push_back(slot->look.pose);
+  look.pose = ui::free_spread_pose(taken);
   recall_look(look, false);
   add_slot(std::move(look));
   const std::size_t previous = selected_;

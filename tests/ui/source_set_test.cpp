@@ -114,6 +114,17 @@ TEST(SourceSet, TheFirstColoursAreDistinct) {
   EXPECT_EQ(source_colour(kDistinctSourceColours), source_colour(0));
 }
 
+TEST(SourceSet, AnAddedSourceTakesAFreeColourAndAFreePlace) {
+  // The second of three was removed: its colour and place are free again.
+  EXPECT_EQ(unused_source_colour({source_colour(0), source_colour(2)}), source_colour(1));
+  EXPECT_EQ(unused_source_colour({}), source_colour(0));
+  const std::vector<Pose> three = spread_poses(3);
+  const Pose added = free_spread_pose({three[0], three[2]});
+  EXPECT_NEAR(added.x_m, three[1].x_m, 1e-9);
+  EXPECT_NEAR(added.y_m, three[1].y_m, 1e-9);
+  for (const Pose& p : {three[0], three[2]}) EXPECT_GE(std::hypot(p.x_m - added.x_m, p.y_m - added.y_m), 1.0);
+}
+
 TEST(SourceSet, SpreadPosesKeepLidarsApart) {
   EXPECT_EQ(spread_poses(1), std::vector<Pose>(1));  // one lidar stays at the origin
   for (const Pose& pose : spread_poses(5)) {

@@ -23,6 +23,23 @@ Rgba8 source_colour(std::size_t index) {
   return kColours[index % kColours.size()];
 }
 
+Rgba8 unused_source_colour(const std::vector<Rgba8>& taken) {
+  for (std::size_t i = 0; i < kDistinctSourceColours; ++i)
+    if (std::find(taken.begin(), taken.end(), source_colour(i)) == taken.end()) return source_colour(i);
+  return source_colour(taken.size());
+}
+
+Pose free_spread_pose(const std::vector<Pose>& taken) {
+  const std::vector<Pose> spread = spread_poses(taken.size() + 1);
+  for (const Pose& candidate : spread) {
+    const bool free = std::none_of(taken.begin(), taken.end(), [&](const Pose& p) {
+      return std::hypot(p.x_m - candidate.x_m, p.y_m - candidate.y_m) < 1.0;
+    });
+    if (free) return candidate;
+  }
+  return spread.back();
+}
+
 std::vector<Pose> spread_poses(std::size_t count) {
   std::vector<Pose> poses(count);
   if (count == 2) {

@@ -27,10 +27,18 @@ struct SourceLook {
 Rgba8 source_colour(std::size_t index);
 inline constexpr std::size_t kDistinctSourceColours = 8;
 
+// The first colour of the palette none of `taken` has (a source added after one was removed gets
+// the freed colour, never a second source's); round again when all are taken.
+Rgba8 unused_source_colour(const std::vector<Rgba8>& taken);
+
 // Where `count` lidars started together sit by default, so their clouds are told apart at a
 // glance: one at the origin, two 4 m apart on a line, three or more on a circle of 3 m radius,
 // each turned to face outwards a little differently.
 std::vector<Pose> spread_poses(std::size_t count);
+
+// Where a source added beside `taken` sits: the first of spread_poses(taken + 1) at least a metre
+// from every taken position (a removed source leaves its place free), else the last.
+Pose free_spread_pose(const std::vector<Pose>& taken);
 
 // The legend's line for a source: "G6: scanning", "G6: no data 5 s, reconnecting",
 // "G1: connecting". `seconds_since_lap` is empty when none has come yet.
