@@ -34,21 +34,27 @@ void pose_fields(UiModel& m, std::size_t index, const SourceLook& look) {
 }
 
 void add_source_controls(UiModel& m) {
+  static constexpr const char* kScenes[] = {"room", "demo", "booth"};
   section("add a source");
   ImGui::RadioButton("virtual lidar", &m.add_source_kind, 0);
   ImGui::SameLine();
   ImGui::RadioButton("port", &m.add_source_kind, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("recording", &m.add_source_kind, 2);
   AddSource add;
   if (m.add_source_kind == 0) {
     model_combo("model##add", m.add_source_model_choice, nullptr);
+    ImGui::Combo("scene##add", &m.add_source_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
     add.request.kind = ConnectRequest::Kind::Sim;
     add.request.model = std::string(all_profiles()[static_cast<std::size_t>(m.add_source_model_choice - 1)].name);
+    add.request.scene = kScenes[m.add_source_scene_choice];
   } else {
-    ImGui::InputText("address##add", m.add_source_port, sizeof m.add_source_port);
-    add.request.kind = ConnectRequest::Kind::Port;
-    add.request.address = m.add_source_port;
+    // A port path or tcp://host:port, or a .ydrec to play round and round.
+    ImGui::InputText(m.add_source_kind == 1 ? "address##add" : "file##add", m.add_source_address, sizeof m.add_source_address);
+    add.request.kind = m.add_source_kind == 1 ? ConnectRequest::Kind::Port : ConnectRequest::Kind::Replay;
+    add.request.address = m.add_source_address;
   }
-  const bool ready = m.add_source_kind == 0 || m.add_source_port[0] != '\0';
+  const bool ready = m.add_source_kind == 0 || m.add_source_address[0] != '\0';
   if (!ready) ImGui::BeginDisabled();
   if (ImGui::Button("Add")) m.requests.push_back(add);
   if (!ready) ImGui::EndDisabled();

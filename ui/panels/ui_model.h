@@ -152,9 +152,10 @@ struct UiModel {
   float scan_target_hz = 10.0f;
   bool distance_scale_override = false;
   float distance_scale_value = 1.0f;
-  int add_source_kind = 0;         // the Sources panel's "add": 0 virtual lidar, 1 port
+  int add_source_kind = 0;          // the Sources panel's "add": 0 virtual lidar, 1 port, 2 recording
   int add_source_model_choice = 2;  // 1-based in all_profiles(): G6
-  char add_source_port[256] = "";
+  int add_source_scene_choice = 1;  // demo
+  char add_source_address[512] = "";  // the port, tcp:// address or recording to add
 };
 
 }  // namespace ydscope::ui
