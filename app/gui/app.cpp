@@ -235,9 +235,10 @@ void App::toggle_fullscreen() {
     glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
     fullscreen_ = true;
     settings_.show_panels = false;
-    // The booth view shows who walks past: motion colours, back to the user's mode on leaving.
+    // The booth view shows who walks past: motion colours, back to the user's mode on leaving;
+    // several lidars keep their own colours, or they could not be told apart.
     windowed_colour_mode_ = settings_.colours.mode;
-    settings_.colours.mode = ui::ColourMode::Motion;
+    if (sources_.size() < 2) settings_.colours.mode = ui::ColourMode::Motion;
     windowed_persistence_ = settings_.persistence_laps;  // long enough for trails to read as motion
     settings_.persistence_laps = ui::booth_persistence(settings_.persistence_laps);
   } else {
@@ -285,6 +286,9 @@ void App::frame() {
   model().booth = fullscreen_;
   if (model().booth) {
     model().legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
+    // By source, the legend in large type names each lidar and its state (only the app knows them).
+    if (settings_.colours.mode == ui::ColourMode::Source)
+      for (const ui::SourceRow& row : model().sources) model().legend.swatches.push_back({row.look.colour, row.legend});
     ui::draw_booth_overlay(model(), sidebar, view_w, static_cast<float>(win_h));
   }
   ImGui::Render();

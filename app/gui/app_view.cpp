@@ -41,7 +41,8 @@ void App::lay_out_common_view(float left, float width, float height) {
   // The hover box reads one lidar's own frame, which several do not share.
   static const ui::LapHistory no_laps;
   view_->lay_out(several ? no_laps : history(), settings_);
-  if (several) ui::draw_source_legend(model(), left, width);  // each source's state in its own line
+  // Each source's state in its own line; the booth view's large legend says it there instead.
+  if (several && !(fullscreen_ && settings_.colours.mode == ui::ColourMode::Source)) ui::draw_source_legend(model(), left, width);
   else ui::draw_view_overlay(model(), left, width, height);
 }
 
