@@ -64,8 +64,9 @@ ui::ConnectRequest App::connect_request_for(const SourceChoice& choice) const {
 
 std::string App::start_several() {
   const std::vector<Pose> spread = ui::spread_poses(options_.sources.size());
-  // Several lidars are told apart by colour first; by-range stays one click away.
-  settings_.colours.mode = ui::ColourMode::Source;
+  // Several lidars are told apart by colour first; by-range stays one click away. (One port
+  // given a --name or --pose is still one lidar, drawn as always.)
+  if (options_.sources.size() > 1) settings_.colours.mode = ui::ColourMode::Source;
   std::string first_error;
   for (std::size_t i = 0; i < options_.sources.size(); ++i) {
     const SourceChoice& choice = options_.sources[i];
