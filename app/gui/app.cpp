@@ -278,7 +278,7 @@ void App::frame() {
   fill_source_rows();
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
-  if (animating()) shown_phase_ = sel().lap_phase.at(seconds_since_start(last_frame_));
+  if (const SourceSlot* pacing = fading_source()) shown_phase_ = pacing->lap_phase.at(seconds_since_start(last_frame_));
   else if (!settings_.smooth) shown_phase_ = 0.0f;
   if (split_active()) lay_out_split_view(sidebar, view_w, static_cast<float>(win_h));
   else lay_out_common_view(sidebar, view_w, static_cast<float>(win_h));

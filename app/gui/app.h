@@ -53,8 +53,8 @@ class App {
   // The picture changes between laps (persistence or a booth banner fading): the loop draws at
   // the display's rate.
   bool animating() const {
-    const bool fading_laps = settings_.smooth && streaming() && !model().paused_view && history().size() > 1;
-    return fading_laps || ui::banner_fading(model().now_s - model().banner_since_s, fullscreen_ && !model().banner.empty());
+    return fading_source() != nullptr ||
+           ui::banner_fading(model().now_s - model().banner_since_s, fullscreen_ && !model().banner.empty());
   }
   const std::string& last_error() const { return model().status_message; }
   bool quit_requested() const { return quit_; }
@@ -68,6 +68,17 @@ class App {
   void request_screenshot() { model().requests.push_back(ui::SaveScreenshot{}); }
 
  private:
+  // The source whose laps pace the fading persistence: the selected one while it streams, else
+  // another that does (one lidar unplugged must not stop the others' smooth drawing); or none.
+  const SourceSlot* fading_source() const {
+    const auto fading = [&](const SourceSlot& s) {
+      return settings_.smooth && s.model.snap.state == LinkState::Scanning && !s.model.paused_view && s.history.size() > 1;
+    };
+    if (fading(sel())) return &sel();
+    for (const auto& slot : sources_)
+      if (fading(*slot)) return slot.get();
+    return nullptr;
+  }
   SourceSlot& sel() { return *sources_[selected_]; }
   const SourceSlot& sel() const { return *sources_[selected_]; }
   ui::UiModel& model() { return sel().model; }
