@@ -166,6 +166,10 @@ std::vector<std::string> App::summary() const {
                   static_cast<unsigned long long>(s.counters.laps), static_cast<unsigned long long>(slot->model.laps_shown),
                   static_cast<unsigned long long>(lost));
     lines.emplace_back(line);
+    if (s.scan_hz) {  // what the device was last set to: each source's own commands
+      std::snprintf(line, sizeof line, ", scan rate set to %.1f Hz", *s.scan_hz);
+      lines.back() += line;
+    }
   }
   char frames[128];
   std::snprintf(frames, sizeof frames, "frame work %.1f ms (mean of the last 60 frames; the slowest %.1f ms)",
