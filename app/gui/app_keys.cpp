@@ -48,6 +48,8 @@ void App::handle_keys() {
       case GLFW_KEY_M: model().requests.push_back(ui::ExportLapMcap{}); break;
       case GLFW_KEY_W: model().requests.push_back(ui::SetShare{!model().share.on}); break;
       case GLFW_KEY_ESCAPE: view_->clear_ruler(); break;
+      // The next of several sources: the panels' and Alt/Ctrl+drag's, also with the panels hidden.
+      case GLFW_KEY_N: model().requests.push_back(ui::SelectSource{(selected_ + 1) % sources_.size()}); break;
       case GLFW_KEY_Q:
         if (ctrl) quit_ = true;
         break;

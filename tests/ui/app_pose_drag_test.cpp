@@ -1,6 +1,6 @@
 // Posing a source by hand: with two lidars in one view, Alt+drag on the view moves the selected
-// source's cloud with the pointer and leaves the other where it was; the pose it ends at is the
-// one settings.ini remembers for it.
+// source's cloud with the pointer and leaves the other where it was, N selects the other one for
+// the next drag, and the poses they end at are the ones settings.ini remembers.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -42,7 +42,7 @@ std::pair<double, int> centroid_x(const Image& image, ui::Rgba8 colour) {
 
 class AppPoseDrag : public HandsOnApp {};
 
-TEST_F(AppPoseDrag, AltDragMovesTheSelectedSourcesCloudOnly) {
+TEST_F(AppPoseDrag, AltDragMovesTheSelectedSourcesCloudOnlyAndNSelectsTheNext) {
   X11Hands& hands = this->hands();
   const std::filesystem::path dir = fresh_temp_dir("ydscope-pose-drag");
   hands.move_pointer(900, 790);  // parked low in the view, away from where the drag starts
@@ -59,23 +59,34 @@ TEST_F(AppPoseDrag, AltDragMovesTheSelectedSourcesCloudOnly) {
   ASSERT_TRUE(both_drawn(before)) << "the two clouds never showed";
 
   // Alt held, the left button down, 200 px to the right in steps a frame can see, let go.
-  const int y = 400, x0 = 800, x1 = 1000;
-  hands.move_pointer(x0, y);
-  hands.key_down(XK_Alt_L);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  hands.left_button(true, x0, y);
-  for (int x = x0; x <= x1; x += 10) {
-    hands.move_pointer(x, y);
-    std::this_thread::sleep_for(std::chrono::milliseconds(40));
-  }
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  hands.left_button(false, x1, y);
-  hands.key_up(XK_Alt_L);
-
-  const auto moved = [&](const Reading& r) { return both_drawn(r) && r.first.first - before.first.first > 120; };
-  const Reading after = screenshot_until(app, dir, seen, read, moved, std::chrono::seconds(10));
+  const auto alt_drag_right = [&](int y) {
+    const int x0 = 800, x1 = 1000;
+    hands.move_pointer(x0, y);
+    hands.key_down(XK_Alt_L);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    hands.left_button(true, x0, y);
+    for (int x = x0; x <= x1; x += 10) {
+      hands.move_pointer(x, y);
+      std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    hands.left_button(false, x1, y);
+    hands.key_up(XK_Alt_L);
+  };
+  alt_drag_right(400);
+  const auto first_moved = [&](const Reading& r) { return both_drawn(r) && r.first.first - before.first.first > 120; };
+  const Reading after = screenshot_until(app, dir, seen, read, first_moved, std::chrono::seconds(10));
   EXPECT_GT(after.first.first - before.first.first, 120) << "the selected source's cloud did not follow the pointer";
   EXPECT_LT(std::abs(after.second.first - before.second.first), 30) << "the other source's cloud moved too";
+
+  // N selects the next source: now the same drag moves the second cloud and not the first.
+  hands.tap(XK_n, 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  alt_drag_right(420);
+  const auto second_moved = [&](const Reading& r) { return both_drawn(r) && r.second.first - after.second.first > 120; };
+  const Reading last = screenshot_until(app, dir, seen, read, second_moved, std::chrono::seconds(10));
+  EXPECT_GT(last.second.first - after.second.first, 120) << "after N the second source's cloud did not follow the pointer";
+  EXPECT_LT(std::abs(last.first.first - after.first.first), 30) << "after N the first source's cloud moved too";
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
 
   // The pose it ended at is remembered by name: x grew from where the spread put it (-2 m).

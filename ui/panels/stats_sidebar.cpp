@@ -104,9 +104,9 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Tab: hide the panels   F11: full-screen   R: reset view   A: auto-range\n"
                           "P: freeze   S: screenshot   E: shown laps as CSV   M: as MCAP   W: share on/off\n"
-                          "Esc: clear the ruler   Ctrl+Q: quit\n"
+                          "N: next source   Esc: clear the ruler   Ctrl+Q: quit\n"
                           "Wheel: zoom   drag: pan   double-click: reset   right-click twice: ruler\n"
-                          "Shift+drag: watch a sector");
+                          "Shift+drag: watch a sector   Alt+drag / Ctrl+drag: move / turn the selected source");
       ImGui::EndTabBar();
     }
     ImGui::PopItemWidth();
