@@ -87,8 +87,8 @@ class App {
   LidarSource& source() { return sel().source; }
   ui::LapHistory& history() { return sel().history; }
   const ui::LapHistory& history() const { return sel().history; }
-  // The source list (app_sources.cpp). A new source at the end, its name made unique and its
-  // colour the next one's where `look` leaves it empty.
+  // The source list (app_sources.cpp). A new source at the end, its name made unique and, where
+  // `look` leaves it empty, the first palette colour no source has.
   SourceSlot& add_slot(ui::SourceLook look);
   ui::ConnectRequest connect_request_for(const SourceChoice& choice) const;
   // settings.ini remembers each source's pose and colour by name: a source of a remembered name

@@ -1,6 +1,6 @@
-// App, the watched sectors: one SectorWatch per sector in the view model, fed every shown lap
-// (drain_laps), outlined on the view, added from the Sectors panel or a Shift+drag, and
-// remembered as settings.ini's `sector = ...` lines.
+// App, the watched sectors: one SectorWatch per sector in the view model (each source its own),
+// fed every shown lap (drain_laps), outlined on the view, added from the Sectors panel or a
+// Shift+drag, and remembered as settings.ini's `sector = ...` lines.
 #include <algorithm>
 #include <cstdio>
 
@@ -39,13 +39,16 @@ void App::unwatch_sector(std::size_t index) {
 
 void App::sync_sectors() {
   ui::UiModel& m = model();
-  settings_.sectors.clear();
+  // Each source watches its own sectors; the first one's are remembered (a lone lidar is first).
+  if (selected_ == 0) settings_.sectors.clear();
   std::vector<ui::SectorShape> shapes;
   for (std::size_t i = 0; i < m.sectors.size(); ++i) {
     const Sector& s = m.sectors[i].sector();
-    settings_.sectors.push_back(m.sectors[i].spec());
+    if (selected_ == 0) settings_.sectors.push_back(m.sectors[i].spec());
     shapes.push_back({static_cast<float>(s.from_deg), static_cast<float>(s.width_deg()), "S" + std::to_string(i + 1)});
   }
+  // A sector is angles round one lidar: outlined only while the view is drawn round one.
+  if (sources_.size() > 1) shapes.clear();
   view_->set_sectors(std::move(shapes));
 }
 

@@ -88,6 +88,7 @@ std::string App::start_several() {
     }
   }
   selected_ = 0;
+  sync_sectors();  // several: the first source's sectors are no longer outlined round the origin
   return first_error;
 }
 
@@ -98,6 +99,7 @@ void App::select_source(std::size_t index) {
   if (share_) stop_share();
   selected_ = index;
   shown_banner_ = model().banner;
+  sync_sectors();
   view_->invalidate();
 }
 
@@ -135,6 +137,7 @@ void App::change_sources(const ui::RemoveSource& request) {
   sources_[request.index]->source.stop();
   sources_.erase(sources_.begin() + static_cast<std::ptrdiff_t>(request.index));
   if (selected_ > request.index) --selected_;
+  sync_sectors();  // back to one lidar: its sectors are outlined again
   view_->invalidate();
 }
 
