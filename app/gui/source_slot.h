@@ -5,8 +5,10 @@
 // to another without losing what either measured.
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "app/gui/lidar_source.h"
 #include "core/link/session.h"
