@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "app_test_support.h"
 #include "private_display.h"
@@ -54,18 +55,38 @@ SourcePixels source_pixels(const Image& image, ui::Rgba8 colour, const Pose& pos
   return counted;
 }
 
-TEST(AppSources, ThreeVirtualLidarsDrawInTheirColoursWhereTheirPosesPutThem) {
-  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
-  PrivateDisplay display;
-  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
-  const std::filesystem::path dir = fresh_temp_dir("ydscope-three-sources");
-  const std::string png = (dir / "three.png").string();
-  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G1,G6,TG30", "--screenshot", png, "--frames", "120"});
-  int status = 0;
-  ASSERT_EQ(waitpid(app, &status, 0), app);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the app did not exit 0";
-  const Image image = load_png(png);
-  ASSERT_TRUE(image) << png;
+// Each test on an Xvfb of its own, in a folder of its own (kept when it fails, to look at).
+class AppSources : public testing::Test {
+ protected:
+  void SetUp() override {
+    if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
+    display_.emplace();
+    ASSERT_TRUE(*display_) << "could not start an Xvfb of the test's own";
+    dir_ = fresh_temp_dir(std::string("ydscope-") + testing::UnitTest::GetInstance()->current_test_info()->name());
+  }
+  void TearDown() override {
+    if (!HasFailure() && !dir_.empty() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir_);
+  }
+  // The app's --screenshot picture after 120 frames of `arguments`; empty when it failed.
+  Image screenshot_run(std::vector<std::string> arguments) {
+    const std::string png = (dir_ / "screenshot.png").string();
+    arguments.insert(arguments.begin(), YDSCOPE_APP_PATH);
+    arguments.insert(arguments.end(), {"--screenshot", png, "--frames", "120"});
+    const pid_t app = spawn_in(dir_, arguments);
+    int status = 0;
+    if (waitpid(app, &status, 0) != app || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
+    return load_png(png);
+  }
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::optional<PrivateDisplay> display_;
+  std::filesystem::path dir_;
+};
+
+TEST_F(AppSources, ThreeVirtualLidarsDrawInTheirColoursWhereTheirPosesPutThem) {
+  const Image image = screenshot_run({"--sim", "G1,G6,TG30"});
+  ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
   // Started together, the three sit round the origin, each in the next colour of the palette.
   const std::vector<Pose> poses = ui::spread_poses(3);
   for (std::size_t i = 0; i < poses.size(); ++i) {
@@ -74,22 +95,12 @@ TEST(AppSources, ThreeVirtualLidarsDrawInTheirColoursWhereTheirPosesPutThem) {
     EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
         << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total << " of its points lie towards its pose";
   }
-  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
 }
 
 // View > split: two sources side by side, each drawn around itself in its own half.
-TEST(AppSources, TheSplitViewPutsEachSourceInItsOwnHalf) {
-  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
-  PrivateDisplay display;
-  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
-  const std::filesystem::path dir = fresh_temp_dir("ydscope-split-sources");
-  const std::string png = (dir / "split.png").string();
-  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G1,G6", "--split", "--screenshot", png, "--frames", "120"});
-  int status = 0;
-  ASSERT_EQ(waitpid(app, &status, 0), app);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the app did not exit 0";
-  const Image image = load_png(png);
-  ASSERT_TRUE(image) << png;
+TEST_F(AppSources, TheSplitViewPutsEachSourceInItsOwnHalf) {
+  const Image image = screenshot_run({"--sim", "G1,G6", "--split"});
+  ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
   const int middle = (kViewLeft + image.width) / 2;
   const auto in = [&](int x0, int x1, ui::Rgba8 colour) {
     return count_pixels(image, {x0, 0, x1, image.height}, [&](const unsigned char* p) { return is_source_point(p, colour); });
@@ -99,18 +110,14 @@ TEST(AppSources, TheSplitViewPutsEachSourceInItsOwnHalf) {
   EXPECT_GT(in(middle, image.width, second), 1000) << "the second source is not in the right half";
   EXPECT_LT(in(kViewLeft, middle, second), 50) << "the second source spills into the first's half";
   EXPECT_LT(in(middle, image.width, first), 50) << "the first source spills into the second's half";
-  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
 }
 
 // Amber legend words (255, 190, 80): the legend line of a source whose data stopped; the orange
 // of the first source (255, 150, 40) is not amber.
 bool is_amber(const unsigned char* p) { return p[0] > 220 && p[1] > 170 && p[1] < 210 && p[2] > 40 && p[2] < 120; }
 
-TEST(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
-  if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) GTEST_SKIP() << "Xvfb is not installed";
-  PrivateDisplay display;
-  ASSERT_TRUE(display) << "could not start an Xvfb of the test's own";
-  const std::filesystem::path dir = fresh_temp_dir("ydscope-two-sources");
+TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
+  const std::filesystem::path& dir = this->dir();
   const std::string left_link = (dir / "left").string(), right_link = (dir / "right").string();
   const auto sim_at = [&](const std::string& link) {
     return spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty", link});
@@ -149,7 +156,6 @@ TEST(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
 
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
   stop_process(left_sim, SIGTERM);
-  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
 }
 
 #endif
