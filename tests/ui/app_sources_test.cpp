@@ -119,8 +119,20 @@ bool is_amber(const unsigned char* p) { return p[0] > 220 && p[1] > 170 && p[1] 
 TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   const std::filesystem::path& dir = this->dir();
   const std::string left_link = (dir / "left").string(), right_link = (dir / "right").string();
+  // An ASSERT that ends the test early must not leave the sims and the app running.
+  struct Running {
+    std::vector<pid_t> pids;
+    ~Running() {
+      for (const pid_t pid : pids) stop_process(pid, SIGKILL);
+    }
+    pid_t add(pid_t pid) { return pids.push_back(pid), pid; }
+    int stop(pid_t pid, int signal) {
+      std::erase(pids, pid);
+      return stop_process(pid, signal);
+    }
+  } running;
   const auto sim_at = [&](const std::string& link) {
-    return spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty", link});
+    return running.add(spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty", link}));
   };
   const pid_t left_sim = sim_at(left_link);
   const pid_t right_sim = sim_at(right_link);
@@ -128,8 +140,8 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   Pose left, right;
   left.y_m = 2.0;    // above the centre
   right.y_m = -2.0;  // below it
-  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left),
-                                   "--port", right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"});
+  const pid_t app = running.add(spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left),
+                                               "--port", right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"}));
   std::set<std::string> seen;
   struct Reading {
     SourcePixels left, right;
@@ -145,7 +157,7 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   ASSERT_GT(before.right.total, 1000) << "the right lidar's cloud never showed";
   EXPECT_LT(before.amber, 30) << "amber legend words while both scan";
 
-  stop_process(right_sim, SIGKILL);  // a crash: the pty's other end vanishes mid-stream
+  running.stop(right_sim, SIGKILL);  // a crash: the pty's other end vanishes mid-stream
   const auto right_dimmed = [&](const Reading& r) {
     return r.right.total < before.right.total / 10 && r.amber > 100 && r.left.total > 1000;
   };
@@ -154,8 +166,8 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   EXPECT_GT(after.amber, 100) << "its legend line did not turn amber";
   EXPECT_GT(after.left.total, 1000) << "the live lidar's cloud dimmed too";
 
-  EXPECT_EQ(stop_process(app, SIGTERM), 0);
-  stop_process(left_sim, SIGTERM);
+  EXPECT_EQ(running.stop(app, SIGTERM), 0);
+  running.stop(left_sim, SIGTERM);
 }
 
 #endif
