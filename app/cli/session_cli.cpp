@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/link/device_probe.h"
+#include "app/common/source_list_options.h"
 #include "core/link/link_address.h"
 
 namespace ydscope::cli {
@@ -39,11 +40,7 @@ SessionConfig session_config_for(const std::string& address, const std::optional
   if (baud == "auto") {
     config.probe_baud = true;
   } else if (!baud.empty()) {
-    std::uint32_t parsed = 0;
-    const auto [end, ec] = std::from_chars(baud.data(), baud.data() + baud.size(), parsed);
-    if (ec != std::errc() || end != baud.data() + baud.size() || parsed < 50 || parsed > 4'000'000)
-      throw UsageError("--baud must be a whole number from 50 to 4000000, not '" + baud + "'");
-    config.baud = parsed;
+    config.baud = parse_baud_text(baud);
   }
   config.scan = scan;
   config.reconnect = false;  // a command-line run reports a fault instead of waiting it out

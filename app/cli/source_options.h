@@ -1,26 +1,25 @@
 #pragma once
-// Several lidars on one command line (record, serve): --port once per lidar, and per lidar a
-// --name and a --pose, each given once per --port in the same order (or not at all: lidar0,
-// lidar1, ... at the origin). --model and --baud are given once for all or once per --port.
+// Several lidars on one command line (record, serve), as app/common/source_list_options.h spells
+// them, turned into sessions' configurations.
 #include <set>
 #include <string>
 #include <vector>
 
 #include "app/common/arguments.h"
+#include "app/common/source_list_options.h"
 #include "core/frame/pose.h"
 #include "core/link/session.h"
 #include "core/record/recording_metadata.h"
 
 namespace ydscope::cli {
 
+using ydscope::source_repeatable_options;
+
 struct SourceSpec {
   std::string name;  // letters, digits and _, starting with a letter: a ROS namespace and a CSV field as is
   Pose pose;
   SessionConfig config;
 };
-
-// The options above, repeatable (Arguments' last parameter).
-std::set<std::string> source_repeatable_options();
 
 // One spec per --port. UsageError, one sentence, on a mistake: a count of --name/--pose/--model/
 // --baud that does not match the ports, a bad or repeated name, a bad pose, a port given twice, or

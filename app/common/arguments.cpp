@@ -63,11 +63,15 @@ class OptionNames {
     // A single letter (-p) is the long option of that initial, when only one has it.
     if (arg.size() == 2 && arg[0] == '-') {
       std::optional<std::string> only;
+      bool several = false;
       for (const auto& candidate : names_) {
         if (candidate[0] != arg[1]) continue;
-        if (only) return std::nullopt;
+        several = only.has_value();
+        if (several) break;
         only = candidate;
       }
+      // -p is the port in the serial tools people come from, also beside --pose.
+      if (several) return arg[1] == 'p' && option_named("port") ? std::optional<std::string>("port") : std::nullopt;
       return only;
     }
     return closest_match(name, names_);

@@ -41,9 +41,6 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
     : window_(window),
       options_(options),
       persist_(persist_settings),
-      session_(16, [] { glfwPostEmptyEvent(); }, "view"),
-      measured_laps_(session_.lap_stream().subscribe("statistics", 32)),
-      source_(session_),
       view_(std::make_unique<ui::PolarView>(options.screenshot_path.empty())),
       start_(std::chrono::steady_clock::now()),
       last_frame_(start_) {
@@ -60,13 +57,14 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   } else {
     ImGui::GetIO().IniFilename = nullptr;  // screenshot runs must not depend on a user's layout
   }
+  if (options_.split) settings_.split_view = true;
   if (options_.fullscreen) {
     settings_.show_panels = false;
     toggle_fullscreen();
   }
-  history_.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
-  std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", settings_.last_replay_file.c_str());
-  model_.ports = discover_ports();
+  add_slot({});
+  std::snprintf(model().replay_text, sizeof model().replay_text, "%s", settings_.last_replay_file.c_str());
+  model().ports = discover_ports();
   restore_sectors();
   install_key_callback();
 }
@@ -77,7 +75,8 @@ App::~App() {
   // Files get their summaries and the clients a closed server before the source goes.
   stop_recording();
   stop_share();
-  source_.stop();
+  for (auto& slot : sources_) slot->source.stop();
+  remember_looks();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
   // ImGui keeps only a pointer to our path string: save now and let it forget the path.
   if (!imgui_ini_path_.empty()) ImGui::SaveIniSettingsToDisk(imgui_ini_path_.c_str());
@@ -85,17 +84,18 @@ App::~App() {
 }
 
 std::string App::start_source() {
-  if (options_.share) model_.requests.push_back(ui::SetShare{true});  // carried out after the first frame
+  if (options_.share) model().requests.push_back(ui::SetShare{true});  // carried out after the first frame
   record_from_start_ = !options_.record.empty();
+  if (!options_.sources.empty()) return start_several();
   ui::ConnectRequest request;
   start_clean();
-  has_source_ = true;
+  sel().has_source = true;
   switch (options_.source) {
     case SourceKind::Auto:
-      model_.banner = source_.start_auto();
-      model_.source_text = source_.description();
-      model_.sim_active = source_.sim_active();
-      model_.show_source_tab = model_.sim_active ? 1 : 0;
+      model().banner = source().start_auto();
+      model().source_text = source().description();
+      model().sim_active = source().sim_active();
+      model().show_source_tab = model().sim_active ? 1 : 0;
       return {};
     case SourceKind::Port:
       request.kind = ui::ConnectRequest::Kind::Port;
@@ -103,15 +103,15 @@ std::string App::start_source() {
       if (options_.model && *options_.model != "auto") request.model = options_.model;
       if (options_.baud) request.baud = *options_.baud;
       // The Port tab shows what runs, so Connect there reconnects to it.
-      std::snprintf(model_.port_text, sizeof model_.port_text, "%s", options_.port.c_str());
+      std::snprintf(model().port_text, sizeof model().port_text, "%s", options_.port.c_str());
       break;
     case SourceKind::Sim: {
       request.kind = ui::ConnectRequest::Kind::Sim;
       request.model = options_.model;
       request.scene = options_.scene;
       // The Virtual tab shows what runs.
-      model_.sim_model_choice = model_choice(options_.model, model_.sim_model_choice);
-      model_.sim_scene_choice = options_.scene == "room" ? 0 : options_.scene == "booth" ? 2 : 1;
+      model().sim_model_choice = model_choice(options_.model, model().sim_model_choice);
+      model().sim_scene_choice = options_.scene == "room" ? 0 : options_.scene == "booth" ? 2 : 1;
       break;
     }
     case SourceKind::Replay:
@@ -121,63 +121,63 @@ std::string App::start_source() {
       request.replay_speed = options_.replay_speed;
       request.replay_loop = !options_.replay_once;
       settings_.last_replay_file = options_.replay_file;
-      std::snprintf(model_.replay_text, sizeof model_.replay_text, "%s", options_.replay_file.c_str());
-      model_.replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
+      std::snprintf(model().replay_text, sizeof model().replay_text, "%s", options_.replay_file.c_str());
+      model().replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
       break;
   }
-  model_.show_source_tab = static_cast<int>(request.kind);
+  model().show_source_tab = static_cast<int>(request.kind);
   return start(request);
 }
 
 std::string App::start(const ui::ConnectRequest& request) {
-  const std::string error = source_.start(request);
-  has_source_ = error.empty();
-  model_.start_error = error;
-  model_.start_error_replay = request.kind == ui::ConnectRequest::Kind::Replay;
-  model_.status_message = error;
-  model_.source_text = source_.description();
-  model_.sim_active = source_.sim_active();
-  model_.replay.available = source_.replay_active();
+  const std::string error = source().start(request);
+  sel().has_source = error.empty();
+  model().start_error = error;
+  model().start_error_replay = request.kind == ui::ConnectRequest::Kind::Replay;
+  model().status_message = error;
+  model().source_text = source().description();
+  model().sim_active = source().sim_active();
+  model().replay.available = source().replay_active();
   // The Replay tab shows what the new link plays from its first frame, not the defaults.
-  model_.replay.speed = static_cast<float>(request.replay_speed);
-  model_.replay.loop = request.replay_loop;
-  model_.source_warnings = source_.warnings();
-  for (const std::string& warning : model_.source_warnings) std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
+  model().replay.speed = static_cast<float>(request.replay_speed);
+  model().replay.loop = request.replay_loop;
+  model().source_warnings = source().warnings();
+  for (const std::string& warning : model().source_warnings) std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
   return error;
 }
 
-void App::drain_laps() {
-  while (measured_laps_->try_pop(measured_lap_))
-    if (!model_.paused_view) measure_lap(measured_lap_);
-  const std::size_t drained = session_.laps().drain_newest(lap_);
-  model_.laps_skipped = session_.laps().skipped();
-  if (drained > 0) last_lap_at_ = std::chrono::steady_clock::now();
-  if (drained == 0 || model_.paused_view) return;
-  history_.push(lap_);
-  lap_phase_.on_lap(seconds_since_start(last_frame_));
-  motion_.add_lap(lap_);
+void App::drain_laps(SourceSlot& s) {
+  while (s.measured_laps->try_pop(s.measured_lap))
+    if (!s.model.paused_view) measure_lap(s, s.measured_lap);
+  const std::size_t drained = s.session.laps().drain_newest(s.lap);
+  s.model.laps_skipped = s.session.laps().skipped();
+  if (drained > 0) s.last_lap_at = std::chrono::steady_clock::now();
+  if (drained == 0 || s.model.paused_view) return;
+  s.history.push(s.lap);
+  s.lap_phase.on_lap(seconds_since_start(last_frame_));
+  s.motion.add_lap(s.lap);
   view_->invalidate();
-  ++model_.laps_shown;
-  model_.points_in_lap = lap_.points.size();
-  pending_latency_rx_ns_ = lap_.last_rx_ns;
+  ++s.model.laps_shown;
+  s.model.points_in_lap = s.lap.points.size();
+  s.pending_latency_rx_ns = s.lap.last_rx_ns;
 }
 
-void App::measure_lap(const Lap& lap) {
-  model_.scan_rate.add_lap_end(lap.index, lap.last_rx_ns);
-  model_.plots.add_lap({model_.scan_rate.hz(), model_.snap.scan_hz, lap.points.size()});
-  for (ui::SectorWatch& sector : model_.sectors) sector.add_lap(lap);
+void App::measure_lap(SourceSlot& s, const Lap& lap) {
+  s.model.scan_rate.add_lap_end(lap.index, lap.last_rx_ns);
+  s.model.plots.add_lap({s.model.scan_rate.hz(), s.model.snap.scan_hz, lap.points.size()});
+  for (ui::SectorWatch& sector : s.model.sectors) sector.add_lap(lap);
   if (lap.health_bits) {
-    model_.ct_health = lap.health_bits;
-    model_.ct_health_trusted = lap.ct_info_trusted();
+    s.model.ct_health = lap.health_bits;
+    s.model.ct_health_trusted = lap.ct_info_trusted();
     if (lap.ct_info_trusted()) {
-      model_.timeline.observe("CT health", *lap.health_bits, model_.now_s, ui::describe_health_bits(Model::G1, *lap.health_bits));
+      s.model.timeline.observe("CT health", *lap.health_bits, s.model.now_s, ui::describe_health_bits(Model::G1, *lap.health_bits));
     }
   }
-  if (lap.crc == CrcVerdict::Mismatch) ++model_.crc_mismatch_laps;
+  if (lap.crc == CrcVerdict::Mismatch) ++s.model.crc_mismatch_laps;
 }
 
 void App::start_clean() {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   m.snap = {};
   m.scan_rate.reset();
   m.frame_ms = {};
@@ -200,26 +200,26 @@ void App::start_clean() {
   m.source_warnings.clear();
   if (m.distance_scale_override) {
     m.distance_scale_override = false;
-    session_.set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
+    session().set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
   }
-  last_set_scan_hz_.reset();
-  last_replay_status_.reset();
-  last_lap_at_.reset();
-  pending_latency_rx_ns_ = 0;
-  history_.clear();
-  lap_phase_.reset();
+  sel().last_set_scan_hz.reset();
+  sel().last_replay_status.reset();
+  sel().last_lap_at.reset();
+  sel().pending_latency_rx_ns = 0;
+  history().clear();
+  sel().lap_phase.reset();
   shown_phase_ = 0.0f;
-  motion_.clear();
-  lap_ = {};
-  while (measured_laps_->try_pop(measured_lap_)) {
+  sel().motion.clear();
+  sel().lap = {};
+  while (sel().measured_laps->try_pop(sel().measured_lap)) {
   }  // the old source's laps measure nothing of the new one
   view_->invalidate();
 }
 
 void App::follow_pointer() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) pointer_moved_s_ = model_.now_s;
-  const bool hide = ui::cursor_hidden(model_.now_s - pointer_moved_s_, fullscreen_);
+  if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) pointer_moved_s_ = model().now_s;
+  const bool hide = ui::cursor_hidden(model().now_s - pointer_moved_s_, fullscreen_);
   if (hide == cursor_hidden_) return;
   cursor_hidden_ = hide;
   glfwSetInputMode(window_, GLFW_CURSOR, hide ? GLFW_CURSOR_HIDDEN : GLFW_CURSOR_NORMAL);
@@ -235,9 +235,10 @@ void App::toggle_fullscreen() {
     glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
     fullscreen_ = true;
     settings_.show_panels = false;
-    // The booth view shows who walks past: motion colours, back to the user's mode on leaving.
+    // The booth view shows who walks past: motion colours, back to the user's mode on leaving;
+    // several lidars keep their own colours, or they could not be told apart.
     windowed_colour_mode_ = settings_.colours.mode;
-    settings_.colours.mode = ui::ColourMode::Motion;
+    if (sources_.size() < 2) settings_.colours.mode = ui::ColourMode::Motion;
     windowed_persistence_ = settings_.persistence_laps;  // long enough for trails to read as motion
     settings_.persistence_laps = ui::booth_persistence(settings_.persistence_laps);
   } else {
@@ -254,11 +255,13 @@ void App::toggle_fullscreen() {
 void App::frame() {
   last_frame_ = std::chrono::steady_clock::now();
 
-  drain_laps();
-  update_model();
-  if (static_cast<int>(history_.depth()) != settings_.persistence_laps) {
-    history_.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
-    view_->invalidate();
+  for (auto& slot : sources_) {
+    drain_laps(*slot);
+    update_model(*slot);
+    if (static_cast<int>(slot->history.depth()) != settings_.persistence_laps) {
+      slot->history.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
+      view_->invalidate();
+    }
   }
 
   ImGui_ImplOpenGL3_NewFrame();
@@ -272,31 +275,21 @@ void App::frame() {
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
   const float fb_scale = win_w > 0 ? static_cast<float>(fb_w) / static_cast<float>(win_w) : 1.0f;
 
-  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model_, settings_) : 0.0f;
+  fill_source_rows();
+  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
-  view_->set_viewport({sidebar, 0.0f}, {view_w, static_cast<float>(win_h)});
-  view_->set_status_band(ui::status_band_height());
-  view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
-                       seconds_since_start(last_frame_));
-  if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
-    char spec[48];
-    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
-    model_.requests.push_back(ui::WatchSector{spec});
-  }
-  view_->auto_range(history_, settings_);
-  if (animating()) shown_phase_ = lap_phase_.at(seconds_since_start(last_frame_));
+  if (const SourceSlot* pacing = fading_source()) shown_phase_ = pacing->lap_phase.at(seconds_since_start(last_frame_));
   else if (!settings_.smooth) shown_phase_ = 0.0f;
-  model_.cloud = view_->update_cloud(history_, settings_, &motion_, shown_phase_);
-  model_.laps_on_screen = history_.size();
-  model_.points_drawn_total = view_->vertex_count();
-  ui::draw_view_header(model_, sidebar, view_w);
-
-  view_->lay_out(history_, settings_);
-  ui::draw_view_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
-  model_.booth = fullscreen_;
-  if (model_.booth) {
-    model_.legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
-    ui::draw_booth_overlay(model_, sidebar, view_w, static_cast<float>(win_h));
+  if (split_active()) lay_out_split_view(sidebar, view_w, static_cast<float>(win_h));
+  else lay_out_common_view(sidebar, view_w, static_cast<float>(win_h));
+  ui::draw_view_header(model(), sidebar, view_w);
+  model().booth = fullscreen_;
+  if (model().booth) {
+    model().legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
+    // By source, the legend in large type names each lidar and its state (only the app knows them).
+    if (settings_.colours.mode == ui::ColourMode::Source)
+      for (const ui::SourceRow& row : model().sources) model().legend.swatches.push_back({row.look.colour, row.legend});
+    ui::draw_booth_overlay(model(), sidebar, view_w, static_cast<float>(win_h));
   }
   ImGui::Render();
   drew_ = render_if_changed(fb_scale, fb_w, fb_h);
@@ -306,14 +299,14 @@ void App::frame() {
 
 bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
   std::uint64_t signature = ui::draw_signature(*ImGui::GetDrawData());
-  for (const std::uint64_t part : {view_->gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
+  for (const std::uint64_t part : {gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
                                    static_cast<std::uint64_t>(settings_.show_grid),
                                    static_cast<std::uint64_t>(settings_.point_size_px * 1000.0f)})
     signature = ui::mix_signature(signature, part);
   // A screenshot reads the frame it is taken in, so that frame is always drawn; so is one the
   // window system lost (uncovered, resized).
   const bool screenshot = !options_.screenshot_path.empty() ||
-                          std::any_of(model_.requests.begin(), model_.requests.end(), [](const ui::UiRequest& r) {
+                          std::any_of(model().requests.begin(), model().requests.end(), [](const ui::UiRequest& r) {
                             return std::holds_alternative<ui::SaveScreenshot>(r);
                           });
   if (signature == drawn_signature_ && !screenshot && !window_damaged_) return false;
@@ -322,7 +315,11 @@ bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
   glViewport(0, 0, fb_w, fb_h);
   glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
   glClear(GL_COLOR_BUFFER_BIT);
-  view_->draw_gl(settings_, fb_scale, fb_h);
+  if (split_active()) {
+    for (const auto& tile : tiles_) tile->draw_gl(settings_, fb_scale, fb_h);
+  } else {
+    view_->draw_gl(settings_, fb_scale, fb_h);
+  }
   glViewport(0, 0, fb_w, fb_h);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   return true;
@@ -331,14 +328,14 @@ bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
 void App::after_present() {
   // Frame time = the work of a frame (draining, drawing, presenting), not the wait between frames.
   const auto now = std::chrono::steady_clock::now();
-  model_.frame_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
-  if (last_present_) model_.frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - *last_present_).count());
+  model().frame_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
+  if (last_present_) model().frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - *last_present_).count());
   last_present_ = now;
-  if (pending_latency_rx_ns_ != 0) {
-    const double latency_ms = static_cast<double>(steady_ns() - pending_latency_rx_ns_) * 1e-6;
-    model_.latency_ms.add(latency_ms);
-    model_.plots.add_latency_ms(latency_ms);
-    pending_latency_rx_ns_ = 0;
+  if (sel().pending_latency_rx_ns != 0) {
+    const double latency_ms = static_cast<double>(steady_ns() - sel().pending_latency_rx_ns) * 1e-6;
+    model().latency_ms.add(latency_ms);
+    model().plots.add_latency_ms(latency_ms);
+    sel().pending_latency_rx_ns = 0;
   }
 }
 

@@ -1,14 +1,17 @@
 #pragma once
 // The desktop app's state and one frame of work: drain the lap queue, update what the panels show,
 // draw the polar view and the panels, and carry out what the user asked for.
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "app/gui/app_options.h"
 #include "app/gui/lidar_source.h"
+#include "app/gui/source_slot.h"
 #include "core/bridge/live_topics.h"
 #include "core/bridge/session_share.h"
 #include "core/link/session.h"
@@ -19,6 +22,7 @@
 #include "ui/view/lap_phase.h"
 #include "ui/view/motion_background.h"
 #include "ui/view/settings.h"
+#include "ui/view/source_cloud.h"
 
 struct GLFWwindow;
 
@@ -41,33 +45,85 @@ class App {
   // After the swap: latency of the laps this frame showed.
   void after_present();
 
-  std::uint64_t laps_shown() const { return model_.laps_shown; }
+  std::uint64_t laps_shown() const { return model().laps_shown; }
   // Laps are arriving (the link is scanning).
-  bool streaming() const { return model_.snap.state == LinkState::Scanning; }
+  bool streaming() const {
+    return std::any_of(sources_.begin(), sources_.end(), [](const auto& s) { return s->model.snap.state == LinkState::Scanning; });
+  }
   // The picture changes between laps (persistence or a booth banner fading): the loop draws at
   // the display's rate.
   bool animating() const {
-    const bool fading_laps = settings_.smooth && streaming() && !model_.paused_view && history_.size() > 1;
-    return fading_laps || ui::banner_fading(model_.now_s - model_.banner_since_s, fullscreen_ && !model_.banner.empty());
+    return fading_source() != nullptr ||
+           ui::banner_fading(model().now_s - model().banner_since_s, fullscreen_ && !model().banner.empty());
   }
-  const std::string& last_error() const { return model_.status_message; }
+  const std::string& last_error() const { return model().status_message; }
   bool quit_requested() const { return quit_; }
   // No lap will come until the user picks another source: it did not start, or it is a replay
   // that went round without one.
-  bool no_laps_coming() const { return !model_.start_error.empty() || model_.view_state.give_up; }
+  bool no_laps_coming() const { return !model().start_error.empty() || model().view_state.give_up; }
+  // With several sources, a line per source (laps from the device, drawn, lost) and the frame
+  // work, for the end of a run; nothing with one.
+  std::vector<std::string> summary() const;
   // Saves a timestamped PNG after the next frame, as the S key does (SIGUSR1 asks for it).
-  void request_screenshot() { model_.requests.push_back(ui::SaveScreenshot{}); }
+  void request_screenshot() { model().requests.push_back(ui::SaveScreenshot{}); }
 
  private:
+  // The source whose laps pace the fading persistence: the selected one while it streams, else
+  // another that does (one lidar unplugged must not stop the others' smooth drawing); or none.
+  const SourceSlot* fading_source() const {
+    const auto fading = [&](const SourceSlot& s) {
+      return settings_.smooth && s.model.snap.state == LinkState::Scanning && !s.model.paused_view && s.history.size() > 1;
+    };
+    if (fading(sel())) return &sel();
+    for (const auto& slot : sources_)
+      if (fading(*slot)) return slot.get();
+    return nullptr;
+  }
+  SourceSlot& sel() { return *sources_[selected_]; }
+  const SourceSlot& sel() const { return *sources_[selected_]; }
+  ui::UiModel& model() { return sel().model; }
+  const ui::UiModel& model() const { return sel().model; }
+  Session& session() { return sel().session; }
+  LidarSource& source() { return sel().source; }
+  ui::LapHistory& history() { return sel().history; }
+  const ui::LapHistory& history() const { return sel().history; }
+  // The source list (app_sources.cpp). A new source at the end, its name made unique and, where
+  // `look` leaves it empty, the first palette colour no source has.
+  SourceSlot& add_slot(ui::SourceLook look);
+  ui::ConnectRequest connect_request_for(const SourceChoice& choice) const;
+  // settings.ini remembers each source's pose and colour by name: a source of a remembered name
+  // gets them back (its pose only when none was given).
+  void recall_look(ui::SourceLook& look, bool pose_given) const;
+  void remember_looks();
+  // --sim G1,G6,TG30 or several --port: every one started, at its pose. Empty, or the first failure.
+  std::string start_several();
+  // The panels show, and command, source `index` from now on.
+  void select_source(std::size_t index);
+  void change_sources(const ui::SelectSource& request);
+  void change_sources(const ui::SetSourceLook& request);
+  void change_sources(const ui::AddSource& request);
+  void change_sources(const ui::RemoveSource& request);
+  // The Sources panel's rows and the legend's lines, into the selected source's panel model.
+  void fill_source_rows();
+  // What the view draws this frame: each shown source's laps at its pose (and its mark).
+  std::span<const ui::SourceLayer> source_layers();
+
   // The view takes the newest lap each frame; the measurements take every lap, in order, from a
   // ring of their own, so a slow frame skips pictures but never a lap in the statistics.
-  void drain_laps();
-  void measure_lap(const Lap& lap);
-  void update_model();
+  void drain_laps(SourceSlot& slot);
+  void measure_lap(SourceSlot& slot, const Lap& lap);
+  void update_model(SourceSlot& slot);
   // Keys (app_keys.cpp): GLFW's callback queues each press; handle_keys acts on them in order.
   void install_key_callback();
   void remove_key_callback();
   void handle_keys();
+  // The view of a frame (app_view.cpp): every source in one common view, or (app_split_view.cpp)
+  // two to four side by side when View > split is on and there are several.
+  void lay_out_common_view(float left, float width, float height);
+  bool split_active() const;
+  void lay_out_split_view(float left, float width, float height);
+  // Changes whenever the GL layer of the view (or of the split view's tiles) would draw otherwise.
+  std::uint64_t gl_generation() const;
   // The frame's requests from panels, keys and mouse, in order (app_requests.cpp).
   void carry_out_requests(int framebuffer_width, int framebuffer_height);
   // Renders the GL layer and ImGui's draw data unless the frame would repeat the last one.
@@ -101,14 +157,14 @@ class App {
   // the status line and the Connection panel; a source's warnings also go to stderr in the
   // words ydscope-cli uses. Empty, or the sentence of why it did not start.
   std::string start(const ui::ConnectRequest& request);
-  void update_view_state();
+  void update_view_state(SourceSlot& slot);
   // The watched sectors (app_sectors.cpp): restored at start, changed by the Sectors panel and
   // Shift+drag on the view, kept in settings.ini.
   void restore_sectors();
   void unwatch_sector(std::size_t index);
   // Empty, or why `spec` is not watched (a mistake, a duplicate, too many).
   std::string watch_sector(const std::string& spec);
-  // settings.ini's list and the view's outlines follow model_.sectors.
+  // settings.ini's list and the view's outlines follow model().sectors.
   void sync_sectors();
 
   GLFWwindow* window_;
@@ -123,37 +179,30 @@ class App {
   std::string settings_path_;
   std::string imgui_ini_path_;
   ui::ViewSettings settings_;
-  ui::UiModel model_;
-  Session session_;
-  std::unique_ptr<LapSubscription> measured_laps_;  // every lap, for rates, plots, sectors, health
-  Lap measured_lap_;
-  LidarSource source_;
-  ui::LapHistory history_;
-  ui::LapPhase lap_phase_;   // how far between two laps, for fading persistence at display rate
+  // The source list, never empty; the panels show (and command) the selected one.
+  std::vector<std::unique_ptr<SourceSlot>> sources_;
+  std::size_t selected_ = 0;
+  std::vector<ui::SourceLayer> layers_;  // this frame's, reused
+  std::vector<ui::SourceMark> marks_;
+  std::vector<std::pair<Pose, bool>> drawn_layers_key_;  // pose and dimming the cloud was built with
   float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
-  ui::MotionBackground motion_;  // the room, learned from the laps the view shows
   std::optional<ui::ColourMode> windowed_colour_mode_;  // restored on leaving the booth view
   std::optional<int> windowed_persistence_;              // likewise
-  std::string shown_banner_;                             // the banner whose age model_ holds
+  std::string shown_banner_;                             // the banner whose age model() holds
   double pointer_moved_s_ = 0.0;                         // the booth view hides a resting pointer
   bool cursor_hidden_ = false;
-  Lap lap_;
   std::unique_ptr<ui::PolarView> view_;
+  std::vector<std::unique_ptr<ui::PolarView>> tiles_;  // the split view's, one per source shown
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::optional<std::chrono::steady_clock::time_point> last_present_;
   bool drew_ = false;
   std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
   bool window_damaged_ = true;         // the window system asks for the picture again
-  std::int64_t pending_latency_rx_ns_ = 0;  // newest lap drawn this frame, measured after present
   std::unique_ptr<SessionShare> share_;               // while Share is on
   std::unique_ptr<LiveTopics> mcap_recording_;        // while an MCAP recording runs
   std::chrono::steady_clock::time_point share_polled_;  // clients are asked twice a second
   bool record_from_start_ = false;                      // --record, until the source connects
-  std::optional<double> last_set_scan_hz_;
-  std::optional<ReplayStatus> last_replay_status_;  // the replay link's, as follow_replay last saw it
-  std::optional<std::chrono::steady_clock::time_point> last_lap_at_;  // newest lap of this source
-  bool has_source_ = false;
   bool quit_ = false;
   bool fullscreen_ = false;
   int windowed_[4] = {100, 100, 1280, 800};

@@ -40,14 +40,16 @@ void App::handle_keys() {
     switch (press.key) {
       case GLFW_KEY_F11: toggle_fullscreen(); break;
       case GLFW_KEY_TAB: settings_.show_panels = !settings_.show_panels; break;
-      case GLFW_KEY_R: model_.requests.push_back(ui::ResetView{}); break;
+      case GLFW_KEY_R: model().requests.push_back(ui::ResetView{}); break;
       case GLFW_KEY_A: settings_.auto_range = true; break;
-      case GLFW_KEY_P: model_.paused_view = !model_.paused_view; break;
-      case GLFW_KEY_S: model_.requests.push_back(ui::SaveScreenshot{}); break;
-      case GLFW_KEY_E: model_.requests.push_back(ui::ExportLapCsv{true}); break;
-      case GLFW_KEY_M: model_.requests.push_back(ui::ExportLapMcap{}); break;
-      case GLFW_KEY_W: model_.requests.push_back(ui::SetShare{!model_.share.on}); break;
+      case GLFW_KEY_P: model().paused_view = !model().paused_view; break;
+      case GLFW_KEY_S: model().requests.push_back(ui::SaveScreenshot{}); break;
+      case GLFW_KEY_E: model().requests.push_back(ui::ExportLapCsv{true}); break;
+      case GLFW_KEY_M: model().requests.push_back(ui::ExportLapMcap{}); break;
+      case GLFW_KEY_W: model().requests.push_back(ui::SetShare{!model().share.on}); break;
       case GLFW_KEY_ESCAPE: view_->clear_ruler(); break;
+      // The next of several sources: the panels' and Alt/Ctrl+drag's, also with the panels hidden.
+      case GLFW_KEY_N: model().requests.push_back(ui::SelectSource{(selected_ + 1) % sources_.size()}); break;
       case GLFW_KEY_Q:
         if (ctrl) quit_ = true;
         break;

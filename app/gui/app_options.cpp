@@ -1,6 +1,10 @@
 #include "app/gui/app_options.h"
 
 #include "app/gui/app_help.h"
+
+#include <algorithm>
+
+#include "app/common/source_list_options.h"
 #include "core/analysis/sector.h"
 #include "core/protocol/model_profile.h"
 
@@ -8,10 +12,56 @@ namespace ydscope::gui {
 
 const char* const kAppHelp = kAppHelpText;
 
+namespace {
+
+// --port more than once, or with --name/--pose; empty for a lone port as before.
+std::vector<SourceChoice> several_ports(const Arguments& args) {
+  if (args.values("port").size() < 2 && !args.has("name") && !args.has("pose")) return {};
+  std::vector<SourceChoice> choices;
+  for (const SourceText& text : source_texts_from(args)) {
+    SourceChoice choice;
+    choice.kind = SourceKind::Port;
+    choice.port = text.port;
+    if (text.model && *text.model != "auto") {
+      if (!find_profile(*text.model))
+        throw UsageError("unknown model '" + *text.model + "'; choose one of " + std::string(model_names()) + ".");
+      choice.model = text.model;
+    }
+    if (text.baud && *text.baud != "auto") choice.baud = parse_baud_text(*text.baud);
+    choice.name = text.name;
+    choice.pose = text.pose;
+    choices.push_back(std::move(choice));
+  }
+  return choices;
+}
+
+// --sim G1,G6,TG30: a virtual lidar of each; empty for a lone model as before.
+std::vector<SourceChoice> several_sims(const std::string& models) {
+  if (models.find(',') == std::string::npos) return {};
+  std::vector<SourceChoice> choices;
+  for (std::size_t start = 0; start <= models.size();) {
+    const std::size_t comma = std::min(models.find(',', start), models.size());
+    const std::string model = models.substr(start, comma - start);
+    const ModelProfile* profile = find_profile(model);
+    if (!profile)
+      throw UsageError("--sim: unknown model '" + model + "'; list models from " + std::string(model_names()) +
+                       " with commas, e.g. --sim G1,G6,TG30.");
+    SourceChoice choice;
+    choice.kind = SourceKind::Sim;
+    choice.model = std::string(profile->name);
+    choice.name = std::string(profile->name);
+    choices.push_back(std::move(choice));
+    start = comma + 1;
+  }
+  return choices;
+}
+
+}  // namespace
+
 AppOptions parse_app_options(std::span<const std::string> raw) {
   const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed", "share-port",
-                        "record"},
-                       {"fullscreen", "once", "share"});
+                        "record", "name", "pose"},
+                       {"fullscreen", "once", "share", "split"}, 0, source_repeatable_options());
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
   if (int(port) + int(sim) + int(replay) > 1)
@@ -22,6 +72,8 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   } else if (sim) {
     options.source = SourceKind::Sim;
     options.model = args.value("sim");
+    options.sources = several_sims(*options.model);
+    if (!options.sources.empty()) options.model = options.sources.front().model;
   } else if (replay) {
     options.source = SourceKind::Replay;
     options.replay_file = *args.value("replay");
@@ -61,6 +113,17 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if (options.source == SourceKind::Auto && (options.model || options.baud)) {
     throw UsageError("--model and --baud go with --port (or --sim MODEL); see ydscope --help.");
   }
+  for (const char* option : {"model", "baud"})  // once per port is for several ports
+    if (args.values(option).size() > 1 && args.values("port").size() < 2)
+      throw UsageError("--" + std::string(option) + " is given twice; give it once (or once per --port).");
+  if ((args.has("name") || args.has("pose")) && !port)
+    throw UsageError("--name and --pose go with --port, once per port; name and place virtual lidars in the Sources panel.");
+  if (port) options.sources = several_ports(args);
+  options.split = args.has("split");
+  if (options.split && options.sources.empty())
+    throw UsageError("--split puts several sources side by side; give --sim with several models or --port more than once.");
+  if (!options.sources.empty() && (options.share || !options.record.empty()))
+    throw UsageError("--share and --record serve or record one source; with several, use ydscope-cli serve or record.");
   return options;
 }
 

@@ -4,12 +4,25 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "app/common/arguments.h"
+#include "core/frame/pose.h"
 
 namespace ydscope::gui {
 
 enum class SourceKind { Auto, Port, Sim, Replay };
+
+// One of several sources started together (--sim G1,G6,TG30, or --port given more than once, or
+// with --name/--pose).
+struct SourceChoice {
+  SourceKind kind = SourceKind::Port;  // Port or Sim
+  std::string port;
+  std::optional<std::string> model;  // Port: fixed model (empty: detect); Sim: the model
+  std::optional<unsigned> baud;
+  std::string name;           // empty: the model's name, or lidar0, lidar1, ...
+  std::optional<Pose> pose;   // empty: a spread that keeps the clouds apart
+};
 
 struct AppOptions {
   SourceKind source = SourceKind::Auto;
@@ -27,6 +40,8 @@ struct AppOptions {
   std::string record;                // --record ydrec|mcap|both: record from the start (timestamped names)
   bool share = false;                // --share: serve the source to Foxglove from the start
   std::uint16_t share_port = 8765;   // --share-port N: where Share listens (127.0.0.1; 0 a free port)
+  bool split = false;                 // --split: several sources side by side (View > split)
+  std::vector<SourceChoice> sources;  // several at once (then they, not the fields above, are the source)
 };
 
 // Throws UsageError (the shared parser's, app/common/arguments.h) with one sentence for a bad command line.

@@ -20,13 +20,13 @@ namespace ydscope::gui {
 void App::carry_out_requests(int framebuffer_width, int framebuffer_height) {
   // Taken first: carrying one out may not add to the list being walked.
   std::vector<ui::UiRequest> requests;
-  requests.swap(model_.requests);
+  requests.swap(model().requests);
   for (const ui::UiRequest& request : requests) carry_out(request, framebuffer_width, framebuffer_height);
   follow_replay();
 }
 
 void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int framebuffer_height) {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   using ui::CommandControl;
   std::visit(
       [&](const auto& r) {
@@ -34,37 +34,37 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         if constexpr (std::is_same_v<R, ui::ConnectRequest>) {
           if (r.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = r.address;
           leave_source();
-          source_.stop();
+          source().stop();
           start_clean();
           m.banner.clear();
           start(r);
         } else if constexpr (std::is_same_v<R, ui::Disconnect>) {
           leave_source();
-          source_.stop();
+          source().stop();
           start_clean();
-          has_source_ = false;
+          sel().has_source = false;
           m.source_text.clear();
           m.banner.clear();
         } else if constexpr (std::is_same_v<R, ui::RefreshPorts>) {
           m.ports = discover_ports();
         } else if constexpr (std::is_same_v<R, ui::ControlReplay>) {
           if (!m.replay.available) return;
-          ReplayHandle& replay = source_.replay();
+          ReplayHandle& replay = source().replay();
           replay.set_paused(r.paused);
           replay.set_speed(r.speed);
           replay.set_loop(r.loop);
         } else if constexpr (std::is_same_v<R, ui::SetSimFaults>) {
-          if (SimServer* sim = source_.sim()) sim->set_faults(r.faults);
+          if (SimServer* sim = source().sim()) sim->set_faults(r.faults);
         } else if constexpr (std::is_same_v<R, ui::UnplugSim>) {
-          if (SimServer* sim = source_.sim()) sim->unplug();
+          if (SimServer* sim = source().sim()) sim->unplug();
         } else if constexpr (std::is_same_v<R, ui::ReplugSim>) {
-          if (SimServer* sim = source_.sim()) sim->replug();
+          if (SimServer* sim = source().sim()) sim->replug();
         } else if constexpr (std::is_same_v<R, ui::SetScanHz>) {
-          session_.set_scan_hz(r.hz, ui::track_command(m, CommandControl::ScanFrequency));
+          session().set_scan_hz(r.hz, ui::track_command(m, CommandControl::ScanFrequency));
         } else if constexpr (std::is_same_v<R, ui::SetRangingKhz>) {
-          session_.set_ranging_khz(r.khz, ui::track_command(m, CommandControl::RangingFrequency));
+          session().set_ranging_khz(r.khz, ui::track_command(m, CommandControl::RangingFrequency));
         } else if constexpr (std::is_same_v<R, ui::RefreshHealth>) {
-          session_.refresh_health(ui::track_command(m, CommandControl::Health));
+          session().refresh_health(ui::track_command(m, CommandControl::Health));
         } else if constexpr (std::is_same_v<R, ui::StartRecording>) {
           start_recording(r);
         } else if constexpr (std::is_same_v<R, ui::StopRecording>) {
@@ -73,7 +73,7 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
           if (r.on) start_share();
           else stop_share();
         } else if constexpr (std::is_same_v<R, ui::SetDistanceScale>) {
-          session_.set_distance_scale(r.mm_per_count);
+          session().set_distance_scale(r.mm_per_count);
         } else if constexpr (std::is_same_v<R, ui::ResetView>) {
           view_->reset(settings_);
         } else if constexpr (std::is_same_v<R, ui::SaveScreenshot>) {
@@ -81,14 +81,14 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
           const std::string error = save_framebuffer_png(path, framebuffer_width, framebuffer_height);
           m.status_message = error.empty() ? "saved " + path : error;
         } else if constexpr (std::is_same_v<R, ui::ExportLapCsv>) {
-          if (history_.empty()) {
+          if (history().empty()) {
             m.status_message = "no lap to export yet.";
             return;
           }
           // What is on screen, frozen or live: the view's laps, never a newer one it has not shown.
-          const std::size_t laps = r.every_shown_lap ? history_.size() : 1;
+          const std::size_t laps = r.every_shown_lap ? history().size() : 1;
           const std::string path = timestamped_name("csv");
-          const std::string error = save_text_file(path, ui::shown_laps_csv(history_, laps));
+          const std::string error = save_text_file(path, ui::shown_laps_csv(history(), laps));
           m.status_message = error.empty() ? "exported " + shown_laps_words(laps) + " to " + path : error;
         } else if constexpr (std::is_same_v<R, ui::ExportLapMcap>) {
           export_shown_laps_mcap();
@@ -99,6 +99,8 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
           sync_sectors();
         } else if constexpr (std::is_same_v<R, ui::UnwatchSector>) {
           unwatch_sector(r.index);
+        } else if constexpr (ui::is_source_list_request<R>) {
+          change_sources(r);
         } else {
           static_assert(!sizeof(R), "a request the app does not carry out");
         }
@@ -107,15 +109,15 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
 }
 
 std::string App::shown_laps_words(std::size_t laps) const {
-  const std::string what = laps == 1 ? "lap " + std::to_string(history_.newest().index)
-                                     : std::to_string(laps) + " laps (" + std::to_string(history_.at_age(laps - 1).index) +
-                                           " to " + std::to_string(history_.newest().index) + ")";
-  return what + (model_.paused_view ? " as frozen" : "");
+  const std::string what = laps == 1 ? "lap " + std::to_string(history().newest().index)
+                                     : std::to_string(laps) + " laps (" + std::to_string(history().at_age(laps - 1).index) +
+                                           " to " + std::to_string(history().newest().index) + ")";
+  return what + (model().paused_view ? " as frozen" : "");
 }
 
 void App::export_shown_laps_mcap() {
-  ui::UiModel& m = model_;
-  if (history_.empty()) {
+  ui::UiModel& m = model();
+  if (history().empty()) {
     m.status_message = "no lap to export yet.";
     return;
   }
@@ -126,28 +128,28 @@ void App::export_shown_laps_mcap() {
   const auto steady = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch());
   const std::string path = timestamped_name("mcap");
   const ui::ShownLapsMcap saved = ui::save_shown_laps_mcap(
-      history_, history_.size(), model, recording_metadata_of(s, m.source_text, s.distance_scale > 0 ? std::optional(s.distance_scale) : std::nullopt), (wall_ns - steady).count(), path);
+      history(), history().size(), model, recording_metadata_of(s, m.source_text, s.distance_scale > 0 ? std::optional(s.distance_scale) : std::nullopt), (wall_ns - steady).count(), path);
   m.status_message = saved.error.empty() ? "exported " + shown_laps_words(saved.laps) + " to " + path + " (" +
                                                std::to_string(saved.messages) + " messages on /scan and /points)"
                                          : saved.error;
 }
 
 void App::follow_replay() {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   if (!m.replay.available) return;
-  if (const auto status = source_.replay().status()) {
+  if (const auto status = source().replay().status()) {
     m.replay.position_s = static_cast<double>(status->position_ns) * 1e-9;
     m.replay.duration_s = static_cast<double>(status->duration_ns) * 1e-9;
     m.replay.passes = status->loops;
     // The tab shows what the link does. Taken only when the link's value changes, so a slider
     // being dragged is not pulled back to the value the I/O thread has not caught up with.
-    if (!last_replay_status_ || last_replay_status_->speed != status->speed) m.replay.speed = static_cast<float>(status->speed);
-    if (!last_replay_status_ || last_replay_status_->loop != status->loop) m.replay.loop = status->loop;
-    if (!last_replay_status_ || last_replay_status_->paused != status->paused) m.replay.paused = status->paused;
-    last_replay_status_ = status;
+    if (!sel().last_replay_status || sel().last_replay_status->speed != status->speed) m.replay.speed = static_cast<float>(status->speed);
+    if (!sel().last_replay_status || sel().last_replay_status->loop != status->loop) m.replay.loop = status->loop;
+    if (!sel().last_replay_status || sel().last_replay_status->paused != status->paused) m.replay.paused = status->paused;
+    sel().last_replay_status = status;
   }
   // Without loop the session closes the link at the recording's end and does not reopen it.
-  m.replay.ended = m.snap.state == LinkState::Failed && last_lap_at_.has_value();
+  m.replay.ended = m.snap.state == LinkState::Failed && sel().last_lap_at.has_value();
 }
 
 }  // namespace ydscope::gui

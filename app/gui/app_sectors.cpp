@@ -1,6 +1,6 @@
-// App, the watched sectors: one SectorWatch per sector in the view model, fed every shown lap
-// (drain_laps), outlined on the view, added from the Sectors panel or a Shift+drag, and
-// remembered as settings.ini's `sector = ...` lines.
+// App, the watched sectors: one SectorWatch per sector in the view model (each source its own),
+// fed every shown lap (drain_laps), outlined on the view, added from the Sectors panel or a
+// Shift+drag, and remembered as settings.ini's `sector = ...` lines.
 #include <algorithm>
 #include <cstdio>
 
@@ -13,11 +13,11 @@ std::string App::watch_sector(const std::string& spec) {
   const std::optional<Sector> sector = parse_sector_spec(spec, error);
   if (!sector) return error;
   const std::string canonical = sector_spec(*sector);
-  for (const ui::SectorWatch& w : model_.sectors)
+  for (const ui::SectorWatch& w : model().sectors)
     if (w.spec() == canonical) return "sector " + canonical + " is watched already";
-  if (model_.sectors.size() >= ui::kMaxWatchedSectors)
+  if (model().sectors.size() >= ui::kMaxWatchedSectors)
     return "at most " + std::to_string(ui::kMaxWatchedSectors) + " sectors; remove one first";
-  model_.sectors.emplace_back(*sector);
+  model().sectors.emplace_back(*sector);
   return {};
 }
 
@@ -31,21 +31,24 @@ void App::restore_sectors() {
 }
 
 void App::unwatch_sector(std::size_t index) {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   if (index >= m.sectors.size()) return;
   m.sectors.erase(m.sectors.begin() + static_cast<std::ptrdiff_t>(index));
   sync_sectors();
 }
 
 void App::sync_sectors() {
-  ui::UiModel& m = model_;
-  settings_.sectors.clear();
+  ui::UiModel& m = model();
+  // Each source watches its own sectors; the first one's are remembered (a lone lidar is first).
+  if (selected_ == 0) settings_.sectors.clear();
   std::vector<ui::SectorShape> shapes;
   for (std::size_t i = 0; i < m.sectors.size(); ++i) {
     const Sector& s = m.sectors[i].sector();
-    settings_.sectors.push_back(m.sectors[i].spec());
+    if (selected_ == 0) settings_.sectors.push_back(m.sectors[i].spec());
     shapes.push_back({static_cast<float>(s.from_deg), static_cast<float>(s.width_deg()), "S" + std::to_string(i + 1)});
   }
+  // A sector is angles round one lidar: outlined only while the view is drawn round one.
+  if (sources_.size() > 1) shapes.clear();
   view_->set_sectors(std::move(shapes));
 }
 

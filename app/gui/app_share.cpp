@@ -11,14 +11,14 @@
 namespace ydscope::gui {
 
 void App::start_share() {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   if (share_) return;
   ShareOptions options;
   options.server.port = options_.share_port;
   options.server.port_option = "--share-port";
   options.server.name = "ydscope" + (m.source_text.empty() ? std::string() : " on " + m.source_text);
   std::string error;
-  share_ = SessionShare::start(session_, std::move(options), error);
+  share_ = SessionShare::start(session(), std::move(options), error);
   if (!share_) {
     // One sentence where the user looks; the toggle stays off.
     m.share = {};
@@ -43,19 +43,19 @@ void App::stop_share() {
   if (!share_) return;
   share_->stop();
   share_.reset();
-  model_.share = {};
-  model_.status_message = "sharing stopped";
+  model().share = {};
+  model().status_message = "sharing stopped";
 }
 
 void App::start_recording(const ui::StartRecording& request) {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   using ui::CommandControl;
-  if (!request.path.empty()) session_.start_recording(request.path, ui::track_command(m, CommandControl::Recording));
+  if (!request.path.empty()) session().start_recording(request.path, ui::track_command(m, CommandControl::Recording));
   if (request.mcap_path.empty()) return;
   LiveTopicsOptions options;
   options.mcap_path = request.mcap_path;
   std::string error;
-  mcap_recording_ = LiveTopics::start(session_, std::move(options), error);
+  mcap_recording_ = LiveTopics::start(session(), std::move(options), error);
   if (!mcap_recording_) {
     const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
     m.feedback->finished(CommandControl::Recording, ticket, false, error);
@@ -69,9 +69,9 @@ void App::start_recording(const ui::StartRecording& request) {
 }
 
 void App::stop_recording(const std::string& why) {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   using ui::CommandControl;
-  if (m.snap.recording) session_.stop_recording(ui::track_command(m, CommandControl::Recording));
+  if (m.snap.recording) session().stop_recording(ui::track_command(m, CommandControl::Recording));
   if (!mcap_recording_) return;
   const bool written = mcap_recording_->stop();
   const std::string said = written ? mcap_recording_->file_summary() + why : mcap_recording_->error();
@@ -83,12 +83,12 @@ void App::stop_recording(const std::string& why) {
 }
 
 void App::leave_source() {
-  if (model_.recording()) stop_recording(" (the source changed)");
+  if (model().recording()) stop_recording(" (the source changed)");
   if (share_) share_->topics().detach();
 }
 
 void App::follow_share_and_recording() {
-  ui::UiModel& m = model_;
+  ui::UiModel& m = model();
   if (record_from_start_ && link_state_connected(m.snap.state)) {
     // --record: as the Record tab's Start with an empty name, once there is something to record.
     record_from_start_ = false;
@@ -107,7 +107,7 @@ void App::follow_share_and_recording() {
   }
   if (!share_) return;
   // The new source is served once it scans, so its model and times start the new topics.
-  if (!share_->topics().attached() && has_source_ && m.snap.state == LinkState::Scanning) share_->topics().attach();
+  if (!share_->topics().attached() && sel().has_source && m.snap.state == LinkState::Scanning) share_->topics().attach();
   const auto now = std::chrono::steady_clock::now();
   if (now - share_polled_ >= std::chrono::milliseconds(500)) {
     share_polled_ = now;

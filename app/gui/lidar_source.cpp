@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -17,7 +18,11 @@ namespace {
 std::string sim_link_path() {
   const char* runtime = std::getenv("XDG_RUNTIME_DIR");
   const std::filesystem::path dir = runtime && *runtime ? runtime : std::filesystem::temp_directory_path().string();
-  return (dir / ("ydscope-sim-" + std::to_string(getpid()))).string();
+  // Several virtual lidars in one app each get their own: the first keeps the plain name.
+  static std::atomic<int> started{0};
+  const int n = started++;
+  const std::string suffix = n == 0 ? std::string() : "-" + std::to_string(n + 1);
+  return (dir / ("ydscope-sim-" + std::to_string(getpid()) + suffix)).string();
 }
 
 }  // namespace

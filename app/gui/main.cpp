@@ -191,6 +191,7 @@ int run(const ydscope::gui::AppOptions& options) {
         glfwSwapBuffers(window);
         app->after_present();
       }
+      for (const std::string& line : app->summary()) std::printf("ydscope: %s\n", line.c_str());
     }
   }
   ydscope::pin_loaded_libraries_for_leak_reports();

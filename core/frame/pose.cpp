@@ -30,9 +30,13 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 CommonPoint Pose::to_common(const LapPoint& point) const {
   const double a = radians(point.angle_deg);
   const double r = point.range_mm;
-  // In the lidar's own frame; the upside-down mount mirrors x (a -> 360 - a).
-  const double lx = upside_down ? -r * std::sin(a) : r * std::sin(a);
-  const double ly = r * std::cos(a);
+  return to_common(CommonPoint{static_cast<float>(r * std::sin(a)), static_cast<float>(r * std::cos(a))});
+}
+
+CommonPoint Pose::to_common(CommonPoint own) const {
+  // The upside-down mount mirrors x (a -> 360 - a).
+  const double lx = upside_down ? -static_cast<double>(own.x_mm) : static_cast<double>(own.x_mm);
+  const double ly = own.y_mm;
   const double c = std::cos(radians(yaw_deg));
   const double s = std::sin(radians(yaw_deg));
   return {static_cast<float>(lx * c - ly * s + x_m * 1000.0), static_cast<float>(lx * s + ly * c + y_m * 1000.0)};

@@ -38,6 +38,9 @@ struct Pose {
   // A point of this lidar's lap in the common frame. A point without a return (range 0) lands on
   // the lidar's own position; callers that draw returns skip those first.
   CommonPoint to_common(const LapPoint& point) const;
+  // A point of the lidar's own frame (x = r sin a, y = r cos a, as a single lidar's view draws
+  // it) in the common frame: the view poses a cloud it has already laid out this way.
+  CommonPoint to_common(CommonPoint own) const;
   // Every point of `lap`, in order, into `out` (replaced; its capacity is reused).
   void to_common(const Lap& lap, std::vector<CommonPoint>& out) const;
   // The device angle as the common frame's clockwise-from-forward angle, in [0, 360): what a

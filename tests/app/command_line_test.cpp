@@ -137,6 +137,33 @@ TEST(CommandLine, TheAppsShareAndRecordOptionsRefuseMistakes) {
   for (const char* option : {"--share ", "--share-port N", "--record FORMAT", "W share on/off", "M the shown laps as MCAP"})
     EXPECT_NE(help.find(option), std::string::npos) << option;
 }
+
+// Several sources on the app's command line: the record command's syntax, and a mistake is one
+// sentence and exit 2 before any window opens.
+TEST(CommandLine, TheAppsSeveralSourcesRefuseMistakesInOneSentence) {
+  const auto app = [](const std::string& arguments) { return run_program(YDSCOPE_APP_PATH, arguments); };
+  const std::pair<const char*, const char*> cases[] = {
+      {"--sim G1,G9", "ydscope: --sim: unknown model 'G9'; list models from G1, G6, TG15, TG30, TG50 with commas, e.g. --sim G1,G6,TG30.\n"},
+      {"--sim G1,,G6", "ydscope: --sim: unknown model ''; list models from G1, G6, TG15, TG30, TG50 with commas, e.g. --sim G1,G6,TG30.\n"},
+      {"--port /tmp/a --port /tmp/b --pose 1,2,0", "ydscope: give --pose once per --port (2 ports), not 1 times\n"},
+      {"--port /tmp/a --port /tmp/b --name a --name a", "ydscope: --name a is given to two ports\n"},
+      {"--sim G1,G6 --pose 0,0,0", "ydscope: --name and --pose go with --port, once per port; name and place virtual lidars in the Sources panel.\n"},
+      {"--sim G1,G6 --record ydrec", "ydscope: --share and --record serve or record one source; with several, use ydscope-cli serve or record.\n"},
+      {"--port /tmp/a --model G6 --model G1", "ydscope: --model is given twice; give it once (or once per --port).\n"},
+      {"--sim G6 --split", "ydscope: --split puts several sources side by side; give --sim with several models or --port more than once.\n"},
+  };
+  for (const auto& [arguments, said] : cases) {
+    const auto run = app(arguments);
+    EXPECT_EQ(run.status, 2) << arguments;
+    EXPECT_EQ(run.err, said) << arguments;
+  }
+  const auto bad_pose = app("--port /tmp/a --pose 1,2,x");
+  EXPECT_EQ(bad_pose.status, 2);
+  EXPECT_EQ(bad_pose.err.rfind("ydscope: --pose: ", 0), 0u) << bad_pose.err;
+  const auto help = app("--help").out;
+  for (const char* option : {"--sim G1,G6,TG30", "--name N", "--pose X,Y,YAW"})
+    EXPECT_NE(help.find(option), std::string::npos) << option;
+}
 #endif
 
 }  // namespace

@@ -132,14 +132,14 @@ int main(int argc, char** argv) {
 
   std::this_thread::sleep_for(std::chrono::duration<double>(args.warmup));
   const long ticks0 = bench::cpu_ticks(serve);
-  const long io0 = bench::thread_cpu_ticks(serve, "ydscope-io");
+  const long io0 = bench::thread_ticks(serve, "ydscope-io");
   const std::int64_t from_ns = monotonic_now_ns();
   measuring.store(true);
   std::this_thread::sleep_for(std::chrono::duration<double>(args.seconds));
   measuring.store(false);
   const std::int64_t to_ns = monotonic_now_ns();
   const long ticks1 = bench::cpu_ticks(serve);
-  const long io1 = bench::thread_cpu_ticks(serve, "ydscope-io");
+  const long io1 = bench::thread_ticks(serve, "ydscope-io");
   done.store(true);
   client_thread.join();
   bench::stop(serve);

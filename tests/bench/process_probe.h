@@ -37,9 +37,9 @@ inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_
   return pid;
 }
 
-// utime + stime in clock ticks of a /proc stat file (a process's or a thread's); -1 when gone.
-inline long stat_cpu_ticks(const std::string& stat_path) {
-  std::ifstream stat(stat_path);
+// utime + stime in clock ticks from a /proc stat file (a process's or a thread's); -1 when gone.
+inline long stat_ticks(const std::filesystem::path& stat_file) {
+  std::ifstream stat(stat_file);
   std::string text;
   if (!std::getline(stat, text)) return -1;
   // Fields after the command name (which may hold spaces) start after the last ')'.
@@ -53,17 +53,19 @@ inline long stat_cpu_ticks(const std::string& stat_path) {
   return utime + stime;
 }
 
-inline long cpu_ticks(pid_t pid) { return stat_cpu_ticks("/proc/" + std::to_string(pid) + "/stat"); }
+// utime + stime in clock ticks; -1 when the process is gone.
+inline long cpu_ticks(pid_t pid) { return stat_ticks("/proc/" + std::to_string(pid) + "/stat"); }
 
-// The CPU ticks of the process's threads named `name` (pthread_setname_np), summed.
-inline long thread_cpu_ticks(pid_t pid, const std::string& name) {
+// utime + stime of the process's threads whose name (comm) starts with `prefix`, summed.
+inline long thread_ticks(pid_t pid, const std::string& prefix) {
   long total = 0;
-  std::error_code error;
-  for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", error)) {
-    std::ifstream comm(task.path() / "comm");
-    std::string thread_name;
-    if (!std::getline(comm, thread_name) || thread_name != name) continue;
-    if (const long ticks = stat_cpu_ticks((task.path() / "stat").string()); ticks > 0) total += ticks;
+  std::error_code ec;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", ec)) {
+    std::ifstream comm_file(task.path() / "comm");
+    std::string comm;
+    std::getline(comm_file, comm);
+    if (comm.rfind(prefix, 0) != 0) continue;
+    if (const long ticks = stat_ticks(task.path() / "stat"); ticks > 0) total += ticks;
   }
   return total;
 }

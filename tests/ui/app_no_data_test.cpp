@@ -27,21 +27,6 @@ Reading read(const Image& image) {
   return r;
 }
 
-// Takes screenshots until `good` holds for one (or the deadline passes); returns the last reading.
-template <class Good>
-Reading screenshot_until(pid_t app, const std::filesystem::path& dir, std::set<std::string>& seen, Good good,
-                         std::chrono::seconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  Reading last;
-  while (std::chrono::steady_clock::now() < deadline) {
-    const Image image = screenshot_of(app, dir, seen);
-    if (!image) continue;
-    last = read(image);
-    if (good(last)) return last;
-  }
-  return last;
-}
-
 TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
   const std::filesystem::path dir = fresh_temp_dir("ydscope-bad-day");
@@ -53,14 +38,14 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   std::set<std::string> seen;
 
   const auto live = [](const Reading& r) { return r.points > 300 && r.overlay_words < 400; };
-  const Reading before = screenshot_until(app, dir, seen, live, std::chrono::seconds(30));
+  const Reading before = screenshot_until(app, dir, seen, read, live, std::chrono::seconds(30));
   EXPECT_GT(before.points, 300) << "the live scan never showed";
   EXPECT_LT(before.overlay_words, 400) << "a live view must carry no overlay";
 
   // A crash, not a clean exit: the pseudo-terminal's other end vanishes mid-stream.
   stop_process(sim, SIGKILL);
   const auto dimmed = [&](const Reading& r) { return r.points < before.points / 10 && r.overlay_words > 1500; };
-  const Reading dead = screenshot_until(app, dir, seen, dimmed, std::chrono::seconds(20));
+  const Reading dead = screenshot_until(app, dir, seen, read, dimmed, std::chrono::seconds(20));
   EXPECT_LT(dead.points, before.points / 10) << "the old scan stays bright after the lidar died";
   EXPECT_GT(dead.overlay_words, 1500) << "no large overlay words over the view";
 
@@ -70,7 +55,7 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   sim = spawn_in(dir, sim_argv);
   const bool back = wait_for_path(link, std::chrono::seconds(15));
   EXPECT_TRUE(back) << "the virtual lidar did not come back at " << link;
-  const Reading after = back ? screenshot_until(app, dir, seen, live, std::chrono::seconds(40)) : Reading{};
+  const Reading after = back ? screenshot_until(app, dir, seen, read, live, std::chrono::seconds(40)) : Reading{};
   EXPECT_GT(after.points, 300) << "the scan did not come back after the lidar returned";
   EXPECT_LT(after.overlay_words, 400) << "the overlay stayed after the lidar returned";
 

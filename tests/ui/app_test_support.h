@@ -14,6 +14,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -146,6 +147,21 @@ inline Image screenshot_of(pid_t app, const std::filesystem::path& dir, std::set
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return {};
+}
+
+// Takes screenshots of `app` until `good(read(image))` holds for one or `timeout` passes; returns
+// the last reading (a default one when no screenshot came).
+template <class Read, class Good>
+auto screenshot_until(pid_t app, const std::filesystem::path& dir, std::set<std::string>& seen, Read read, Good good,
+                      std::chrono::seconds timeout) {
+  decltype(read(std::declval<const Image&>())) last{};
+  for (const auto deadline = std::chrono::steady_clock::now() + timeout; std::chrono::steady_clock::now() < deadline;) {
+    const Image image = screenshot_of(app, dir, seen);
+    if (!image) continue;
+    last = read(image);
+    if (good(last)) break;
+  }
+  return last;
 }
 
 }  // namespace ydscope::test

@@ -58,6 +58,21 @@ TEST(SidebarFit, EveryTabFitsAnEightHundredPixelWindow) {
     EXPECT_LE(scroll_needed(m, tab), 0.0f) << "tab " << static_cast<int>(tab) << " needs scrolling at 800 px";
 }
 
+// Several lidars: the selector over the tabs takes a line, and every tab must still fit.
+TEST(SidebarFit, EveryTabFitsWithTheSourceSelectorToo) {
+  HeadlessImGui imgui(1280.0f, 800.0f);
+  UiModel m = busy_model();
+  for (const char* name : {"G1", "G6", "TG30"}) {
+    SourceRow row;
+    row.look.name = name;
+    row.look.colour = source_colour(m.sources.size());
+    row.legend = std::string(name) + ": scanning";
+    m.sources.push_back(row);
+  }
+  for (const SidebarTab tab : {SidebarTab::Lidar, SidebarTab::View, SidebarTab::Statistics})
+    EXPECT_LE(scroll_needed(m, tab), 0.0f) << "tab " << static_cast<int>(tab) << " needs scrolling at 800 px";
+}
+
 TEST(SidebarFit, TheSidebarLeavesTheViewMostOfASmallWindow) {
   HeadlessImGui imgui(1024.0f, 568.0f);
   UiModel m = busy_model();

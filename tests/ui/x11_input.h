@@ -48,6 +48,36 @@ class X11Hands {
     XFlush(display_);
   }
 
+  // A key held down (a modifier for a drag) until key_up; sent like tap's.
+  void key_down(KeySym keysym) {
+    send(KeyPress, XKeysymToKeycode(display_, keysym), next_time_);
+    next_time_ += 50;
+    XFlush(display_);
+  }
+  void key_up(KeySym keysym) {
+    send(KeyRelease, XKeysymToKeycode(display_, keysym), next_time_);
+    next_time_ += 50;
+    XFlush(display_);
+  }
+
+  // The left button pressed or let go where the pointer is (window coordinates = screen ones
+  // without a window manager).
+  void left_button(bool down, int x, int y) {
+    XButtonEvent event{};
+    event.type = down ? ButtonPress : ButtonRelease;
+    event.display = display_;
+    event.window = window_;
+    event.root = DefaultRootWindow(display_);
+    event.time = next_time_;
+    event.x = event.x_root = x;
+    event.y = event.y_root = y;
+    event.button = Button1;
+    event.same_screen = True;
+    next_time_ += 50;
+    XSendEvent(display_, window_, True, down ? ButtonPressMask : ButtonReleaseMask, reinterpret_cast<XEvent*>(&event));
+    XFlush(display_);
+  }
+
   // Screen coordinates (without a window manager the app's window sits at 0,0); works with no
   // window open too, to park the pointer before the app starts.
   void move_pointer(int x, int y) {

@@ -27,22 +27,6 @@ std::string model_label(int choice, const char* none = "detect") {
   return std::string(profiles[static_cast<std::size_t>(choice - 1)].name);
 }
 
-bool model_combo(const char* label, int& choice, const char* none) {
-  const auto profiles = all_profiles();
-  bool changed = false;
-  const int first = none ? 0 : 1;
-  if (!none && choice < 1) choice = 1;
-  if (ImGui::BeginCombo(label, model_label(choice, none).c_str())) {
-    for (int i = first; i <= static_cast<int>(profiles.size()); ++i) {
-      if (ImGui::Selectable(model_label(i, none).c_str(), i == choice)) {
-        choice = i;
-        changed = true;
-      }
-    }
-    ImGui::EndCombo();
-  }
-  return changed;
-}
 
 void port_section(UiModel& m) {
   ImGui::TextDisabled("Serial port or tcp://host:port");
@@ -256,6 +240,23 @@ void share_section(UiModel& m) {
 }
 
 }  // namespace
+
+bool model_combo(const char* label, int& choice, const char* none) {
+  const auto profiles = all_profiles();
+  bool changed = false;
+  const int first = none ? 0 : 1;
+  if (!none && choice < 1) choice = 1;
+  if (ImGui::BeginCombo(label, model_label(choice, none).c_str())) {
+    for (int i = first; i <= static_cast<int>(profiles.size()); ++i) {
+      if (ImGui::Selectable(model_label(i, none).c_str(), i == choice)) {
+        choice = i;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
 
 void link_state_text(LinkState state, const char* message) {
   ImVec4 colour{0.7f, 0.7f, 0.7f, 1.0f};

@@ -116,6 +116,10 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::RadioButton("motion", &mode, 3);
   help_marker("Returns closer than the room learned over the last 5 s (people walking past) hot, with fading trails; "
               "the room calm. The booth view's default.");
+  if (m.several_sources() || v.colours.mode == ColourMode::Source) {
+    ImGui::SameLine();
+    ImGui::RadioButton("source", &mode, 4);
+  }
   v.colours.mode = static_cast<ColourMode>(mode);
   if (v.colours.mode != ColourMode::Flag && v.colours.mode != ColourMode::Motion) {
     int palette = static_cast<int>(v.colours.palette);
@@ -144,6 +148,11 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::Checkbox("grid", &v.show_grid);
   ImGui::SameLine();
   ImGui::Checkbox("auto-range", &v.auto_range);
+  if (m.several_sources()) {
+    ImGui::SameLine();
+    ImGui::Checkbox("split", &v.split_view);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Up to four sources side by side, each around itself");
+  }
   if (ImGui::Button("Reset view")) m.requests.push_back(ResetView{});
   ImGui::SameLine();
   if (ImGui::Button(m.paused_view ? "Resume" : "Freeze")) m.paused_view = !m.paused_view;

@@ -15,6 +15,14 @@ void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
 void draw_plots_panel(const UiModel& model);
 void draw_sectors_panel(UiModel& model);
+// Several sources: the selector over the tabs (which source the panels show and command), and the
+// Sources tab (the list, hide/pause, pose, add and remove).
+void draw_source_selector(UiModel& model);
+void draw_sources_panel(UiModel& model);
+// Several sources: a line per source over the view, its colour and its state in words.
+void draw_source_legend(const UiModel& model, float view_left, float view_width);
+// One source's legend line at `top_left` (a tile of the split view); `selected` rings its swatch.
+void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected);
 
 // The whole left sidebar (full window height). Returns its width in pixels so the polar view can
 // use the rest of the window.
@@ -27,7 +35,7 @@ float status_band_height();
 // The booth view (full screen): model, state and rates in large type, and the colour legend.
 void draw_booth_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 // When model.view_state says the picture is not live: dim the view and say why in large type.
-void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height);
+void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height, float view_top = 0.0f);
 
 // Small helpers shared by the panels.
 // The colour of words of this severity over the view: green, blue, amber, red.
@@ -43,5 +51,8 @@ void link_state_text(LinkState state, const char* message);
 // outcome for a few seconds).
 CommandCallback track_command(UiModel& model, CommandControl control);
 void command_feedback_line(UiModel& model, CommandControl control);
+// A combo of the models, 1-based in all_profiles(); `none` names choice 0 ("detect"), or null
+// when a model must be chosen. True when the choice changed.
+bool model_combo(const char* label, int& choice, const char* none);
 
 }  // namespace ydscope::ui

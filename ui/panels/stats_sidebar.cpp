@@ -70,6 +70,7 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
     // Three tabs, so each one's panels fit an 800 px tall window without scrolling: the lidar and
     // its settings, how it is drawn, and the numbers.
+    draw_source_selector(m);
     if (ImGui::BeginTabBar("sidebar")) {
       const int wanted = m.show_sidebar_tab;
       const auto tab = [&m](const char* name, SidebarTab which) {
@@ -93,15 +94,19 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
         draw_plots_panel(m);
         ImGui::EndTabItem();
       }
+      if (ImGui::BeginTabItem("Sources")) {
+        draw_sources_panel(m);
+        ImGui::EndTabItem();
+      }
       if (wanted == m.show_sidebar_tab) m.show_sidebar_tab = -1;
       // The keys, one hover away instead of a row of their own.
       ImGui::TabItemButton("keys", ImGuiTabItemFlags_Trailing);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Tab: hide the panels   F11: full-screen   R: reset view   A: auto-range\n"
                           "P: freeze   S: screenshot   E: shown laps as CSV   M: as MCAP   W: share on/off\n"
-                          "Esc: clear the ruler   Ctrl+Q: quit\n"
+                          "N: next source   Esc: clear the ruler   Ctrl+Q: quit\n"
                           "Wheel: zoom   drag: pan   double-click: reset   right-click twice: ruler\n"
-                          "Shift+drag: watch a sector");
+                          "Shift+drag: watch a sector   Alt+drag / Ctrl+drag: move / turn the selected source");
       ImGui::EndTabBar();
     }
     ImGui::PopItemWidth();

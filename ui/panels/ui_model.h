@@ -64,6 +64,13 @@ struct McapRecordingState {
   std::uint64_t laps = 0;
 };
 
+// One line of the Sources panel and of the view's legend.
+struct SourceRow {
+  SourceLook look;
+  std::string legend;  // "G6: no data 5 s, reconnecting"
+  bool dim = false;    // its data stopped
+};
+
 struct UiModel {
   // ---- filled by the app each frame -------------------------------------------------------------
   SessionSnapshot snap;
@@ -113,6 +120,11 @@ struct UiModel {
   // A .ydrec or an MCAP recording runs (the REC badge).
   bool recording() const { return snap.recording || mcap_recording.active; }
 
+  // Every source in list order, and which one these panels show (filled each frame by the app).
+  std::vector<SourceRow> sources;
+  std::size_t selected_source = 0;
+  bool several_sources() const { return sources.size() > 1; }
+
   // ---- requests from the panels, keys and mouse, carried out in order and cleared by the app -----
   std::vector<UiRequest> requests;
   std::string status_message;  // outcome of the last local action (file saved, ...)
@@ -140,6 +152,10 @@ struct UiModel {
   float scan_target_hz = 10.0f;
   bool distance_scale_override = false;
   float distance_scale_value = 1.0f;
+  int add_source_kind = 0;          // the Sources panel's "add": 0 virtual lidar, 1 port, 2 recording
+  int add_source_model_choice = 2;  // 1-based in all_profiles(): G6
+  int add_source_scene_choice = 1;  // demo
+  char add_source_address[512] = "";  // the port, tcp:// address or recording to add
 };
 
 }  // namespace ydscope::ui

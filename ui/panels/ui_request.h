@@ -7,11 +7,13 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "core/sim/delivery.h"
 #include "core/sim/faults.h"
 #include "core/sim/host_compat.h"
+#include "ui/view/source_set.h"
 
 namespace ydscope::ui {
 
@@ -71,6 +73,25 @@ struct SetShare {
   bool on = false;
 };
 
+// ---- the source list (several lidars at once) ---------------------------------------------------
+// The panels show, and command, this source from the next frame.
+struct SelectSource {
+  std::size_t index = 0;
+};
+// Name, colour, pose, hidden and paused of a source, as edited in the Sources panel or by mouse.
+struct SetSourceLook {
+  std::size_t index = 0;
+  SourceLook look;
+};
+// Another source at the end of the list; `name` may be empty (then the model or "lidar").
+struct AddSource {
+  ConnectRequest request;
+  std::string name;
+};
+struct RemoveSource {
+  std::size_t index = 0;
+};
+
 // ---- the view and files -----------------------------------------------------------------------
 struct ResetView {};
 struct SaveScreenshot {};
@@ -88,6 +109,11 @@ struct UnwatchSector {
 using UiRequest = std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim,
                                ReplugSim, SetScanHz, SetRangingKhz, RefreshHealth, StartRecording, StopRecording,
                                SetDistanceScale, SetShare, ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap,
-                               WatchSector, UnwatchSector>;
+                               WatchSector, UnwatchSector, SelectSource, SetSourceLook, AddSource, RemoveSource>;
+
+// The requests that change the source list rather than one source.
+template <class R>
+inline constexpr bool is_source_list_request = std::is_same_v<R, SelectSource> || std::is_same_v<R, SetSourceLook> ||
+                                               std::is_same_v<R, AddSource> || std::is_same_v<R, RemoveSource>;
 
 }  // namespace ydscope::ui

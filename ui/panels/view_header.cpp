@@ -117,13 +117,13 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   }
 }
 
-void draw_view_overlay(const UiModel& m, float view_left, float view_width, float view_height) {
+void draw_view_overlay(const UiModel& m, float view_left, float view_width, float view_height, float view_top) {
   const ViewState& v = m.view_state;
   if (!v.dim) return;
   // Under the panels, over the cloud: the old picture stays visible but plainly not live.
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  const ImVec2 lo{view_left, 0.0f};
-  const ImVec2 hi{view_left + view_width, view_height};
+  const ImVec2 lo{view_left, view_top};
+  const ImVec2 hi{view_left + view_width, view_top + view_height};
   draw->AddRectFilled(lo, hi, IM_COL32(9, 11, 15, 205));
 
   ImFont* font = big_font();
@@ -138,7 +138,7 @@ void draw_view_overlay(const UiModel& m, float view_left, float view_width, floa
   const float box_w = std::max({head.x, sub.x, det.x}) + 2.0f * body_px;
   const float box_h = head.y + gap + sub.y + (v.detail.empty() ? 0.0f : gap + det.y) + 1.6f * body_px;
   const float cx = view_left + view_width * 0.5f;
-  const float top = view_height * 0.5f - box_h * 0.5f;
+  const float top = view_top + view_height * 0.5f - box_h * 0.5f;
   draw->AddRectFilled({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(20, 24, 32, 235), body_px * 0.6f);
   draw->AddRect({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(90, 100, 120, 255), body_px * 0.6f, 0, 2.0f);
   float y = top + 0.8f * body_px;

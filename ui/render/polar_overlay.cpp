@@ -57,6 +57,20 @@ void sector_wedge(ImDrawList* draw, const ViewTransform& view, const SectorShape
         sector.label.c_str(), edge, true);
 }
 
+// A lidar: a dot and a chevron pointing along its 0 deg (the heading), turned with its pose.
+void lidar_mark(ImDrawList* draw, const ViewTransform& view, const Pose& pose, ImU32 accent, bool selected) {
+  const CommonPoint at = pose.to_common(CommonPoint{0.0f, 0.0f});
+  const CommonPoint ahead = pose.to_common(CommonPoint{0.0f, 1000.0f});
+  const Vec2 o = view.world_to_screen({at.x_mm, at.y_mm});
+  Vec2 forward = view.world_to_screen({ahead.x_mm, ahead.y_mm}) - o;
+  forward = forward * (1.0f / std::max(length(forward), 1e-3f));
+  const Vec2 side{-forward.y, forward.x};
+  draw->AddCircleFilled(im(o), 4.0f, accent, 16);
+  draw->AddCircle(im(o), 9.0f, IM_COL32(255, 255, 255, 90), 24, 1.5f);
+  if (selected) draw->AddCircle(im(o), 15.0f, accent, 32, 2.0f);
+  draw->AddTriangleFilled(im(o + forward * 24.0f), im(o + forward * 13.0f - side * 7.0f), im(o + forward * 13.0f + side * 7.0f), accent);
+}
+
 }  // namespace
 
 void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
@@ -72,12 +86,12 @@ void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
     sector_wedge(draw, view, sector, IM_COL32(249, 168, 37, 38), IM_COL32(249, 168, 37, 200));
   if (in.sweep) sector_wedge(draw, view, *in.sweep, IM_COL32(120, 200, 255, 45), IM_COL32(120, 200, 255, 230));
 
-  // The lidar: a dot and a chevron pointing along 0 deg (the heading).
-  const Vec2 o = view.world_to_screen({0.0f, 0.0f});
-  const ImU32 accent = IM_COL32(255, 255, 255, 230);
-  draw->AddCircleFilled(im(o), 4.0f, accent, 16);
-  draw->AddCircle(im(o), 9.0f, IM_COL32(255, 255, 255, 90), 24, 1.5f);
-  draw->AddTriangleFilled(im(o + Vec2{0.0f, -24.0f}), im(o + Vec2{-7.0f, -13.0f}), im(o + Vec2{7.0f, -13.0f}), accent);
+  if (in.marks.empty()) {
+    lidar_mark(draw, view, {}, IM_COL32(255, 255, 255, 230), false);
+  } else {
+    for (const SourceMark& mark : in.marks)
+      lidar_mark(draw, view, mark.pose, IM_COL32(mark.colour.r, mark.colour.g, mark.colour.b, 230), mark.selected);
+  }
 
   if (in.hover) {
     const Vec2 p = view.world_to_screen(in.hover->world);

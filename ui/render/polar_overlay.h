@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/frame/pose.h"
+#include "ui/view/geometry.h"
 #include "ui/view/grid_layout.h"
 #include "ui/view/hit_test.h"
 
@@ -20,6 +22,13 @@ struct SectorShape {
   std::string label;  // "S1"
 };
 
+// Where one of several lidars sits: its position and heading, in its colour.
+struct SourceMark {
+  Pose pose;
+  Rgba8 colour;
+  bool selected = false;  // the one the panels show: ringed
+};
+
 struct OverlayInput {
   const ViewTransform* view = nullptr;
   const GridLayout* grid = nullptr;
@@ -29,6 +38,7 @@ struct OverlayInput {
   std::optional<Vec2> ruler_cursor_world;  // rubber band from the first end to the cursor
   std::vector<SectorShape> sectors;
   std::optional<SectorShape> sweep;        // the sector a Shift+drag is sweeping out
+  std::vector<SourceMark> marks;           // several sources; empty: the lone lidar at the origin
 };
 
 void draw_polar_overlay(ImDrawList* draw, const OverlayInput& input);

@@ -60,6 +60,11 @@ void PolarView::handle_input(ViewSettings& settings, bool pointer_in_window, dou
         swept_ = {shape->from_deg, std::fmod(shape->from_deg + shape->width_deg, 360.0f)};
       sweep_from_deg_.reset();
     }
+  } else if (pose_drag_enabled_ && (io.KeyAlt || io.KeyCtrl) && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+    // The selected source's cloud follows the pointer (Alt) or turns with it (Ctrl).
+    const Vec2 before = view_.screen_to_world(mouse - Vec2{io.MouseDelta.x, io.MouseDelta.y});
+    pose_drag_ = PoseDrag{pose_drag_ ? pose_drag_->from_world : before, *cursor_world_, io.KeyCtrl};
+    settings.auto_range = false;  // a view that refits mid-drag would pull the cloud from under the pointer
   } else if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     reset(settings);
   } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
@@ -80,6 +85,12 @@ std::optional<SectorShape> PolarView::sweep_shape() const {
   return shape;
 }
 
+std::optional<PoseDrag> PolarView::take_pose_drag() {
+  auto drag = pose_drag_;
+  pose_drag_.reset();
+  return drag;
+}
+
 std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
   auto swept = swept_;
   swept_.reset();
@@ -87,13 +98,15 @@ std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
 }
 
 void PolarView::auto_range(const LapHistory& history, const ViewSettings& settings) {
-  // Asked every frame, lap or not, so turning auto-range back on is seen the frame it happens.
-  const float target = history.empty() ? 0.0f : robust_max_range_mm(history.newest().points, 0.93f) * 1.1f;
-  if (const auto range = fit_.update(settings.auto_range, target)) view_.fit_range(*range);
+  auto_range_to(history.empty() ? 0.0f : robust_max_range_mm(history.newest().points, 0.93f) * 1.1f, settings);
 }
 
-const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings,
-                                               const MotionBackground* motion, float phase) {
+void PolarView::auto_range_to(float extent_mm, const ViewSettings& settings) {
+  // Asked every frame, lap or not, so turning auto-range back on is seen the frame it happens.
+  if (const auto range = fit_.update(settings.auto_range, extent_mm)) view_.fit_range(*range);
+}
+
+ColourParams PolarView::colours_for(const ViewSettings& settings, float phase, bool several_laps) {
   // With auto-range the range palette spans what is shown, so a 30 m TG scan and a 3 m room both
   // use all of it; a manual view keeps the panel's near/far.
   ColourParams colours = settings.colours;
@@ -102,15 +115,35 @@ const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const 
     colours.far_mm = fit_.fitted_mm();
   }
   if (!(colours == last_colours_) || !(settings.interference == last_settings_.interference)) dirty_ = true;
-  if (phase != last_phase_ && history.size() > 1) dirty_ = true;  // one lap alone does not fade
+  if (phase != last_phase_ && several_laps) dirty_ = true;  // one lap alone does not fade
   last_settings_ = settings;
   last_colours_ = colours;
+  return colours;
+}
+
+void PolarView::upload_if_dirty(float phase) {
+  renderer_.upload_points(vertices_);
+  ++gl_generation_;
+  dirty_ = false;
+  last_phase_ = phase;
+}
+
+const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings,
+                                               const MotionBackground* motion, float phase) {
+  const ColourParams colours = colours_for(settings, phase, history.size() > 1);
   if (dirty_) {
     stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion, phase);
-    renderer_.upload_points(vertices_);
-    ++gl_generation_;
-    dirty_ = false;
-    last_phase_ = phase;
+    upload_if_dirty(phase);
+  }
+  return stats_;
+}
+
+const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings, float phase) {
+  const bool several_laps = std::any_of(layers.begin(), layers.end(), [](const SourceLayer& l) { return l.history && l.history->size() > 1; });
+  const ColourParams colours = colours_for(settings, phase, several_laps);
+  if (dirty_) {
+    stats_ = build_source_clouds(layers, colours, settings.interference, vertices_, scratch_, phase);
+    upload_if_dirty(phase);
   }
   return stats_;
 }
@@ -135,6 +168,7 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
   overlay.ruler_cursor_world = cursor_world_;
   overlay.sectors = sectors_;
   overlay.sweep = sweep_shape();
+  overlay.marks = marks_;
   if (hover_cursor_ && !history.empty()) overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
 }

@@ -4,6 +4,7 @@
 // laps or settings change, and drawing through PolarRenderer plus the ImGui overlay.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -13,7 +14,9 @@
 #include "ui/view/hit_test.h"
 #include "ui/view/hover_gate.h"
 #include "ui/view/lap_history.h"
+#include "ui/view/pose_drag.h"
 #include "ui/view/settings.h"
+#include "ui/view/source_cloud.h"
 
 namespace ydscope::ui {
 
@@ -35,14 +38,24 @@ class PolarView {
   void set_sectors(std::vector<SectorShape> sectors) { sectors_ = std::move(sectors); }
   // A sector the user has just swept out with Shift+drag, as {from, to} degrees, once.
   std::optional<std::pair<float, float>> take_swept_sector();
+  // Alt+drag moves and Ctrl+drag turns the selected source (several sources): while enabled, such a
+  // drag no longer pans, and the frame's drag is taken once here.
+  void enable_pose_drag(bool on) { pose_drag_enabled_ = on; }
+  std::optional<PoseDrag> take_pose_drag();
   // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
   void invalidate() { dirty_ = true; }
   // Fits the view to the newest lap when auto-range is on.
   void auto_range(const LapHistory& history, const ViewSettings& settings);
+  // Fits the view to `extent_mm` from the origin when auto-range is on (several sources).
+  void auto_range_to(float extent_mm, const ViewSettings& settings);
   // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics. `phase`
   // (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud of several laps.
   const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings,
                                       const MotionBackground* motion = nullptr, float phase = 0.0f);
+  // The same for several sources, each posed into the common frame (source_cloud.h).
+  const PointCloudStats& update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings, float phase);
+  // Each source's position and heading, drawn in place of the lone lidar's mark (none: that mark).
+  void set_source_marks(std::vector<SourceMark> marks) { marks_ = std::move(marks); }
   // The grid for the current view, and the labels, ruler, sectors and hover box into ImGui's
   // background draw list (under the panels). Before ImGui::Render.
   void lay_out(const LapHistory& history, const ViewSettings& settings);
@@ -83,7 +96,15 @@ class PolarView {
   float sweep_turned_deg_ = 0.0f;
   std::optional<std::pair<float, float>> swept_;
 
+  std::vector<PointVertex> scratch_;  // one source's cloud before it is posed
+  std::vector<SourceMark> marks_;
+  bool pose_drag_enabled_ = false;
+  std::optional<PoseDrag> pose_drag_;
+
   std::optional<SectorShape> sweep_shape() const;
+  // The colours to build with this frame; marks the cloud dirty when they or the filter changed.
+  ColourParams colours_for(const ViewSettings& settings, float phase, bool several_laps);
+  void upload_if_dirty(float phase);
 };
 
 }  // namespace ydscope::ui

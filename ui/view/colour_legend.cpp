@@ -45,6 +45,9 @@ ColourLegend describe_legend(const ColourParams& colours, int persistence_laps) 
       legend.title = "motion";
       legend.swatches = {{motion_colour(true), "moving (closer than the room)"}, {motion_colour(false), "the room"}};
       break;
+    case ColourMode::Source:
+      legend.title = "source";  // the app adds a swatch per source: only it knows them
+      break;
     case ColourMode::Flag:
       legend.title = "interference flag";
       legend.swatches = {{flag_colour(PointFlag::None), "no flag"},

@@ -47,6 +47,7 @@ std::string_view colour_mode_name(ColourMode mode) {
     case ColourMode::Flag: return "interference flag";
     case ColourMode::LapAge: return "lap age";
     case ColourMode::Motion: return "motion";
+    case ColourMode::Source: return "source";
   }
   return "?";
 }
@@ -92,6 +93,8 @@ Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age,
     case ColourMode::LapAge: c = sample_palette(params.palette, 1.0f - age); break;
     // Older laps' hot points, fading, are the trails of whoever walked past.
     case ColourMode::Motion: c = motion_colour(moving); break;
+    // A lone lidar has no other to tell apart from: white; several get their colours in source_cloud.
+    case ColourMode::Source: c = {235, 235, 235, 255}; break;
   }
   if (params.fade_old_laps) {
     // The newest lap is opaque; the oldest kept one is barely there.

@@ -10,7 +10,8 @@
 namespace ydscope::ui {
 
 // Motion: returns closer than the learned room hot, the room calm (motion_background.h).
-enum class ColourMode : std::uint8_t { Range, Flag, LapAge, Motion };
+// Source: each lidar's own colour when several are shown (source_cloud.h).
+enum class ColourMode : std::uint8_t { Range, Flag, LapAge, Motion, Source };
 enum class Palette : std::uint8_t { Turbo, Viridis };
 
 std::string_view colour_mode_name(ColourMode mode);

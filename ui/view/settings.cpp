@@ -78,6 +78,7 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       else if (value == "flag") s.colours.mode = ColourMode::Flag;
       else if (value == "age") s.colours.mode = ColourMode::LapAge;
       else if (value == "motion") s.colours.mode = ColourMode::Motion;
+      else if (value == "source") s.colours.mode = ColourMode::Source;
     } else if (key == "palette") {
       if (value == "turbo") s.colours.palette = Palette::Turbo;
       else if (value == "viridis") s.colours.palette = Palette::Viridis;
@@ -105,8 +106,14 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.show_grid = *b;
     } else if (key == "smooth" && b) {
       s.smooth = *b;
+    } else if (key == "split_view" && b) {
+      s.split_view = *b;
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
+    } else if (key == "source") {
+      std::string error;
+      if (auto look = parse_source_line(value, error)) s.sources.push_back(std::move(*look));
+      else if (notes) notes->push_back("source = " + value + " is left out: " + error);
     } else if (key == "sector") {
       std::string error;
       if (s.sectors.size() >= kMaxWatchedSectors) {
@@ -126,6 +133,7 @@ std::string format_settings(const ViewSettings& s) {
   const char* mode = s.colours.mode == ColourMode::Range    ? "range"
                      : s.colours.mode == ColourMode::Flag   ? "flag"
                      : s.colours.mode == ColourMode::Motion ? "motion"
+                     : s.colours.mode == ColourMode::Source ? "source"
                                                             : "age";
   auto yes = [](bool v) { return v ? "true" : "false"; };
   out << "# ydscope view settings; written on exit\n"
@@ -143,8 +151,10 @@ std::string format_settings(const ViewSettings& s) {
       << "show_panels = " << yes(s.show_panels) << "\n"
       << "show_grid = " << yes(s.show_grid) << "\n"
       << "smooth = " << yes(s.smooth) << "\n"
+      << "split_view = " << yes(s.split_view) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
+  for (const SourceLook& source : s.sources) out << "source = " << format_source_line(source) << "\n";
   return out.str();
 }
 

@@ -8,6 +8,7 @@
 
 #include "ui/view/colour_map.h"
 #include "ui/view/point_cloud.h"
+#include "ui/view/source_set.h"
 
 namespace ydscope::ui {
 
@@ -28,8 +29,12 @@ struct ViewSettings {
   // Draw at the display's rate so persistence fades between laps; off, the view redraws once a
   // lap (cheaper with software rendering).
   bool smooth = true;
+  // Several sources: two to four side by side, each around itself, instead of one common view.
+  bool split_view = false;
   std::string last_replay_file;
   std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
+  // Sources by name: a source of a remembered name gets its pose and colour back.
+  std::vector<SourceLook> sources;
 
   friend bool operator==(const ViewSettings&, const ViewSettings&) = default;
 };

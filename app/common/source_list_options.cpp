@@ -1,0 +1,68 @@
+#include "app/common/source_list_options.h"
+
+#include <cctype>
+#include <charconv>
+
+namespace ydscope {
+namespace {
+
+// Each port's value of --`option`: none, one for all (when `shared`), or one per port.
+std::vector<std::optional<std::string>> per_port(const Arguments& args, const std::string& option, std::size_t ports,
+                                                 bool shared) {
+  const std::vector<std::string> given = args.values(option);
+  if (given.empty()) return std::vector<std::optional<std::string>>(ports);
+  if (given.size() == 1 && shared) return std::vector<std::optional<std::string>>(ports, given.front());
+  if (given.size() != ports)
+    throw UsageError("give --" + option + (shared ? " once for all ports or" : "") + " once per --port (" +
+                     std::to_string(ports) + " ports), not " + std::to_string(given.size()) + " times");
+  return {given.begin(), given.end()};
+}
+
+}  // namespace
+
+bool valid_source_name(const std::string& name) {
+  if (name.empty() || name.size() > 64 || !std::isalpha(static_cast<unsigned char>(name.front()))) return false;
+  for (const char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+std::set<std::string> source_repeatable_options() { return {"port", "name", "pose", "model", "baud"}; }
+
+std::vector<SourceText> source_texts_from(const Arguments& args) {
+  const std::vector<std::string> ports = args.values("port");
+  const auto names = per_port(args, "name", ports.size(), false);
+  const auto poses = per_port(args, "pose", ports.size(), false);
+  const auto models = per_port(args, "model", ports.size(), true);
+  const auto bauds = per_port(args, "baud", ports.size(), true);
+  std::vector<SourceText> sources;
+  std::set<std::string> seen_names;
+  for (std::size_t i = 0; i < ports.size(); ++i) {
+    SourceText source;
+    source.port = ports[i];
+    source.model = models[i];
+    source.baud = bauds[i];
+    source.name = names[i].value_or("lidar" + std::to_string(i));
+    if (!valid_source_name(source.name))
+      throw UsageError("--name '" + source.name + "' must be letters, digits and _, starting with a letter (up to 64)");
+    if (!seen_names.insert(source.name).second) throw UsageError("--name " + source.name + " is given to two ports");
+    if (poses[i]) {
+      std::string error;
+      const auto pose = parse_pose(*poses[i], error);
+      if (!pose) throw UsageError("--pose: " + error);
+      source.pose = *pose;
+    }
+    sources.push_back(std::move(source));
+  }
+  return sources;
+}
+
+std::uint32_t parse_baud_text(const std::string& text) {
+  std::uint32_t parsed = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), parsed);
+  if (ec != std::errc() || end != text.data() + text.size() || parsed < 50 || parsed > 4'000'000)
+    throw UsageError("--baud must be a whole number from 50 to 4000000, not '" + text + "'");
+  return parsed;
+}
+
+}  // namespace ydscope

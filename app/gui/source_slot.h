@@ -1,0 +1,56 @@
+#pragma once
+// One lidar of the app's source list: how the view shows it (name, colour, pose, hidden), the
+// session and where its bytes come from, its laps for the view and for the measurements, and the
+// panels' model of it. Each source keeps its own, so the selector switches the panels from one
+// to another without losing what either measured.
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include "app/gui/lidar_source.h"
+#include "core/link/session.h"
+#include "ui/panels/ui_model.h"
+#include "ui/view/lap_history.h"
+#include "ui/view/lap_phase.h"
+#include "ui/view/motion_background.h"
+#include "ui/view/source_set.h"
+
+namespace ydscope::gui {
+
+struct SourceSlot {
+  // `wake` runs on the I/O thread after each lap (the window's empty event).
+  SourceSlot(ui::SourceLook look_in, std::function<void()> wake)
+      : look(std::move(look_in)),
+        session(16, std::move(wake), "view"),
+        measured_laps(session.lap_stream().subscribe("statistics", 32)),
+        source(session) {}
+  SourceSlot(const SourceSlot&) = delete;
+  SourceSlot& operator=(const SourceSlot&) = delete;
+
+  // How long since its newest lap, or nothing before the first.
+  std::optional<double> seconds_since_lap(std::chrono::steady_clock::time_point now) const {
+    if (!last_lap_at) return std::nullopt;
+    return std::chrono::duration<double>(now - *last_lap_at).count();
+  }
+
+  ui::SourceLook look;
+  ui::UiModel model;
+  Session session;
+  std::unique_ptr<LapSubscription> measured_laps;  // every lap, for rates, plots, sectors, health
+  Lap measured_lap;
+  LidarSource source;  // after the session it drives, so it stops first
+  ui::LapHistory history;
+  ui::LapPhase lap_phase;     // how far between two laps, for fading persistence at display rate
+  ui::MotionBackground motion;  // the room, learned from the laps the view shows
+  Lap lap;                      // the newest drained
+  std::optional<double> last_set_scan_hz;
+  std::optional<ReplayStatus> last_replay_status;  // the replay link's, as follow_replay last saw it
+  std::optional<std::chrono::steady_clock::time_point> last_lap_at;  // newest lap of this source
+  bool has_source = false;
+  std::int64_t pending_latency_rx_ns = 0;  // newest lap drawn this frame, measured after present
+};
+
+}  // namespace ydscope::gui

@@ -1,0 +1,207 @@
+// Several lidars in one view: where a posed source's points land, the by-source colours, the
+// dimming of a source whose data stopped, and what its legend line says.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "ui/view/grid_layout.h"
+#include "ui/view/source_cloud.h"
+#include "ui/view/settings.h"
+#include "ui/view/source_set.h"
+
+namespace ydscope::ui {
+namespace {
+
+LapHistory history_of(std::initializer_list<LapPoint> points) {
+  LapHistory history(1);
+  Lap lap;
+  lap.points.assign(points);
+  history.push(lap);
+  return history;
+}
+
+ColourParams solid(ColourMode mode) {
+  ColourParams colours;
+  colours.mode = mode;
+  colours.fade_old_laps = false;
+  return colours;
+}
+
+TEST(SourceCloud, APointLandsWhereItsSourcesPosePutsIt) {
+  // 1 m straight to the lidar's right; the lidar sits at (2 m, 0) turned 90 degrees
+  // counter-clockwise, so its right points forward in the common frame: (2000, 1000) mm.
+  const LapHistory history = history_of({{90.0f, 1000.0f, PointFlag::None}});
+  SourceLayer layer;
+  layer.history = &history;
+  layer.pose.x_m = 2.0;
+  layer.pose.yaw_deg = 90.0;
+  std::vector<PointVertex> out, scratch;
+  const auto stats = build_source_clouds(std::span(&layer, 1), solid(ColourMode::Range), {}, out, scratch);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(stats.drawn, 1u);
+  EXPECT_NEAR(out[0].x, 2000.0f, 0.5f);
+  EXPECT_NEAR(out[0].y, 1000.0f, 0.5f);
+}
+
+TEST(SourceCloud, AnUpsideDownSourceMirrorsItsCloud) {
+  const LapHistory history = history_of({{90.0f, 1000.0f, PointFlag::None}});
+  SourceLayer layer;
+  layer.history = &history;
+  layer.pose.y_m = -1.0;
+  layer.pose.upside_down = true;
+  std::vector<PointVertex> out, scratch;
+  build_source_clouds(std::span(&layer, 1), solid(ColourMode::Range), {}, out, scratch);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(out[0].x, -1000.0f, 0.5f);  // its right is the common frame's left
+  EXPECT_NEAR(out[0].y, -1000.0f, 0.5f);
+}
+
+TEST(SourceCloud, BySourceColoursEachCloudItsOwnAndDimsAStoppedOne) {
+  const LapHistory a = history_of({{0.0f, 1000.0f, PointFlag::None}, {10.0f, 2000.0f, PointFlag::None}});
+  const LapHistory b = history_of({{0.0f, 500.0f, PointFlag::None}, {0.0f, 0.0f, PointFlag::None}});
+  SourceLayer layers[2];
+  layers[0].history = &a;
+  layers[0].colour = source_colour(0);
+  layers[1].history = &b;
+  layers[1].colour = source_colour(1);
+  layers[1].dim = true;
+  std::vector<PointVertex> out, scratch;
+  const auto stats = build_source_clouds(layers, solid(ColourMode::Source), {}, out, scratch);
+  ASSERT_EQ(out.size(), 3u);  // the range-0 point is not drawn
+  EXPECT_EQ(stats.drawn, 3u);
+  EXPECT_EQ(stats.newest_no_return, 1u);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(out[i].colour.r, source_colour(0).r);
+    EXPECT_EQ(out[i].colour.b, source_colour(0).b);
+    EXPECT_EQ(out[i].colour.a, 255);
+  }
+  EXPECT_EQ(out[2].colour.g, source_colour(1).g);
+  EXPECT_EQ(out[2].colour.a, static_cast<std::uint8_t>(255 * kDimmedSourceAlpha + 0.5f));
+}
+
+TEST(SourceCloud, ByRangeKeepsThePaletteButStillPoses) {
+  const LapHistory history = history_of({{0.0f, 1000.0f, PointFlag::None}});
+  SourceLayer layer;
+  layer.history = &history;
+  layer.colour = source_colour(2);
+  layer.pose.x_m = -3.0;
+  const ColourParams colours = solid(ColourMode::Range);
+  std::vector<PointVertex> out, scratch;
+  build_source_clouds(std::span(&layer, 1), colours, {}, out, scratch);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].colour, point_colour(colours, {0.0f, 1000.0f, PointFlag::None}, 0.0f));
+  EXPECT_NEAR(out[0].x, -3000.0f, 0.5f);
+}
+
+TEST(SourceCloud, AutoRangeReachesTheFarthestSourcesReturns) {
+  const LapHistory history = history_of({{0.0f, 1000.0f, PointFlag::None}});
+  SourceLayer layers[2];
+  layers[0].history = &history;
+  layers[1].history = &history;
+  layers[1].pose.x_m = 3.0;
+  layers[1].pose.y_m = 4.0;
+  // 5 m from the origin, plus its own robust range (to the histogram's 10 cm bin).
+  EXPECT_NEAR(robust_extent_mm(layers, 0.93f), 5000.0f + robust_max_range_mm(history.newest().points, 0.93f), 1.0f);
+}
+
+TEST(SourceSet, TheFirstColoursAreDistinct) {
+  std::set<std::tuple<int, int, int>> seen;
+  for (std::size_t i = 0; i < kDistinctSourceColours; ++i) {
+    const Rgba8 c = source_colour(i);
+    seen.insert({c.r, c.g, c.b});
+  }
+  EXPECT_EQ(seen.size(), kDistinctSourceColours);
+  EXPECT_EQ(source_colour(kDistinctSourceColours), source_colour(0));
+}
+
+TEST(SourceSet, AnAddedSourceTakesAFreeColourAndAFreePlace) {
+  // The second of three was removed: its colour and place are free again.
+  EXPECT_EQ(unused_source_colour({source_colour(0), source_colour(2)}), source_colour(1));
+  EXPECT_EQ(unused_source_colour({}), source_colour(0));
+  const std::vector<Pose> three = spread_poses(3);
+  const Pose added = free_spread_pose({three[0], three[2]});
+  EXPECT_NEAR(added.x_m, three[1].x_m, 1e-9);
+  EXPECT_NEAR(added.y_m, three[1].y_m, 1e-9);
+  for (const Pose& p : {three[0], three[2]}) EXPECT_GE(std::hypot(p.x_m - added.x_m, p.y_m - added.y_m), 1.0);
+}
+
+TEST(SourceSet, SpreadPosesKeepLidarsApart) {
+  EXPECT_EQ(spread_poses(1), std::vector<Pose>(1));  // one lidar stays at the origin
+  for (const Pose& pose : spread_poses(5)) {
+    EXPECT_GT(pose.yaw_deg, -180.0);
+    EXPECT_LE(pose.yaw_deg, 180.0);
+    EXPECT_FALSE(std::signbit(pose.yaw_deg) && pose.yaw_deg == 0.0) << "-0 shows as -0.0 in the panel";
+  }
+  for (std::size_t count : {2u, 3u, 4u}) {
+    const auto poses = spread_poses(count);
+    ASSERT_EQ(poses.size(), count);
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t j = i + 1; j < count; ++j)
+        EXPECT_GE(std::hypot(poses[i].x_m - poses[j].x_m, poses[i].y_m - poses[j].y_m), 3.0) << count << " " << i << " " << j;
+  }
+}
+
+TEST(SourceSet, LegendSaysScanningOrHowLongNothingCameAndWhy) {
+  ViewState live;
+  live.live = true;
+  live.status = "scanning";
+  EXPECT_EQ(source_legend_line("G1", live, 0.1), "G1: scanning");
+  ViewStateInput input;
+  input.has_source = true;
+  input.state = LinkState::Reconnecting;
+  input.address = "/dev/pts/3";
+  input.seconds_since_lap = 5.2;
+  EXPECT_EQ(source_legend_line("G6", describe_view_state(input), input.seconds_since_lap),
+            "G6: no data 5 s, reconnecting");
+  input.seconds_since_lap = 0.3;  // just gone: no age yet
+  EXPECT_EQ(source_legend_line("G6", describe_view_state(input), input.seconds_since_lap), "G6: no data, reconnecting");
+  input.seconds_since_lap = 5.2;
+  input.state = LinkState::Scanning;  // scanning, says the link, but nothing for a while
+  EXPECT_EQ(source_legend_line("G6", describe_view_state(input), input.seconds_since_lap), "G6: no data 5 s");
+  input.state = LinkState::Connecting;
+  input.seconds_since_lap.reset();
+  EXPECT_EQ(source_legend_line("TG30", describe_view_state(input), std::nullopt), "TG30: connecting");
+}
+
+TEST(SourceSet, NewNamesNeverRepeatATakenOne) {
+  EXPECT_EQ(unique_source_name("G6", {}), "G6");
+  EXPECT_EQ(unique_source_name("G6", {"G6", "G6_2"}), "G6_3");
+  EXPECT_EQ(unique_source_name("", {"G1"}), "lidar");
+}
+
+TEST(SourceSet, RememberedSourcesRoundTripAndABadLineIsSkippedWithANote) {
+  ViewSettings settings;
+  SourceLook look;
+  look.name = "front_left";
+  look.colour = {255, 150, 40, 255};
+  look.pose.x_m = 0.25;
+  look.pose.y_m = -1.5;
+  look.pose.yaw_deg = 90;
+  look.pose.upside_down = true;
+  settings.sources = {look};
+  std::vector<std::string> notes;
+  EXPECT_EQ(parse_settings(format_settings(settings), &notes).sources, settings.sources);
+  EXPECT_TRUE(notes.empty());
+  // A pose dragged by mouse is kept to the millimetre and the hundredth of a degree.
+  look.pose.x_m = 3.3149449005126956;
+  look.pose.yaw_deg = -118.6637740153493;
+  EXPECT_EQ(format_source_line(look), "front_left; 3.315,-1.5,-118.66,flip; #FF9628");
+
+  const std::string text = "source = G6; 1,2,30; #3CD2FF\n"
+                           "source = bad pose; 1,2; #FFFFFF\n"
+                           "source = G1; 1,2,30; orange\n"
+                           "source = no separators\n"
+                           "source = TG30;0,0,0,flip;#EB50DC\n";
+  const ViewSettings parsed = parse_settings(text, &notes);
+  ASSERT_EQ(parsed.sources.size(), 2u);
+  EXPECT_EQ(parsed.sources[0].name, "G6");
+  EXPECT_EQ(parsed.sources[0].colour, (Rgba8{60, 210, 255, 255}));
+  EXPECT_EQ(parsed.sources[0].pose.yaw_deg, 30.0);
+  EXPECT_EQ(parsed.sources[1].name, "TG30");
+  EXPECT_TRUE(parsed.sources[1].pose.upside_down);
+  ASSERT_EQ(notes.size(), 3u);  // one sentence per line left out
+  EXPECT_NE(notes[1].find("orange"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ydscope::ui

@@ -1,0 +1,108 @@
+// Several lidars: which one the panels show, and the Sources tab that lists, places, hides,
+// pauses, adds and removes them. Every change is a request the app carries out after the frame.
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "core/protocol/model_profile.h"
+#include "ui/panels/panels.h"
+
+namespace ydscope::ui {
+namespace {
+
+ImVec4 swatch_colour(Rgba8 c) { return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f}; }
+
+void swatch(Rgba8 colour) {
+  ImGui::ColorButton("##colour", swatch_colour(colour), ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
+                     {ImGui::GetFontSize(), ImGui::GetFontSize()});
+}
+
+// Position in metres and yaw in degrees, as --pose spells them; each edit is sent at once.
+void pose_fields(UiModel& m, std::size_t index, const SourceLook& look) {
+  SourceLook edited = look;
+  float xy[2] = {static_cast<float>(look.pose.x_m), static_cast<float>(look.pose.y_m)};
+  float yaw = static_cast<float>(look.pose.yaw_deg);
+  bool changed = ImGui::DragFloat2("x, y m", xy, 0.01f, -static_cast<float>(kMaxPoseOffsetM), static_cast<float>(kMaxPoseOffsetM), "%.2f");
+  changed |= ImGui::DragFloat("yaw deg", &yaw, 0.5f, -360.0f, 360.0f, "%.1f");
+  changed |= ImGui::Checkbox("upside down", &edited.pose.upside_down);
+  if (!changed) return;
+  edited.pose.x_m = xy[0];
+  edited.pose.y_m = xy[1];
+  edited.pose.yaw_deg = yaw;
+  m.requests.push_back(SetSourceLook{index, edited});
+}
+
+void add_source_controls(UiModel& m) {
+  static constexpr const char* kScenes[] = {"room", "demo", "booth"};
+  section("add a source");
+  ImGui::RadioButton("virtual lidar", &m.add_source_kind, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("port", &m.add_source_kind, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("recording", &m.add_source_kind, 2);
+  AddSource add;
+  if (m.add_source_kind == 0) {
+    model_combo("model##add", m.add_source_model_choice, nullptr);
+    ImGui::Combo("scene##add", &m.add_source_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
+    add.request.kind = ConnectRequest::Kind::Sim;
+    add.request.model = std::string(all_profiles()[static_cast<std::size_t>(m.add_source_model_choice - 1)].name);
+    add.request.scene = kScenes[m.add_source_scene_choice];
+  } else {
+    // A port path or tcp://host:port, or a .ydrec to play round and round.
+    ImGui::InputText(m.add_source_kind == 1 ? "address##add" : "file##add", m.add_source_address, sizeof m.add_source_address);
+    add.request.kind = m.add_source_kind == 1 ? ConnectRequest::Kind::Port : ConnectRequest::Kind::Replay;
+    add.request.address = m.add_source_address;
+  }
+  const bool ready = m.add_source_kind == 0 || m.add_source_address[0] != '\0';
+  if (!ready) ImGui::BeginDisabled();
+  if (ImGui::Button("Add")) m.requests.push_back(add);
+  if (!ready) ImGui::EndDisabled();
+}
+
+}  // namespace
+
+void draw_source_selector(UiModel& m) {
+  if (!m.several_sources() || m.selected_source >= m.sources.size()) return;
+  const SourceRow& current = m.sources[m.selected_source];
+  swatch(current.look.colour);
+  ImGui::SameLine();
+  if (ImGui::BeginCombo("panels show", current.look.name.c_str())) {
+    for (std::size_t i = 0; i < m.sources.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      swatch(m.sources[i].look.colour);
+      ImGui::SameLine();
+      if (ImGui::Selectable(m.sources[i].legend.c_str(), i == m.selected_source)) m.requests.push_back(SelectSource{i});
+      ImGui::PopID();
+    }
+    ImGui::EndCombo();
+  }
+  help_marker("The Lidar, View and Statistics panels show this source, and their commands go to it only.");
+}
+
+void draw_sources_panel(UiModel& m) {
+  for (std::size_t i = 0; i < m.sources.size(); ++i) {
+    const SourceRow& row = m.sources[i];
+    ImGui::PushID(static_cast<int>(i));
+    swatch(row.look.colour);
+    ImGui::SameLine();
+    if (ImGui::Selectable(row.legend.c_str(), i == m.selected_source)) m.requests.push_back(SelectSource{i});
+    SourceLook look = row.look;
+    if (ImGui::Checkbox("hide", &look.hidden)) m.requests.push_back(SetSourceLook{i, look});
+    ImGui::SameLine();
+    if (ImGui::Checkbox("pause", &look.paused)) m.requests.push_back(SetSourceLook{i, look});
+    if (m.several_sources()) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("remove")) m.requests.push_back(RemoveSource{i});
+    }
+    if (i == m.selected_source) {
+      pose_fields(m, i, row.look);
+      ImGui::TextDisabled("Alt+drag on the view moves it, Ctrl+drag turns it");
+    }
+    ImGui::Separator();
+    ImGui::PopID();
+  }
+  add_source_controls(m);
+}
+
+}  // namespace ydscope::ui
