@@ -65,8 +65,10 @@ SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config) 
 
 void write_device_fields(JsonOut& out, const SessionSnapshot& s) {
   out.raw(R"("model":)");
-  if (s.device && s.device->profile) out.string(s.device->profile->name);
-  else out.raw("null");
+  if (s.device && s.device->profile)
+    out.string(s.device->profile->name);
+  else
+    out.raw("null");
   if (s.device) {
     out.raw(R"(,"model_code":)");
     out.integer(s.device->model_code);

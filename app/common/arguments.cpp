@@ -29,7 +29,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   }
   return d[a.size()][b.size()];
@@ -46,8 +47,10 @@ class OptionNames {
   // "unknown option -p; did you mean --port?" -- or, with nothing close, where to look.
   [[noreturn]] void unknown(const std::string& arg, std::string_view name) const {
     std::string message = "unknown option " + arg + "; ";
-    if (const auto guess = suggestion(arg, name)) message += "did you mean --" + *guess + "?";
-    else message += "see --help for the options";
+    if (const auto guess = suggestion(arg, name))
+      message += "did you mean --" + *guess + "?";
+    else
+      message += "see --help for the options";
     throw UsageError(message);
   }
 
@@ -92,9 +95,12 @@ Arguments::Arguments(std::span<const std::string> args, std::set<std::string> va
       return;
     }
     std::string message = "unexpected argument '" + arg + "'";
-    if (const auto option = names.option_named(arg)) message += "; did you mean --" + *option + "?";
-    else if (max_positionals == 0) message += ": this command takes only options (see --help)";
-    else message += " after '" + positionals_.back() + "' (see --help)";
+    if (const auto option = names.option_named(arg))
+      message += "; did you mean --" + *option + "?";
+    else if (max_positionals == 0)
+      message += ": this command takes only options (see --help)";
+    else
+      message += " after '" + positionals_.back() + "' (see --help)";
     throw UsageError(message);
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -140,9 +146,7 @@ Arguments::Arguments(std::span<const std::string> args, std::set<std::string> va
   }
 }
 
-bool Arguments::has(const std::string& name) const {
-  return flags_seen_.count(name) > 0 || values_.count(name) > 0;
-}
+bool Arguments::has(const std::string& name) const { return flags_seen_.count(name) > 0 || values_.count(name) > 0; }
 
 std::optional<std::string> Arguments::value(const std::string& name) const {
   const auto it = values_.find(name);

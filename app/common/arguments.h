@@ -27,8 +27,8 @@ class Arguments {
   // max_positionals arguments that are not options are accepted.
   // `repeatable` value options may be given more than once (record --port A --port B); value()
   // gives the first, values() all in order. Any other option given twice is a mistake.
-  Arguments(std::span<const std::string> args, std::set<std::string> value_options,
-            std::set<std::string> flags, std::size_t max_positionals = 0, std::set<std::string> repeatable = {});
+  Arguments(std::span<const std::string> args, std::set<std::string> value_options, std::set<std::string> flags,
+            std::size_t max_positionals = 0, std::set<std::string> repeatable = {});
 
   bool help_requested() const { return help_; }
   bool version_requested() const { return version_; }

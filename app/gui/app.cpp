@@ -32,7 +32,8 @@ int model_choice(const std::optional<std::string>& model, int none) {
 }
 
 std::int64_t steady_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
 }
 
 }  // namespace
@@ -142,7 +143,8 @@ std::string App::start(const ui::ConnectRequest& request) {
   model().replay.speed = static_cast<float>(request.replay_speed);
   model().replay.loop = request.replay_loop;
   model().source_warnings = source().warnings();
-  for (const std::string& warning : model().source_warnings) std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
+  for (const std::string& warning : model().source_warnings)
+    std::fprintf(stderr, "ydscope: warning: %s\n", warning.c_str());
   return error;
 }
 
@@ -170,7 +172,8 @@ void App::measure_lap(SourceSlot& s, const Lap& lap) {
     s.model.ct_health = lap.health_bits;
     s.model.ct_health_trusted = lap.ct_info_trusted();
     if (lap.ct_info_trusted()) {
-      s.model.timeline.observe("CT health", *lap.health_bits, s.model.now_s, ui::describe_health_bits(Model::G1, *lap.health_bits));
+      s.model.timeline.observe("CT health", *lap.health_bits, s.model.now_s,
+                               ui::describe_health_bits(Model::G1, *lap.health_bits));
     }
   }
   if (lap.crc == CrcVerdict::Mismatch) ++s.model.crc_mismatch_laps;
@@ -245,7 +248,8 @@ void App::toggle_fullscreen() {
     glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3], 0);
     fullscreen_ = false;
     settings_.show_panels = true;
-    if (windowed_colour_mode_ && settings_.colours.mode == ui::ColourMode::Motion) settings_.colours.mode = *windowed_colour_mode_;
+    if (windowed_colour_mode_ && settings_.colours.mode == ui::ColourMode::Motion)
+      settings_.colours.mode = *windowed_colour_mode_;
     windowed_colour_mode_.reset();
     if (windowed_persistence_) settings_.persistence_laps = *windowed_persistence_;
     windowed_persistence_.reset();
@@ -278,10 +282,14 @@ void App::frame() {
   fill_source_rows();
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
-  if (const SourceSlot* pacing = fading_source()) shown_phase_ = pacing->lap_phase.at(seconds_since_start(last_frame_));
-  else if (!settings_.smooth) shown_phase_ = 0.0f;
-  if (split_active()) lay_out_split_view(sidebar, view_w, static_cast<float>(win_h));
-  else lay_out_common_view(sidebar, view_w, static_cast<float>(win_h));
+  if (const SourceSlot* pacing = fading_source())
+    shown_phase_ = pacing->lap_phase.at(seconds_since_start(last_frame_));
+  else if (!settings_.smooth)
+    shown_phase_ = 0.0f;
+  if (split_active())
+    lay_out_split_view(sidebar, view_w, static_cast<float>(win_h));
+  else
+    lay_out_common_view(sidebar, view_w, static_cast<float>(win_h));
   ui::draw_view_header(model(), sidebar, view_w);
   model().booth = fullscreen_;
   if (model().booth) {
@@ -299,9 +307,9 @@ void App::frame() {
 
 bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {
   std::uint64_t signature = ui::draw_signature(*ImGui::GetDrawData());
-  for (const std::uint64_t part : {gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
-                                   static_cast<std::uint64_t>(settings_.show_grid),
-                                   static_cast<std::uint64_t>(settings_.point_size_px * 1000.0f)})
+  for (const std::uint64_t part :
+       {gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
+        static_cast<std::uint64_t>(settings_.show_grid), static_cast<std::uint64_t>(settings_.point_size_px * 1000.0f)})
     signature = ui::mix_signature(signature, part);
   // A screenshot reads the frame it is taken in, so that frame is always drawn; so is one the
   // window system lost (uncovered, resized).
@@ -329,7 +337,8 @@ void App::after_present() {
   // Frame time = the work of a frame (draining, drawing, presenting), not the wait between frames.
   const auto now = std::chrono::steady_clock::now();
   model().frame_ms.add(std::chrono::duration<double, std::milli>(now - last_frame_).count());
-  if (last_present_) model().frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - *last_present_).count());
+  if (last_present_)
+    model().frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - *last_present_).count());
   last_present_ = now;
   if (sel().pending_latency_rx_ns != 0) {
     const double latency_ms = static_cast<double>(steady_ns() - sel().pending_latency_rx_ns) * 1e-6;

@@ -48,7 +48,8 @@ class App {
   std::uint64_t laps_shown() const { return model().laps_shown; }
   // Laps are arriving (the link is scanning).
   bool streaming() const {
-    return std::any_of(sources_.begin(), sources_.end(), [](const auto& s) { return s->model.snap.state == LinkState::Scanning; });
+    return std::any_of(sources_.begin(), sources_.end(),
+                       [](const auto& s) { return s->model.snap.state == LinkState::Scanning; });
   }
   // The picture changes between laps (persistence or a booth banner fading): the loop draws at
   // the display's rate.
@@ -72,7 +73,8 @@ class App {
   // another that does (one lidar unplugged must not stop the others' smooth drawing); or none.
   const SourceSlot* fading_source() const {
     const auto fading = [&](const SourceSlot& s) {
-      return settings_.smooth && s.model.snap.state == LinkState::Scanning && !s.model.paused_view && s.history.size() > 1;
+      return settings_.smooth && s.model.snap.state == LinkState::Scanning && !s.model.paused_view &&
+             s.history.size() > 1;
     };
     if (fading(sel())) return &sel();
     for (const auto& slot : sources_)
@@ -185,8 +187,8 @@ class App {
   std::vector<ui::SourceLayer> layers_;  // this frame's, reused
   std::vector<ui::SourceMark> marks_;
   std::vector<std::pair<Pose, bool>> drawn_layers_key_;  // pose and dimming the cloud was built with
-  float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
-  std::optional<ui::ColourMode> windowed_colour_mode_;  // restored on leaving the booth view
+  float shown_phase_ = 0.0f;                             // the phase the cloud was last drawn at (held while frozen)
+  std::optional<ui::ColourMode> windowed_colour_mode_;   // restored on leaving the booth view
   std::optional<int> windowed_persistence_;              // likewise
   std::string shown_banner_;                             // the banner whose age model() holds
   double pointer_moved_s_ = 0.0;                         // the booth view hides a resting pointer
@@ -197,10 +199,10 @@ class App {
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::optional<std::chrono::steady_clock::time_point> last_present_;
   bool drew_ = false;
-  std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
-  bool window_damaged_ = true;         // the window system asks for the picture again
-  std::unique_ptr<SessionShare> share_;               // while Share is on
-  std::unique_ptr<LiveTopics> mcap_recording_;        // while an MCAP recording runs
+  std::uint64_t drawn_signature_ = 0;                   // draw_signature of the last frame rendered
+  bool window_damaged_ = true;                          // the window system asks for the picture again
+  std::unique_ptr<SessionShare> share_;                 // while Share is on
+  std::unique_ptr<LiveTopics> mcap_recording_;          // while an MCAP recording runs
   std::chrono::steady_clock::time_point share_polled_;  // clients are asked twice a second
   bool record_from_start_ = false;                      // --record, until the source connects
   bool quit_ = false;

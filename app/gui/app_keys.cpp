@@ -12,16 +12,16 @@ namespace ydscope::gui {
 void App::install_key_callback() {
   glfwSetWindowUserPointer(window_, this);
   // ImGui's backend installed its callback first; ours forwards to it, so text fields still type.
-  imgui_key_callback_ = glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
-    auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
-    if (app->imgui_key_callback_) app->imgui_key_callback_(window, key, scancode, action, mods);
-    if (action == GLFW_PRESS) app->key_presses_.push_back({key, mods});
-  });
+  imgui_key_callback_ =
+      glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
+        auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+        if (app->imgui_key_callback_) app->imgui_key_callback_(window, key, scancode, action, mods);
+        if (action == GLFW_PRESS) app->key_presses_.push_back({key, mods});
+      });
   // Not the keys', but it needs the same pointer: an uncovered or resized window is drawn again
   // even when the frame would otherwise repeat the last one.
-  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* window) {
-    static_cast<App*>(glfwGetWindowUserPointer(window))->window_damaged_ = true;
-  });
+  glfwSetWindowRefreshCallback(
+      window_, [](GLFWwindow* window) { static_cast<App*>(glfwGetWindowUserPointer(window))->window_damaged_ = true; });
 }
 
 void App::remove_key_callback() {

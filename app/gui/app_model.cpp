@@ -41,8 +41,10 @@ void App::update_model(SourceSlot& slot) {
   // The target field starts from the device's set value whenever that changes.
   if (s.scan_hz && s.scan_hz != slot.last_set_scan_hz) slot.model.scan_target_hz = static_cast<float>(*s.scan_hz);
   slot.last_set_scan_hz = s.scan_hz;
-  slot.model.timeline.observe("link", static_cast<std::uint32_t>(s.state), slot.model.now_s, std::string(link_state_name(s.state)));
-  slot.model.plots.sample_counters({slot.model.now_s, s.counters.bytes_per_s, s.counters.checksum_errors, s.counters.crc8_failures});
+  slot.model.timeline.observe("link", static_cast<std::uint32_t>(s.state), slot.model.now_s,
+                              std::string(link_state_name(s.state)));
+  slot.model.plots.sample_counters(
+      {slot.model.now_s, s.counters.bytes_per_s, s.counters.checksum_errors, s.counters.crc8_failures});
   if (s.health) {
     const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;
     const char* source = s.health->command == Command::HealthStatusBits ? "A5 92" : "A5 91";
@@ -72,7 +74,8 @@ void App::update_view_state(SourceSlot& slot) {
   in.replay_passes = slot.model.replay.passes;
   if (s.device && s.device->profile) in.model = s.device->profile->name;
   in.source_warnings = slot.model.source_warnings;
-  if (slot.last_lap_at) in.seconds_since_lap = std::chrono::duration<double>(std::chrono::steady_clock::now() - *slot.last_lap_at).count();
+  if (slot.last_lap_at)
+    in.seconds_since_lap = std::chrono::duration<double>(std::chrono::steady_clock::now() - *slot.last_lap_at).count();
   slot.model.view_state = ui::describe_view_state(in);
   if (slot.model.view_state.give_up && slot.model.replay.available && !slot.model.replay.paused) {
     slot.source.replay().set_paused(true);  // another pass would only spin

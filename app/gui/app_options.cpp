@@ -59,8 +59,9 @@ std::vector<SourceChoice> several_sims(const std::string& models) {
 }  // namespace
 
 AppOptions parse_app_options(std::span<const std::string> raw) {
-  const Arguments args(raw, {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed", "share-port",
-                        "record", "name", "pose"},
+  const Arguments args(raw,
+                       {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed",
+                        "share-port", "record", "name", "pose"},
                        {"fullscreen", "once", "share", "split"}, 0, source_repeatable_options());
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
@@ -106,8 +107,10 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if (!options.record.empty() && options.record != "ydrec" && options.record != "mcap" && options.record != "both")
     throw UsageError("--record takes ydrec, mcap or both, not '" + options.record + "'.");
   options.share = args.has("share");
-  if (const auto share_port = args.integer("share-port", 0, 65535)) options.share_port = static_cast<std::uint16_t>(*share_port);
-  if (options.model && !find_profile(*options.model) && !(options.source == SourceKind::Port && *options.model == "auto")) {
+  if (const auto share_port = args.integer("share-port", 0, 65535))
+    options.share_port = static_cast<std::uint16_t>(*share_port);
+  if (options.model && !find_profile(*options.model) &&
+      !(options.source == SourceKind::Port && *options.model == "auto")) {
     throw UsageError("unknown model '" + *options.model + "'; choose one of " + std::string(model_names()) + ".");
   }
   if (options.source == SourceKind::Auto && (options.model || options.baud)) {
@@ -117,11 +120,13 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
     if (args.values(option).size() > 1 && args.values("port").size() < 2)
       throw UsageError("--" + std::string(option) + " is given twice; give it once (or once per --port).");
   if ((args.has("name") || args.has("pose")) && !port)
-    throw UsageError("--name and --pose go with --port, once per port; name and place virtual lidars in the Sources panel.");
+    throw UsageError(
+        "--name and --pose go with --port, once per port; name and place virtual lidars in the Sources panel.");
   if (port) options.sources = several_ports(args);
   options.split = args.has("split");
   if (options.split && options.sources.empty())
-    throw UsageError("--split puts several sources side by side; give --sim with several models or --port more than once.");
+    throw UsageError(
+        "--split puts several sources side by side; give --sim with several models or --port more than once.");
   if (!options.sources.empty() && (options.share || !options.record.empty()))
     throw UsageError("--share and --record serve or record one source; with several, use ydscope-cli serve or record.");
   return options;

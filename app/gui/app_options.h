@@ -20,8 +20,8 @@ struct SourceChoice {
   std::string port;
   std::optional<std::string> model;  // Port: fixed model (empty: detect); Sim: the model
   std::optional<unsigned> baud;
-  std::string name;           // empty: the model's name, or lidar0, lidar1, ...
-  std::optional<Pose> pose;   // empty: a spread that keeps the clouds apart
+  std::string name;          // empty: the model's name, or lidar0, lidar1, ...
+  std::optional<Pose> pose;  // empty: a spread that keeps the clouds apart
 };
 
 struct AppOptions {
@@ -34,12 +34,12 @@ struct AppOptions {
   double replay_speed = 1.0;         // --speed X with --replay
   bool replay_once = false;          // --once with --replay: stop at the end instead of looping
   bool fullscreen = false;
-  std::string screenshot_path;       // --screenshot PNG
-  int frames = 120;                  // --frames N with --screenshot
-  std::optional<std::string> sector; // --sector "FROM:TO [MIN:MAX]": watch it from the start
-  std::string record;                // --record ydrec|mcap|both: record from the start (timestamped names)
-  bool share = false;                // --share: serve the source to Foxglove from the start
-  std::uint16_t share_port = 8765;   // --share-port N: where Share listens (127.0.0.1; 0 a free port)
+  std::string screenshot_path;        // --screenshot PNG
+  int frames = 120;                   // --frames N with --screenshot
+  std::optional<std::string> sector;  // --sector "FROM:TO [MIN:MAX]": watch it from the start
+  std::string record;                 // --record ydrec|mcap|both: record from the start (timestamped names)
+  bool share = false;                 // --share: serve the source to Foxglove from the start
+  std::uint16_t share_port = 8765;    // --share-port N: where Share listens (127.0.0.1; 0 a free port)
   bool split = false;                 // --split: several sources side by side (View > split)
   std::vector<SourceChoice> sources;  // several at once (then they, not the fields above, are the source)
 };

@@ -70,8 +70,10 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         } else if constexpr (std::is_same_v<R, ui::StopRecording>) {
           stop_recording();
         } else if constexpr (std::is_same_v<R, ui::SetShare>) {
-          if (r.on) start_share();
-          else stop_share();
+          if (r.on)
+            start_share();
+          else
+            stop_share();
         } else if constexpr (std::is_same_v<R, ui::SetDistanceScale>) {
           session().set_distance_scale(r.mm_per_count);
         } else if constexpr (std::is_same_v<R, ui::ResetView>) {
@@ -109,9 +111,10 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
 }
 
 std::string App::shown_laps_words(std::size_t laps) const {
-  const std::string what = laps == 1 ? "lap " + std::to_string(history().newest().index)
-                                     : std::to_string(laps) + " laps (" + std::to_string(history().at_age(laps - 1).index) +
-                                           " to " + std::to_string(history().newest().index) + ")";
+  const std::string what = laps == 1
+                               ? "lap " + std::to_string(history().newest().index)
+                               : std::to_string(laps) + " laps (" + std::to_string(history().at_age(laps - 1).index) +
+                                     " to " + std::to_string(history().newest().index) + ")";
   return what + (model().paused_view ? " as frozen" : "");
 }
 
@@ -124,11 +127,15 @@ void App::export_shown_laps_mcap() {
   const SessionSnapshot& s = m.snap;
   const Model model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
   // The laps carry steady-clock receive times; the file wants wall-clock ones.
-  const auto wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch());
-  const auto steady = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch());
+  const auto wall_ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch());
+  const auto steady =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch());
   const std::string path = timestamped_name("mcap");
   const ui::ShownLapsMcap saved = ui::save_shown_laps_mcap(
-      history(), history().size(), model, recording_metadata_of(s, m.source_text, s.distance_scale > 0 ? std::optional(s.distance_scale) : std::nullopt), (wall_ns - steady).count(), path);
+      history(), history().size(), model,
+      recording_metadata_of(s, m.source_text, s.distance_scale > 0 ? std::optional(s.distance_scale) : std::nullopt),
+      (wall_ns - steady).count(), path);
   m.status_message = saved.error.empty() ? "exported " + shown_laps_words(saved.laps) + " to " + path + " (" +
                                                std::to_string(saved.messages) + " messages on /scan and /points)"
                                          : saved.error;
@@ -143,9 +150,11 @@ void App::follow_replay() {
     m.replay.passes = status->loops;
     // The tab shows what the link does. Taken only when the link's value changes, so a slider
     // being dragged is not pulled back to the value the I/O thread has not caught up with.
-    if (!sel().last_replay_status || sel().last_replay_status->speed != status->speed) m.replay.speed = static_cast<float>(status->speed);
+    if (!sel().last_replay_status || sel().last_replay_status->speed != status->speed)
+      m.replay.speed = static_cast<float>(status->speed);
     if (!sel().last_replay_status || sel().last_replay_status->loop != status->loop) m.replay.loop = status->loop;
-    if (!sel().last_replay_status || sel().last_replay_status->paused != status->paused) m.replay.paused = status->paused;
+    if (!sel().last_replay_status || sel().last_replay_status->paused != status->paused)
+      m.replay.paused = status->paused;
     sel().last_replay_status = status;
   }
   // Without loop the session closes the link at the recording's end and does not reopen it.

@@ -25,7 +25,8 @@ void App::restore_sectors() {
   for (const std::string& spec : settings_.sectors) watch_sector(spec);  // checked when read
   if (options_.sector) {
     const std::string error = watch_sector(*options_.sector);
-    if (!error.empty() && error.find("already") == std::string::npos) std::fprintf(stderr, "ydscope: %s\n", error.c_str());
+    if (!error.empty() && error.find("already") == std::string::npos)
+      std::fprintf(stderr, "ydscope: %s\n", error.c_str());
   }
   sync_sectors();
 }

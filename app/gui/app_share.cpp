@@ -92,8 +92,9 @@ void App::follow_share_and_recording() {
   if (record_from_start_ && link_state_connected(m.snap.state)) {
     // --record: as the Record tab's Start with an empty name, once there is something to record.
     record_from_start_ = false;
-    const auto format = options_.record == "mcap" ? ui::RecordFormat::Mcap
-                        : options_.record == "both" ? ui::RecordFormat::Both : ui::RecordFormat::Ydrec;
+    const auto format = options_.record == "mcap"   ? ui::RecordFormat::Mcap
+                        : options_.record == "both" ? ui::RecordFormat::Both
+                                                    : ui::RecordFormat::Ydrec;
     m.record_format = static_cast<int>(format);
     const ui::RecordingPaths paths = ui::recording_paths(format, "");
     m.record_started_s = m.now_s;
@@ -107,7 +108,8 @@ void App::follow_share_and_recording() {
   }
   if (!share_) return;
   // The new source is served once it scans, so its model and times start the new topics.
-  if (!share_->topics().attached() && sel().has_source && m.snap.state == LinkState::Scanning) share_->topics().attach();
+  if (!share_->topics().attached() && sel().has_source && m.snap.state == LinkState::Scanning)
+    share_->topics().attach();
   const auto now = std::chrono::steady_clock::now();
   if (now - share_polled_ >= std::chrono::milliseconds(500)) {
     share_polled_ = now;

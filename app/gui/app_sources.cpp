@@ -128,7 +128,8 @@ void App::change_sources(const ui::AddSource& request) {
   selected_ = previous;
   if (!error.empty()) model().status_message = sources_.back()->look.name + ": " + error;
   select_source(sources_.size() - 1);
-  if (settings_.colours.mode != ui::ColourMode::Source && sources_.size() == 2) settings_.colours.mode = ui::ColourMode::Source;
+  if (settings_.colours.mode != ui::ColourMode::Source && sources_.size() == 2)
+    settings_.colours.mode = ui::ColourMode::Source;
 }
 
 void App::change_sources(const ui::RemoveSource& request) {
@@ -166,8 +167,8 @@ std::vector<std::string> App::summary() const {
     for (const LapConsumerStats& consumer : s.consumers) lost += consumer.dropped;
     char line[256];
     std::snprintf(line, sizeof line, "%s: %llu laps from the device, %llu drawn, %llu lost", slot->look.name.c_str(),
-                  static_cast<unsigned long long>(s.counters.laps), static_cast<unsigned long long>(slot->model.laps_shown),
-                  static_cast<unsigned long long>(lost));
+                  static_cast<unsigned long long>(s.counters.laps),
+                  static_cast<unsigned long long>(slot->model.laps_shown), static_cast<unsigned long long>(lost));
     lines.emplace_back(line);
     if (s.scan_hz) {  // what the device was last set to: each source's own commands
       std::snprintf(line, sizeof line, ", scan rate set to %.1f Hz", *s.scan_hz);

@@ -16,7 +16,8 @@ void App::lay_out_split_view(float left, float width, float height) {
   std::vector<SourceSlot*> shown;
   for (const auto& slot : sources_)
     if (!slot->look.hidden && shown.size() < 4) shown.push_back(slot.get());
-  while (tiles_.size() < shown.size()) tiles_.push_back(std::make_unique<ui::PolarView>(options_.screenshot_path.empty()));
+  while (tiles_.size() < shown.size())
+    tiles_.push_back(std::make_unique<ui::PolarView>(options_.screenshot_path.empty()));
   tiles_.resize(shown.size());
   const std::size_t columns = shown.size() <= 2 ? shown.size() : 2;
   const std::size_t rows = shown.size() <= 2 ? 1 : 2;

@@ -14,7 +14,8 @@ void App::lay_out_common_view(float left, float width, float height) {
   view_->set_viewport({left, 0.0f}, {width, height});
   view_->set_status_band(ui::status_band_height());
   view_->enable_pose_drag(sources_.size() > 1);
-  view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE, seconds_since_start(last_frame_));
+  view_->handle_input(settings_, glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
+                      seconds_since_start(last_frame_));
   if (const auto drag = view_->take_pose_drag()) {  // Alt/Ctrl+drag: the selected source's pose
     ui::SourceLook look = sel().look;
     look.pose = ui::dragged_pose(look.pose, *drag);
@@ -23,7 +24,8 @@ void App::lay_out_common_view(float left, float width, float height) {
   }
   if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
     char spec[48];
-    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first), static_cast<double>(swept->second));
+    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first),
+                  static_cast<double>(swept->second));
     model().requests.push_back(ui::WatchSector{spec});
   }
   // One lidar is drawn as always; several (or one in its source colour) go through the layers.
@@ -31,8 +33,10 @@ void App::lay_out_common_view(float left, float width, float height) {
   const bool layered = several || settings_.colours.mode == ui::ColourMode::Source;
   const auto layers = layered ? source_layers() : std::span<const ui::SourceLayer>();
   view_->set_source_marks(marks_);
-  if (layered) view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings_);
-  else view_->auto_range(history(), settings_);
+  if (layered)
+    view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings_);
+  else
+    view_->auto_range(history(), settings_);
   model().cloud = layered ? view_->update_cloud(layers, settings_, shown_phase_)
                           : view_->update_cloud(history(), settings_, &sel().motion, shown_phase_);
   model().laps_on_screen = history().size();
@@ -42,8 +46,10 @@ void App::lay_out_common_view(float left, float width, float height) {
   static const ui::LapHistory no_laps;
   view_->lay_out(several ? no_laps : history(), settings_);
   // Each source's state in its own line; the booth view's large legend says it there instead.
-  if (several && !(fullscreen_ && settings_.colours.mode == ui::ColourMode::Source)) ui::draw_source_legend(model(), left, width);
-  else ui::draw_view_overlay(model(), left, width, height);
+  if (several && !(fullscreen_ && settings_.colours.mode == ui::ColourMode::Source))
+    ui::draw_source_legend(model(), left, width);
+  else
+    ui::draw_view_overlay(model(), left, width, height);
 }
 
 std::uint64_t App::gl_generation() const {

@@ -59,7 +59,8 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
     }
     case ui::ConnectRequest::Kind::Sim: {
       const ModelProfile* profile = find_profile(request.model.value_or("G6"));
-      if (!profile) return "unknown model " + request.model.value_or("") + "; choose one of " + std::string(model_names()) + ".";
+      if (!profile)
+        return "unknown model " + request.model.value_or("") + "; choose one of " + std::string(model_names()) + ".";
       SimServerOptions options;
       options.device.model = profile->model;
       options.device.scene = request.scene;

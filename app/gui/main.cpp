@@ -92,7 +92,9 @@ int run(const ydscope::gui::AppOptions& options) {
   if (ydscope::ui::window_was_shrunk(work_area, monitor_scale)) glfwWindowHint(GLFW_MAXIMIZED, GLFW_TRUE);
   GLFWwindow* window = glfwCreateWindow(first.width, first.height, "ydscope", nullptr, nullptr);
   if (!window) {
-    std::fprintf(stderr, "ydscope: cannot create an OpenGL 3.3 core window; try LIBGL_ALWAYS_SOFTWARE=1 for Mesa's software renderer.\n");
+    std::fprintf(stderr,
+                 "ydscope: cannot create an OpenGL 3.3 core window; try LIBGL_ALWAYS_SOFTWARE=1 for Mesa's software "
+                 "renderer.\n");
     glfwTerminate();
     return 1;
   }
@@ -126,7 +128,8 @@ int run(const ydscope::gui::AppOptions& options) {
     if (app) {
       // A source that does not start (or a replay without a lap) is said on stderr and on screen
       // (the overlay); a screenshot run still saves that picture, then exits 1.
-      if (const std::string error = app->start_source(); !error.empty()) std::fprintf(stderr, "ydscope: %s\n", error.c_str());
+      if (const std::string error = app->start_source(); !error.empty())
+        std::fprintf(stderr, "ydscope: %s\n", error.c_str());
       // Screenshot mode: at least N frames, and at least a few laps drawn, but never forever.
       constexpr std::uint64_t kLapsBeforeScreenshot = 5;
       const auto started = std::chrono::steady_clock::now();
@@ -146,7 +149,8 @@ int run(const ydscope::gui::AppOptions& options) {
         // Wait for input or the session's wake-up (laps post an empty event); the timeout paces
         // the fading between laps at the display's rate, or keeps the statistics ticking.
         const ydscope::ui::FrameNeeds needs{screenshot_mode, app->animating(), app->streaming()};
-        const double since_frame_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_started).count();
+        const double since_frame_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - frame_started).count();
         glfwWaitEventsTimeout(ydscope::ui::frame_wait_s(needs, since_frame_s, refresh_hz(window, gl_renderer)));
         frame_started = std::chrono::steady_clock::now();
         if (g_content_scale != theme_scale) {
@@ -172,8 +176,8 @@ int run(const ydscope::gui::AppOptions& options) {
             const std::string error = save_framebuffer_png(options.screenshot_path, w, h);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             std::printf("ydscope: wrote %s after %d frames and %llu laps in %.2f s (%.1f ms per frame)\n",
-                        options.screenshot_path.c_str(), frames, static_cast<unsigned long long>(app->laps_shown()), seconds,
-                        1e3 * seconds / frames);
+                        options.screenshot_path.c_str(), frames, static_cast<unsigned long long>(app->laps_shown()),
+                        seconds, 1e3 * seconds / frames);
             if (!error.empty()) {
               std::fprintf(stderr, "ydscope: %s\n", error.c_str());
               exit_code = 1;

@@ -71,8 +71,8 @@ std::optional<SessionConfig> replay_config(const std::string& path, const std::o
   // A replay never reconnects: a file that does not open now will not open in 4 s either (once
   // it retried forever), and one that played to its end is finished.
   config.reconnect = false;
-  config.open_link = [path, options, handle](boost::asio::io_context& io, std::uint32_t, std::string& open_error)
-      -> std::unique_ptr<ByteLink> {
+  config.open_link = [path, options, handle](boost::asio::io_context& io, std::uint32_t,
+                                             std::string& open_error) -> std::unique_ptr<ByteLink> {
     std::shared_ptr<ReplayLink> link = ReplayLink::open(io, path, options, open_error);
     if (!link) return nullptr;
     handle->set(link);

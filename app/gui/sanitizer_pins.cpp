@@ -23,7 +23,8 @@ void pin_loaded_libraries_for_leak_reports() {
   std::vector<std::string> names;
   dl_iterate_phdr(
       [](dl_phdr_info* info, std::size_t, void* out) {
-        if (info->dlpi_name && info->dlpi_name[0]) static_cast<std::vector<std::string>*>(out)->emplace_back(info->dlpi_name);
+        if (info->dlpi_name && info->dlpi_name[0])
+          static_cast<std::vector<std::string>*>(out)->emplace_back(info->dlpi_name);
         return 0;
       },
       &names);

@@ -91,7 +91,8 @@ std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
 }
 
 std::string format_pose(const Pose& pose) {
-  return shortest(pose.x_m) + "," + shortest(pose.y_m) + "," + shortest(pose.yaw_deg) + (pose.upside_down ? ",flip" : "");
+  return shortest(pose.x_m) + "," + shortest(pose.y_m) + "," + shortest(pose.yaw_deg) +
+         (pose.upside_down ? ",flip" : "");
 }
 
 }  // namespace ydscope

@@ -5,7 +5,7 @@ ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth lib
 ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core zlib1g libzstd1 liblz4-1)
 ydscope_packages_package=(help2man dpkg-dev fakeroot file lintian appstream)
 # The house style's checker (scripts/lint), pinned to one version: checks differ between them.
-ydscope_packages_lint=(clang-tidy-14)
+ydscope_packages_lint=(clang-tidy-14 clang-format-14)
 # libFuzzer and the sanitizer runtimes come with Debian's clang (scripts/fuzz, scripts/test --fuzz).
 ydscope_packages_fuzz=(clang-14 libclang-rt-14-dev)
 

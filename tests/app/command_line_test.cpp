@@ -13,7 +13,9 @@ namespace {
 
 using test::run_program;
 
-test::ProgramRun cli(const std::string& arguments) { return run_program(YDSCOPE_CLI_PATH, arguments, {.stdin_from_null = true}); }
+test::ProgramRun cli(const std::string& arguments) {
+  return run_program(YDSCOPE_CLI_PATH, arguments, {.stdin_from_null = true});
+}
 
 // The names under "commands:" in `ydscope-cli --help`.
 std::vector<std::string> listed_commands() {
@@ -22,9 +24,12 @@ std::vector<std::string> listed_commands() {
   std::string line;
   bool in_list = false;
   while (std::getline(overview, line)) {
-    if (line == "commands:") in_list = true;
-    else if (in_list && line.rfind("  ", 0) == 0) names.push_back(line.substr(2, line.find(' ', 2) - 2));
-    else if (in_list) break;
+    if (line == "commands:")
+      in_list = true;
+    else if (in_list && line.rfind("  ", 0) == 0)
+      names.push_back(line.substr(2, line.find(' ', 2) - 2));
+    else if (in_list)
+      break;
   }
   return names;
 }
@@ -54,7 +59,8 @@ TEST(CommandLine, TheSameMistakeGivesTheSameExitCodeInEveryCommand) {
   for (const auto& name : listed_commands()) {
     const auto unknown = cli(name + " --bogus-option 1");
     EXPECT_EQ(unknown.status, 2) << name << ": " << unknown.err;
-    EXPECT_NE(unknown.err.find("ydscope-cli " + name + ": unknown option --bogus-option; see --help"), std::string::npos)
+    EXPECT_NE(unknown.err.find("ydscope-cli " + name + ": unknown option --bogus-option; see --help"),
+              std::string::npos)
         << name << ": " << unknown.err;
     const auto stray = cli(name + " stray-one stray-two");
     EXPECT_EQ(stray.status, 2) << name << ": " << stray.err;
@@ -68,14 +74,16 @@ TEST(CommandLine, TheSameMistakeGivesTheSameExitCodeInEveryCommand) {
 TEST(CommandLine, StrayArgumentsAreRefusedNotIgnored) {
   const auto info = cli("info --port /dev/ydscope-no-such-port garbage");
   EXPECT_EQ(info.status, 2) << info.err;
-  EXPECT_EQ(info.err, "ydscope-cli info: unexpected argument 'garbage': this command takes only options (see --help)\n");
+  EXPECT_EQ(info.err,
+            "ydscope-cli info: unexpected argument 'garbage': this command takes only options (see --help)\n");
   const auto decode = cli("decode --model G6 a.bin b.bin");
   EXPECT_EQ(decode.status, 2);
   EXPECT_EQ(decode.err, "ydscope-cli decode: unexpected argument 'b.bin' after 'a.bin' (see --help)\n");
 }
 
 TEST(CommandLine, NearMissesAreNamed) {
-  EXPECT_EQ(cli("decode --fromat summary x.bin").err, "ydscope-cli decode: unknown option --fromat; did you mean --format?\n");
+  EXPECT_EQ(cli("decode --fromat summary x.bin").err,
+            "ydscope-cli decode: unknown option --fromat; did you mean --format?\n");
   EXPECT_EQ(cli("info -p /dev/ttyUSB0").err, "ydscope-cli info: unknown option -p; did you mean --port?\n");
   EXPECT_EQ(cli("scan --port x --laps").err,
             "ydscope-cli scan: option --laps needs a value (--laps VALUE or --laps=VALUE)\n");
@@ -109,7 +117,9 @@ TEST(CommandLine, AMissingRecordingIsAUsageErrorInEveryCommand) {
 
 #ifdef YDSCOPE_APP_PATH
 TEST(CommandLine, TheAppFollowsTheSameRules) {
-  const auto app = [](const std::string& arguments) { return run_program(YDSCOPE_APP_PATH, arguments, {.stdin_from_null = true}); };
+  const auto app = [](const std::string& arguments) {
+    return run_program(YDSCOPE_APP_PATH, arguments, {.stdin_from_null = true});
+  };
   const auto help = app("--help");
   EXPECT_EQ(help.status, 0);
   EXPECT_EQ(help.out.rfind("usage: ydscope ", 0), 0u) << help.out;
@@ -134,7 +144,8 @@ TEST(CommandLine, TheAppsShareAndRecordOptionsRefuseMistakes) {
   EXPECT_EQ(port.err.find('\n'), port.err.size() - 1) << "one line: " << port.err;
   EXPECT_EQ(app("--shares").err, "ydscope: unknown option --shares; did you mean --share?\n");
   const auto help = app("--help").out;
-  for (const char* option : {"--share ", "--share-port N", "--record FORMAT", "W share on/off", "M the shown laps as MCAP"})
+  for (const char* option :
+       {"--share ", "--share-port N", "--record FORMAT", "W share on/off", "M the shown laps as MCAP"})
     EXPECT_NE(help.find(option), std::string::npos) << option;
 }
 
@@ -143,14 +154,23 @@ TEST(CommandLine, TheAppsShareAndRecordOptionsRefuseMistakes) {
 TEST(CommandLine, TheAppsSeveralSourcesRefuseMistakesInOneSentence) {
   const auto app = [](const std::string& arguments) { return run_program(YDSCOPE_APP_PATH, arguments); };
   const std::pair<const char*, const char*> cases[] = {
-      {"--sim G1,G9", "ydscope: --sim: unknown model 'G9'; list models from G1, G6, TG15, TG30, TG50 with commas, e.g. --sim G1,G6,TG30.\n"},
-      {"--sim G1,,G6", "ydscope: --sim: unknown model ''; list models from G1, G6, TG15, TG30, TG50 with commas, e.g. --sim G1,G6,TG30.\n"},
+      {"--sim G1,G9",
+       "ydscope: --sim: unknown model 'G9'; list models from G1, G6, TG15, TG30, TG50 with commas, e.g. --sim "
+       "G1,G6,TG30.\n"},
+      {"--sim G1,,G6",
+       "ydscope: --sim: unknown model ''; list models from G1, G6, TG15, TG30, TG50 with commas, e.g. --sim "
+       "G1,G6,TG30.\n"},
       {"--port /tmp/a --port /tmp/b --pose 1,2,0", "ydscope: give --pose once per --port (2 ports), not 1 times\n"},
       {"--port /tmp/a --port /tmp/b --name a --name a", "ydscope: --name a is given to two ports\n"},
-      {"--sim G1,G6 --pose 0,0,0", "ydscope: --name and --pose go with --port, once per port; name and place virtual lidars in the Sources panel.\n"},
-      {"--sim G1,G6 --record ydrec", "ydscope: --share and --record serve or record one source; with several, use ydscope-cli serve or record.\n"},
+      {"--sim G1,G6 --pose 0,0,0",
+       "ydscope: --name and --pose go with --port, once per port; name and place virtual lidars in the Sources "
+       "panel.\n"},
+      {"--sim G1,G6 --record ydrec",
+       "ydscope: --share and --record serve or record one source; with several, use ydscope-cli serve or record.\n"},
       {"--port /tmp/a --model G6 --model G1", "ydscope: --model is given twice; give it once (or once per --port).\n"},
-      {"--sim G6 --split", "ydscope: --split puts several sources side by side; give --sim with several models or --port more than once.\n"},
+      {"--sim G6 --split",
+       "ydscope: --split puts several sources side by side; give --sim with several models or --port more than "
+       "once.\n"},
   };
   for (const auto& [arguments, said] : cases) {
     const auto run = app(arguments);

@@ -34,8 +34,10 @@ int main(int argc, char** argv) {
   double minutes = 10;
   int every_s = 30;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--minutes") == 0) minutes = std::atof(argv[i + 1]);
-    else if (std::strcmp(argv[i], "--every") == 0) every_s = std::max(1, std::atoi(argv[i + 1]));
+    if (std::strcmp(argv[i], "--minutes") == 0)
+      minutes = std::atof(argv[i + 1]);
+    else if (std::strcmp(argv[i], "--every") == 0)
+      every_s = std::max(1, std::atoi(argv[i + 1]));
   }
   const auto binaries = find_app_binaries("bench_app_soak");
   if (!binaries) return 1;
@@ -97,7 +99,9 @@ int main(int argc, char** argv) {
               screenshot ? (home.string() + "/*.png").c_str() : "NONE");
   const bool ok = alive && flat && screenshot;
   std::printf("verdict: %s\n", ok ? "pass" : "FAIL");
-  if (ok) std::printf("(the screenshot stays for a look; remove %s when done)\n", home.c_str());
-  else fs::remove_all(home);
+  if (ok)
+    std::printf("(the screenshot stays for a look; remove %s when done)\n", home.c_str());
+  else
+    fs::remove_all(home);
   return ok ? 0 : 1;
 }

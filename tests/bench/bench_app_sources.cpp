@@ -26,7 +26,9 @@ using namespace ydscope::bench;
 namespace {
 
 // Share of one core, in percent, of `ticks` clock ticks over `seconds`.
-double share(long ticks, double seconds) { return 100.0 * static_cast<double>(ticks) / static_cast<double>(sysconf(_SC_CLK_TCK)) / seconds; }
+double share(long ticks, double seconds) {
+  return 100.0 * static_cast<double>(ticks) / static_cast<double>(sysconf(_SC_CLK_TCK)) / seconds;
+}
 
 }  // namespace
 
@@ -44,7 +46,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < lidars; ++i) {
     const std::string link = (home / ("g6_" + std::to_string(i))).string();
     sims.push_back(spawn({binaries->cli, "sim", "--model", "G6", "--scene", "demo", "--pty", link}, true));
-    for (int wait = 0; wait < 50 && !fs::exists(link); ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    for (int wait = 0; wait < 50 && !fs::exists(link); ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
     app_argv.insert(app_argv.end(), {"--port", link});
   }
   app_argv.insert(app_argv.end(), {"--model", "G6"});

@@ -98,10 +98,14 @@ int main(int argc, char** argv) {
   Args args;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--cli") args.cli = argv[i + 1];
-    else if (key == "--clients") args.clients = std::atoi(argv[i + 1]);
-    else if (key == "--seconds") args.seconds = std::atof(argv[i + 1]);
-    else if (key == "--warmup") args.warmup = std::atof(argv[i + 1]);
+    if (key == "--cli")
+      args.cli = argv[i + 1];
+    else if (key == "--clients")
+      args.clients = std::atoi(argv[i + 1]);
+    else if (key == "--seconds")
+      args.seconds = std::atof(argv[i + 1]);
+    else if (key == "--warmup")
+      args.warmup = std::atof(argv[i + 1]);
   }
   if (args.cli.empty()) {
     std::fprintf(stderr, "usage: bench_bridge --cli PATH [--clients 1] [--seconds 30] [--warmup 3]\n");
@@ -195,12 +199,14 @@ int main(int argc, char** argv) {
     latency_ms.push_back(ms);
     if (ms > 100) ++beyond_a_lap;
   }
-  const auto zeros_in_window = std::count_if(zeros.begin(), zeros.end(), [&](std::int64_t z) { return z >= mono0 && z < mono1; });
-  std::printf("clients %d: serve CPU %.1f%% of one core over %.1f s; /scan reads %zu (laps closed by the device: %ld x %d "
-              "clients); lap-to-client latency median %.2f ms, p99 %.2f ms, max %.2f ms%s\n",
-              args.clients, 100.0 * (cpu1 - cpu0) / wall, wall, scan_reads.size(), static_cast<long>(zeros_in_window), args.clients,
-              percentile(latency_ms, 0.5), percentile(latency_ms, 0.99), percentile(latency_ms, 1.0),
-              failed_clients ? " (some clients failed)" : "");
+  const auto zeros_in_window =
+      std::count_if(zeros.begin(), zeros.end(), [&](std::int64_t z) { return z >= mono0 && z < mono1; });
+  std::printf(
+      "clients %d: serve CPU %.1f%% of one core over %.1f s; /scan reads %zu (laps closed by the device: %ld x %d "
+      "clients); lap-to-client latency median %.2f ms, p99 %.2f ms, max %.2f ms%s\n",
+      args.clients, 100.0 * (cpu1 - cpu0) / wall, wall, scan_reads.size(), static_cast<long>(zeros_in_window),
+      args.clients, percentile(latency_ms, 0.5), percentile(latency_ms, 0.99), percentile(latency_ms, 1.0),
+      failed_clients ? " (some clients failed)" : "");
   if (beyond_a_lap) std::printf("warning: %d reads came over 100 ms after the newest zero packet\n", beyond_a_lap);
   return failed_clients ? 1 : 0;
 }

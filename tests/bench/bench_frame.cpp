@@ -61,7 +61,8 @@ Lap make_lap(std::size_t n, std::uint64_t index) {
   lap.points.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const float a = 360.0f * static_cast<float>(i) / static_cast<float>(n);
-    const float r = 3000.0f + 1500.0f * std::fabs(std::sin(a * 0.05f)) + 40.0f * std::sin(a * 3.1f + static_cast<float>(index));
+    const float r =
+        3000.0f + 1500.0f * std::fabs(std::sin(a * 0.05f)) + 40.0f * std::sin(a * 3.1f + static_cast<float>(index));
     lap.points[i] = {a, r, PointFlag::None};
   }
   return lap;
@@ -98,7 +99,8 @@ void BM_BuildCloudWithMotion(benchmark::State& state) {
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
   MotionBackground motion;
-  for (std::uint64_t i = 0; i < MotionBackground::kLaps; ++i) motion.add_lap(make_lap(static_cast<std::size_t>(state.range(0)) / 10, i));
+  for (std::uint64_t i = 0; i < MotionBackground::kLaps; ++i)
+    motion.add_lap(make_lap(static_cast<std::size_t>(state.range(0)) / 10, i));
   ColourParams colours;
   colours.mode = ColourMode::Motion;
   std::vector<PointVertex> out;

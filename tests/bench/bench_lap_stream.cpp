@@ -29,7 +29,8 @@ Lap g6_lap(std::uint64_t index) {
   Lap lap;
   lap.index = index;
   for (int i = 0; i < 900; ++i)
-    lap.points.push_back({static_cast<float>(i) * 0.4f, 1000.0f + static_cast<float>((index + i) % 7000), PointFlag::None});
+    lap.points.push_back(
+        {static_cast<float>(i) * 0.4f, 1000.0f + static_cast<float>((index + i) % 7000), PointFlag::None});
   return lap;
 }
 

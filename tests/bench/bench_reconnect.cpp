@@ -42,10 +42,14 @@ Args parse(int argc, char** argv) {
   Args args;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--cli") args.cli = argv[i + 1];
-    else if (key == "--rounds") args.rounds = std::atoi(argv[i + 1]);
-    else if (key == "--outage") args.outage_s = std::atof(argv[i + 1]);
-    else if (key == "--model") args.model = argv[i + 1];
+    if (key == "--cli")
+      args.cli = argv[i + 1];
+    else if (key == "--rounds")
+      args.rounds = std::atoi(argv[i + 1]);
+    else if (key == "--outage")
+      args.outage_s = std::atof(argv[i + 1]);
+    else if (key == "--model")
+      args.model = argv[i + 1];
   }
   return args;
 }
@@ -162,13 +166,16 @@ int main(int argc, char** argv) {
     to_scanning_ms.push_back(static_cast<double>(scanning_at - ready) * 1e-6);
     to_lap_ms.push_back(static_cast<double>(lap_at - ready) * 1e-6);
     outage_cpu_percent.push_back(100.0 * static_cast<double>(cpu1 - cpu0) / static_cast<double>(wall1 - wall0));
-    std::printf("round %d: scanning %.0f ms and first lap %.0f ms after the port came back; I/O thread %.3f%% of a core while it was gone\n",
-                round, to_scanning_ms.back(), to_lap_ms.back(), outage_cpu_percent.back());
+    std::printf(
+        "round %d: scanning %.0f ms and first lap %.0f ms after the port came back; I/O thread %.3f%% of a core while "
+        "it was gone\n",
+        round, to_scanning_ms.back(), to_lap_ms.back(), outage_cpu_percent.back());
   }
-  std::printf("median over %zu rounds (outage %.1f s): scanning again %.0f ms, first lap %.0f ms, I/O thread CPU while waiting %.3f%%; %d rounds failed; reconnects counted %llu\n",
-              to_scanning_ms.size(), args.outage_s, median(to_scanning_ms), median(to_lap_ms),
-              median(outage_cpu_percent), failures,
-              static_cast<unsigned long long>(session.snapshot().counters.reconnects));
+  std::printf(
+      "median over %zu rounds (outage %.1f s): scanning again %.0f ms, first lap %.0f ms, I/O thread CPU while waiting "
+      "%.3f%%; %d rounds failed; reconnects counted %llu\n",
+      to_scanning_ms.size(), args.outage_s, median(to_scanning_ms), median(to_lap_ms), median(outage_cpu_percent),
+      failures, static_cast<unsigned long long>(session.snapshot().counters.reconnects));
   session.disconnect();
   consumer.request_stop();
   consumer.join();

@@ -68,10 +68,14 @@ int main(int argc, char** argv) {
   Args args;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--cli") args.cli = argv[i + 1];
-    else if (key == "--lidars") args.lidars = std::atoi(argv[i + 1]);
-    else if (key == "--seconds") args.seconds = std::atof(argv[i + 1]);
-    else if (key == "--warmup") args.warmup = std::atof(argv[i + 1]);
+    if (key == "--cli")
+      args.cli = argv[i + 1];
+    else if (key == "--lidars")
+      args.lidars = std::atoi(argv[i + 1]);
+    else if (key == "--seconds")
+      args.seconds = std::atof(argv[i + 1]);
+    else if (key == "--warmup")
+      args.warmup = std::atof(argv[i + 1]);
   }
   if (args.cli.empty() || args.lidars < 1 || args.lidars > 32) {
     std::fprintf(stderr, "usage: bench_serve_sources --cli PATH [--lidars 1..32] [--seconds 30] [--warmup 3]\n");
@@ -94,7 +98,8 @@ int main(int argc, char** argv) {
     fs::remove_all(dir);
   };
   for (int i = 0; i < args.lidars; ++i)
-    for (int wait = 0; wait < 100 && !fs::exists(dir / ("g6_" + std::to_string(i))); ++wait) std::this_thread::sleep_for(50ms);
+    for (int wait = 0; wait < 100 && !fs::exists(dir / ("g6_" + std::to_string(i))); ++wait)
+      std::this_thread::sleep_for(50ms);
 
   int pipe_fds[2];
   if (pipe(pipe_fds) != 0) return 1;
@@ -122,7 +127,8 @@ int main(int argc, char** argv) {
       while (!done.load()) {
         const auto message = client.read_binary(5s);
         if (!message) throw std::runtime_error("read");
-        if (measuring.load() && message->subscription >= 1 && message->subscription <= static_cast<std::uint32_t>(args.lidars))
+        if (measuring.load() && message->subscription >= 1 &&
+            message->subscription <= static_cast<std::uint32_t>(args.lidars))
           ++received[message->subscription - 1];
       }
     } catch (const std::exception&) {
@@ -155,10 +161,11 @@ int main(int argc, char** argv) {
     lost += std::max(0L, closed - received[static_cast<std::size_t>(i)].load() - 1);
   }
   stop_all();
-  std::printf("lidars %d (virtual G6, 8 Hz each): serve CPU %.1f%% of one core over %.1f s, of which the %d I/O "
-              "threads %.1f%%; laps closed by the lidars %ld, /scan messages received %ld, laps lost %ld%s\n",
-              args.lidars, 100.0 * static_cast<double>(ticks1 - ticks0) / tick / wall, wall, args.lidars,
-              100.0 * static_cast<double>(io1 - io0) / tick / wall, sent, got, lost,
-              client_failed.load() ? " (the client failed before the end)" : "");
+  std::printf(
+      "lidars %d (virtual G6, 8 Hz each): serve CPU %.1f%% of one core over %.1f s, of which the %d I/O "
+      "threads %.1f%%; laps closed by the lidars %ld, /scan messages received %ld, laps lost %ld%s\n",
+      args.lidars, 100.0 * static_cast<double>(ticks1 - ticks0) / tick / wall, wall, args.lidars,
+      100.0 * static_cast<double>(io1 - io0) / tick / wall, sent, got, lost,
+      client_failed.load() ? " (the client failed before the end)" : "");
   return client_failed.load() ? 1 : 0;
 }

@@ -45,9 +45,12 @@ Args parse(int argc, char** argv) {
   Args args;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--seconds") args.seconds = std::atof(argv[i + 1]);
-    else if (key == "--model") args.model = argv[i + 1];
-    else if (key == "--cli") args.cli = argv[i + 1];
+    if (key == "--seconds")
+      args.seconds = std::atof(argv[i + 1]);
+    else if (key == "--model")
+      args.model = argv[i + 1];
+    else if (key == "--cli")
+      args.cli = argv[i + 1];
   }
   return args;
 }
@@ -204,10 +207,12 @@ int main(int argc, char** argv) {
               cpu_seconds, wall_seconds, 100.0 * cpu_seconds / wall_seconds,
               static_cast<double>(reads_in_window) / wall_seconds,
               reads_in_window ? cpu_seconds * 1e6 / static_cast<double>(reads_in_window) : 0.0);
-  std::printf("latency zero-packet write -> lap queued (us) over %zu laps: median %.1f  p90 %.1f  p99 %.1f  max %.1f  min %.1f%s\n",
-              latency_us.size(), percentile(latency_us, 50), percentile(latency_us, 90), percentile(latency_us, 99),
-              latency_us.empty() ? 0.0 : *std::max_element(latency_us.begin(), latency_us.end()),
-              latency_us.empty() ? 0.0 : *std::min_element(latency_us.begin(), latency_us.end()), "");
+  std::printf(
+      "latency zero-packet write -> lap queued (us) over %zu laps: median %.1f  p90 %.1f  p99 %.1f  max %.1f  min "
+      "%.1f%s\n",
+      latency_us.size(), percentile(latency_us, 50), percentile(latency_us, 90), percentile(latency_us, 99),
+      latency_us.empty() ? 0.0 : *std::max_element(latency_us.begin(), latency_us.end()),
+      latency_us.empty() ? 0.0 : *std::min_element(latency_us.begin(), latency_us.end()), "");
   std::printf("unmatched laps %zu, checksum errors %llu, queue drops %llu, reconnects %llu, state %s\n", unmatched,
               static_cast<unsigned long long>(end.counters.checksum_errors),
               static_cast<unsigned long long>(end.queue_dropped),

@@ -26,12 +26,15 @@ int main(int argc, char** argv) {
   config.model = Model::G6;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--minutes") minutes = std::atof(argv[i + 1]);
-    else if (key == "--scene") config.scene = argv[i + 1];
+    if (key == "--minutes")
+      minutes = std::atof(argv[i + 1]);
+    else if (key == "--scene")
+      config.scene = argv[i + 1];
     else if (key == "--model") {
       const ModelProfile* profile = find_profile(argv[i + 1]);
       if (!profile) {
-        std::fprintf(stderr, "bench_sim_recording: unknown model '%s' (%s)\n", argv[i + 1], std::string(model_names()).c_str());
+        std::fprintf(stderr, "bench_sim_recording: unknown model '%s' (%s)\n", argv[i + 1],
+                     std::string(model_names()).c_str());
         return 2;
       }
       config.model = profile->model;
@@ -65,8 +68,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_sim_recording: writing %s failed: %s\n", out.c_str(), writer->error().c_str());
     return 1;
   }
-  std::printf("%s: %.1f min of %s, %llu device bytes, %llu laps' zero packets, %llu bytes on disk\n", out.c_str(), minutes,
-              std::string(profile.name).c_str(),
+  std::printf("%s: %.1f min of %s, %llu device bytes, %llu laps' zero packets, %llu bytes on disk\n", out.c_str(),
+              minutes, std::string(profile.name).c_str(),
               static_cast<unsigned long long>(writer->bytes(Direction::DeviceToHost)),
               static_cast<unsigned long long>(lidar.counters().zero_packets),
               static_cast<unsigned long long>(writer->file_size()));

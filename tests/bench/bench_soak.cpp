@@ -37,10 +37,14 @@ Args parse(int argc, char** argv) {
   Args args;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--minutes") args.minutes = std::atof(argv[i + 1]);
-    else if (key == "--scale") args.scale = std::atof(argv[i + 1]);
-    else if (key == "--model") args.model = argv[i + 1];
-    else if (key == "--every") args.every_s = std::atof(argv[i + 1]);
+    if (key == "--minutes")
+      args.minutes = std::atof(argv[i + 1]);
+    else if (key == "--scale")
+      args.scale = std::atof(argv[i + 1]);
+    else if (key == "--model")
+      args.model = argv[i + 1];
+    else if (key == "--every")
+      args.every_s = std::atof(argv[i + 1]);
   }
   return args;
 }
@@ -102,8 +106,8 @@ int main(int argc, char** argv) {
   config.reconnect = false;  // a soak without faults must never need one
   const std::string port = config.address;
   const double scale = args.scale;
-  config.open_link = [port, scale](boost::asio::io_context& io, std::uint32_t baud, std::string& error)
-      -> std::unique_ptr<ByteLink> {
+  config.open_link = [port, scale](boost::asio::io_context& io, std::uint32_t baud,
+                                   std::string& error) -> std::unique_ptr<ByteLink> {
     auto serial = SerialLink::open(io, port, baud, error);
     if (!serial) return nullptr;
     return std::make_unique<ScaledLine>(std::move(serial), scale);
@@ -128,7 +132,8 @@ int main(int argc, char** argv) {
     }
   });
 
-  const SessionSnapshot started = session.wait_until([](const SessionSnapshot& s) { return s.state == LinkState::Scanning; }, 20s);
+  const SessionSnapshot started =
+      session.wait_until([](const SessionSnapshot& s) { return s.state == LinkState::Scanning; }, 20s);
   if (started.state != LinkState::Scanning) {
     std::fprintf(stderr, "bench_soak: the session never scanned: %s\n", describe_snapshot(started).c_str());
     done = true;
@@ -146,7 +151,8 @@ int main(int argc, char** argv) {
   SimCounters c;
   std::uint64_t last_bytes = 0;
   auto last_t = t0;
-  for (auto next = t0 + std::chrono::duration<double>(args.every_s);; next += std::chrono::duration<double>(args.every_s)) {
+  for (auto next = t0 + std::chrono::duration<double>(args.every_s);;
+       next += std::chrono::duration<double>(args.every_s)) {
     std::this_thread::sleep_until(std::min(next, end));
     const auto now = std::chrono::steady_clock::now();
     s = session.snapshot();
@@ -159,22 +165,22 @@ int main(int argc, char** argv) {
     const double mbps = static_cast<double>(s.counters.bytes_received - last_bytes) / dt / 1e6;
     last_bytes = s.counters.bytes_received;
     last_t = now;
-    std::printf("%7.0f %9ld %9llu %10llu %8llu %8llu %8llu %8llu %8llu %9llu %9.2f\n",
-                std::chrono::duration<double>(now - t0).count(), rss, static_cast<unsigned long long>(laps.load()),
-                static_cast<unsigned long long>(c.server.zero_packets_written),
-                static_cast<unsigned long long>(s.counters.checksum_errors),
-                static_cast<unsigned long long>(s.counters.resync_bytes),
-                static_cast<unsigned long long>(s.queue_dropped),
-                static_cast<unsigned long long>(s.counters.reconnects),
-                static_cast<unsigned long long>(c.server.bytes_unheard),
-                static_cast<unsigned long long>(index_gaps.load()), mbps);
+    std::printf(
+        "%7.0f %9ld %9llu %10llu %8llu %8llu %8llu %8llu %8llu %9llu %9.2f\n",
+        std::chrono::duration<double>(now - t0).count(), rss, static_cast<unsigned long long>(laps.load()),
+        static_cast<unsigned long long>(c.server.zero_packets_written),
+        static_cast<unsigned long long>(s.counters.checksum_errors),
+        static_cast<unsigned long long>(s.counters.resync_bytes), static_cast<unsigned long long>(s.queue_dropped),
+        static_cast<unsigned long long>(s.counters.reconnects), static_cast<unsigned long long>(c.server.bytes_unheard),
+        static_cast<unsigned long long>(index_gaps.load()), mbps);
     std::fflush(stdout);
     if (now >= end || s.state != LinkState::Scanning) break;
   }
   // Stop the device first, then let the last laps through, and count what the device closed.
   const std::uint64_t resync_before_stop = s.counters.resync_bytes;
   session.disconnect();
-  session.wait_until([](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; }, 5s);
+  session.wait_until(
+      [](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; }, 5s);
   std::this_thread::sleep_for(100ms);  // the consumer drains what is left (not a synchronisation of the checks)
   done = true;
   consumer.join();

@@ -37,9 +37,9 @@ TEST(AppBoothView, LargeTypeMotionColoursAndTheirLegendAt1080p) {
   const std::filesystem::path dir = fresh_temp_dir("ydscope-booth");
   const std::string png = (dir / "booth.png").string();
   // 150 frames: some 40 laps, enough for the room to be learned (MotionBackground).
-  const std::string command = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + dir.string() +
-                              "' xvfb-run -a -s '-screen 0 1920x1080x24' '" + YDSCOPE_APP_PATH +
-                              "' --sim G6 --scene booth --fullscreen --screenshot '" + png + "' --frames 150 > /dev/null";
+  const std::string command =
+      "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + dir.string() + "' xvfb-run -a -s '-screen 0 1920x1080x24' '" +
+      YDSCOPE_APP_PATH + "' --sim G6 --scene booth --fullscreen --screenshot '" + png + "' --frames 150 > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const Image image = load_png(png);
   ASSERT_TRUE(image) << png;

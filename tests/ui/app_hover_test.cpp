@@ -65,7 +65,8 @@ TEST_F(AppHover, TheBoxFollowsAMovingPointerAndGoesWhenItRests) {
 
   // A screenshot run with a hand moving over that same wall point all along: no box.
   const std::string png = (dir / "pointed.png").string();
-  const pid_t shot = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6", "--scene", "room", "--screenshot", png, "--frames", "60"});
+  const pid_t shot =
+      spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6", "--scene", "room", "--screenshot", png, "--frames", "60"});
   ASSERT_TRUE(hands.find_window("ydscope", std::chrono::seconds(30)));
   int status = 0;
   for (int i = 0; waitpid(shot, &status, WNOHANG) == 0; ++i) {

@@ -29,8 +29,8 @@ std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
 // A file with `extension` in `dir` that is not in `seen` (then added), or empty after `timeout`;
 // `poke` runs before each look (a key tap that asks for the file).
 template <class Poke>
-std::filesystem::path new_file(const std::filesystem::path& dir, const std::string& extension, std::set<std::string>& seen,
-                               std::chrono::seconds timeout, Poke poke) {
+std::filesystem::path new_file(const std::filesystem::path& dir, const std::string& extension,
+                               std::set<std::string>& seen, std::chrono::seconds timeout, Poke poke) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (std::chrono::steady_clock::now() < deadline) {
     poke();
@@ -59,7 +59,8 @@ std::vector<std::vector<CloudPoint>> clouds_in(const McapContents& contents) {
 bool same_points(const std::vector<CloudPoint>& cloud, const Lap& lap) {
   if (cloud.size() != lap.points.size()) return false;
   for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (cloud[i].angle_deg != lap.points[i].angle_deg || cloud[i].range_m != lap.points[i].range_mm / 1000.0f) return false;
+    if (cloud[i].angle_deg != lap.points[i].angle_deg || cloud[i].range_m != lap.points[i].range_mm / 1000.0f)
+      return false;
   return true;
 }
 
@@ -85,7 +86,8 @@ TEST(AppMcap, RecordingBothFormatsGivesTheSameLapsInEach) {
   ScanDecoder decoder(profile_for(Model::G6));
   RecordView record;
   while (reader->next(record))
-    if (record.type == RecordType::DeviceToHost) decoder.feed(record.payload, record.t_ns, [&](const Lap& lap) { laps.push_back(lap); });
+    if (record.type == RecordType::DeviceToHost)
+      decoder.feed(record.payload, record.t_ns, [&](const Lap& lap) { laps.push_back(lap); });
 
   const McapContents contents = read_mcap(file_bytes(mcap));
   EXPECT_TRUE(contents.complete) << "quitting left the MCAP without its summary";
@@ -98,7 +100,8 @@ TEST(AppMcap, RecordingBothFormatsGivesTheSameLapsInEach) {
   ASSERT_LT(first, laps.size()) << "the MCAP's first lap is not a lap of the .ydrec";
   const std::size_t compared = std::min(clouds.size(), laps.size() - first);
   EXPECT_GE(compared + 1, clouds.size()) << "the two files stopped more than a lap apart";
-  for (std::size_t i = 0; i < compared; ++i) EXPECT_TRUE(same_points(clouds[i], laps[first + i])) << "lap " << i << " differs";
+  for (std::size_t i = 0; i < compared; ++i)
+    EXPECT_TRUE(same_points(clouds[i], laps[first + i])) << "lap " << i << " differs";
   if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 

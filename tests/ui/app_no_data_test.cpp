@@ -14,8 +14,8 @@ namespace {
 constexpr int kViewLeft = 448;
 
 struct Reading {
-  int points = 0;          // saturated scan-point pixels inside the rings
-  int overlay_words = 0;   // near-white pixels in the band where the overlay writes
+  int points = 0;         // saturated scan-point pixels inside the rings
+  int overlay_words = 0;  // near-white pixels in the band where the overlay writes
 };
 
 Reading read(const Image& image) {

@@ -83,9 +83,12 @@ TEST_F(AppPoseDrag, AltDragMovesTheSelectedSourcesCloudOnlyAndNSelectsTheNext) {
   hands.tap(XK_n, 1);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   alt_drag_right(420);
-  const auto second_moved = [&](const Reading& r) { return both_drawn(r) && r.second.first - after.second.first > 120; };
+  const auto second_moved = [&](const Reading& r) {
+    return both_drawn(r) && r.second.first - after.second.first > 120;
+  };
   const Reading last = screenshot_until(app, dir, seen, read, second_moved, std::chrono::seconds(10));
-  EXPECT_GT(last.second.first - after.second.first, 120) << "after N the second source's cloud did not follow the pointer";
+  EXPECT_GT(last.second.first - after.second.first, 120)
+      << "after N the second source's cloud did not follow the pointer";
   EXPECT_LT(std::abs(last.first.first - after.first.first), 30) << "after N the first source's cloud moved too";
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
 

@@ -129,7 +129,8 @@ TEST(AppShare, APortInUseIsOneSentenceAndTheAppGoesOn) {
     text << in.rdbuf();
     said = text.str();
   }
-  const std::string line = said.substr(said.find("ydscope: Share"), said.find('\n', said.find("ydscope: Share")) - said.find("ydscope: Share"));
+  const std::string line = said.substr(said.find("ydscope: Share"),
+                                       said.find('\n', said.find("ydscope: Share")) - said.find("ydscope: Share"));
   EXPECT_NE(said.find(expected), std::string::npos) << said;
   EXPECT_NE(line.find("in use"), std::string::npos) << line;
   EXPECT_EQ(line.back(), '.') << "one sentence: " << line;

@@ -91,8 +91,8 @@ TEST(AppSmoke, SigtermEndsTheLoopAndSavesSettings) {
   std::filesystem::remove_all(home);
   std::filesystem::create_directories(home);
   // The window runs interactively (no --screenshot) until SIGTERM, like a demo stopped by a service.
-  const std::string command = "XDG_CONFIG_HOME='" + home.string() + "' timeout --preserve-status -s TERM 4 '" + YDSCOPE_APP_PATH +
-                              "' --sim G1 --scene room";
+  const std::string command = "XDG_CONFIG_HOME='" + home.string() + "' timeout --preserve-status -s TERM 4 '" +
+                              YDSCOPE_APP_PATH + "' --sim G1 --scene room";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0) << "SIGTERM should end the loop normally";

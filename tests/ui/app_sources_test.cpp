@@ -68,11 +68,12 @@ class AppSources : public testing::Test {
     if (!HasFailure() && !dir_.empty() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir_);
   }
   // The app's --screenshot picture after 120 frames of `arguments`; empty when it failed.
-  Image screenshot_run(std::vector<std::string> arguments) {
+  Image screenshot_run(const std::vector<std::string>& arguments) {
     const std::string png = (dir_ / "screenshot.png").string();
-    arguments.insert(arguments.begin(), YDSCOPE_APP_PATH);
-    arguments.insert(arguments.end(), {"--screenshot", png, "--frames", "120"});
-    const pid_t app = spawn_in(dir_, arguments);
+    std::vector<std::string> argv{YDSCOPE_APP_PATH};
+    argv.insert(argv.end(), arguments.begin(), arguments.end());
+    argv.insert(argv.end(), {"--screenshot", png, "--frames", "120"});
+    const pid_t app = spawn_in(dir_, argv);
     int status = 0;
     if (waitpid(app, &status, 0) != app || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
     return load_png(png);
@@ -93,7 +94,8 @@ TEST_F(AppSources, ThreeVirtualLidarsDrawInTheirColoursWhereTheirPosesPutThem) {
     const SourcePixels pixels = source_pixels(image, ui::source_colour(i), poses[i]);
     EXPECT_GT(pixels.total, 1000) << "source " << i << "'s colour is hardly on the view";
     EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
-        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total << " of its points lie towards its pose";
+        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total
+        << " of its points lie towards its pose";
   }
 }
 
@@ -103,7 +105,8 @@ TEST_F(AppSources, TheSplitViewPutsEachSourceInItsOwnHalf) {
   ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
   const int middle = (kViewLeft + image.width) / 2;
   const auto in = [&](int x0, int x1, ui::Rgba8 colour) {
-    return count_pixels(image, {x0, 0, x1, image.height}, [&](const unsigned char* p) { return is_source_point(p, colour); });
+    return count_pixels(image, {x0, 0, x1, image.height},
+                        [&](const unsigned char* p) { return is_source_point(p, colour); });
   };
   const ui::Rgba8 first = ui::source_colour(0), second = ui::source_colour(1);
   EXPECT_GT(in(kViewLeft, middle, first), 1000) << "the first source is not in the left half";
@@ -136,12 +139,14 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   };
   const pid_t left_sim = sim_at(left_link);
   const pid_t right_sim = sim_at(right_link);
-  ASSERT_TRUE(wait_for_path(left_link, std::chrono::seconds(15)) && wait_for_path(right_link, std::chrono::seconds(15)));
+  ASSERT_TRUE(wait_for_path(left_link, std::chrono::seconds(15)) &&
+              wait_for_path(right_link, std::chrono::seconds(15)));
   Pose left, right;
   left.y_m = 2.0;    // above the centre
   right.y_m = -2.0;  // below it
-  const pid_t app = running.add(spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left),
-                                               "--port", right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"}));
+  const pid_t app = running.add(
+      spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left), "--port",
+                     right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"}));
   std::set<std::string> seen;
   struct Reading {
     SourcePixels left, right;
@@ -152,7 +157,8 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
                    count_pixels(image, {kViewLeft - 10, 0, kViewLeft + 400, 120}, is_amber)};
   };
   const Reading before = screenshot_until(
-      app, dir, seen, read, [](const Reading& r) { return r.left.total > 1000 && r.right.total > 1000; }, std::chrono::seconds(30));
+      app, dir, seen, read, [](const Reading& r) { return r.left.total > 1000 && r.right.total > 1000; },
+      std::chrono::seconds(30));
   ASSERT_GT(before.left.total, 1000) << "the left lidar's cloud never showed";
   ASSERT_GT(before.right.total, 1000) << "the right lidar's cloud never showed";
   EXPECT_LT(before.amber, 30) << "amber legend words while both scan";

@@ -54,7 +54,8 @@ std::vector<char32_t> non_ascii(const std::string& bytes) {
     const auto b = static_cast<unsigned char>(bytes[i]);
     int extra = b >= 0xF0 ? 3 : b >= 0xE0 ? 2 : b >= 0xC0 ? 1 : 0;
     char32_t c = extra == 3 ? b & 0x07 : extra == 2 ? b & 0x0F : extra == 1 ? b & 0x1F : b;
-    for (int k = 1; k <= extra && i + k < bytes.size(); ++k) c = (c << 6) | (static_cast<unsigned char>(bytes[i + k]) & 0x3F);
+    for (int k = 1; k <= extra && i + k < bytes.size(); ++k)
+      c = (c << 6) | (static_cast<unsigned char>(bytes[i + k]) & 0x3F);
     if (b >= 0x80) out.push_back(c);
     i += 1 + extra;
   }

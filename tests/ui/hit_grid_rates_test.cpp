@@ -22,9 +22,8 @@ ViewTransform make_view() {
 
 TEST(HitTest, FindsTheNearestPointWithinTheRadius) {
   const ViewTransform v = make_view();
-  const std::vector<LapPoint> points{{0.0f, 2000.0f, PointFlag::None},
-                                     {90.0f, 2000.0f, PointFlag::Specular},
-                                     {91.0f, 0.0f, PointFlag::None}};
+  const std::vector<LapPoint> points{
+      {0.0f, 2000.0f, PointFlag::None}, {90.0f, 2000.0f, PointFlag::Specular}, {91.0f, 0.0f, PointFlag::None}};
   const Vec2 right = v.world_to_screen(polar_to_world(90.0f, 2000.0f));
   const auto hit = nearest_point(points, v, right + Vec2{3.0f, 2.0f}, 10.0f);
   ASSERT_TRUE(hit);

@@ -41,7 +41,8 @@ TEST(LapCsv, TheNewestShownLapWithItsReceiveTime) {
 
 TEST(LapCsv, EveryShownLapOldestFirst) {
   LapHistory history(3);
-  for (std::uint64_t i = 1; i <= 5; ++i) history.push(lap_of(i, static_cast<std::int64_t>(i) * 1'000'000'000, {{1.0f, 100.0f, PointFlag::None}}));
+  for (std::uint64_t i = 1; i <= 5; ++i)
+    history.push(lap_of(i, static_cast<std::int64_t>(i) * 1'000'000'000, {{1.0f, 100.0f, PointFlag::None}}));
   const auto lines = lines_of(shown_laps_csv(history, 60));
   ASSERT_EQ(lines.size(), 4u) << "the view holds 3 laps; laps 1 and 2 are gone from the screen";
   EXPECT_EQ(lines[1].substr(0, 2), "3,");

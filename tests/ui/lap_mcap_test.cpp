@@ -66,8 +66,10 @@ TEST(LapMcap, WritesEveryShownLapOldestFirstWithEveryPoint) {
     cloud_times.push_back(m.log_time);
   }
   EXPECT_EQ(scans, 4u);
-  EXPECT_EQ(cloud_times, (std::vector<std::uint64_t>{static_cast<std::uint64_t>(to_wall + 375'000'000), static_cast<std::uint64_t>(to_wall + 500'000'000),
-                                                     static_cast<std::uint64_t>(to_wall + 625'000'000), static_cast<std::uint64_t>(to_wall + 750'000'000)}));
+  EXPECT_EQ(cloud_times,
+            (std::vector<std::uint64_t>{
+                static_cast<std::uint64_t>(to_wall + 375'000'000), static_cast<std::uint64_t>(to_wall + 500'000'000),
+                static_cast<std::uint64_t>(to_wall + 625'000'000), static_cast<std::uint64_t>(to_wall + 750'000'000)}));
   ASSERT_FALSE(contents.metadata.empty());
   EXPECT_EQ(contents.metadata.back().at("model"), "G6");
 }

@@ -32,7 +32,8 @@ TEST(MotionBackground, NothingMovesBeforeTheRoomIsLearned) {
 TEST(MotionBackground, APersonWalkingPastIsMovingTheWallIsNot) {
   MotionBackground background;
   // Forty laps; the person walks from 30 to 150 degrees, 3 degrees a lap.
-  for (std::uint64_t i = 0; i < MotionBackground::kLaps; ++i) background.add_lap(room_lap(i, 4000.0f, 30.0f + 3.0f * static_cast<float>(i)));
+  for (std::uint64_t i = 0; i < MotionBackground::kLaps; ++i)
+    background.add_lap(room_lap(i, 4000.0f, 30.0f + 3.0f * static_cast<float>(i)));
   EXPECT_NEAR(background.background_mm(100.0f), 4000.0f, 60.0f) << "the room behind the path";
   const Lap now = room_lap(99, 4000.0f, 120.0f);
   int moving_person = 0, moving_wall = 0, person = 0, wall = 0;

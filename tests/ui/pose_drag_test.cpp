@@ -55,7 +55,8 @@ TEST(PoseDrag, ATurnDragTurnsAboutTheLidarsOwnPosition) {
   const CommonPoint before = pose.to_common(CommonPoint{0.0f, 1000.0f});
   const CommonPoint after = turned.to_common(CommonPoint{0.0f, 1000.0f});
   const double pi = 3.14159265358979;
-  const double swept = std::atan2(after.y_mm - 1000.0, after.x_mm - 2000.0) - std::atan2(before.y_mm - 1000.0, before.x_mm - 2000.0);
+  const double swept =
+      std::atan2(after.y_mm - 1000.0, after.x_mm - 2000.0) - std::atan2(before.y_mm - 1000.0, before.x_mm - 2000.0);
   EXPECT_NEAR(std::remainder(swept, 2.0 * pi), pi / 2.0, 1e-4);  // the cloud turned with the pointer
 }
 

@@ -46,8 +46,10 @@ class PrivateDisplay {
   }
   ~PrivateDisplay() {
     if (ready_) {
-      if (previous_.empty()) ::unsetenv("DISPLAY");
-      else ::setenv("DISPLAY", previous_.c_str(), 1);
+      if (previous_.empty())
+        ::unsetenv("DISPLAY");
+      else
+        ::setenv("DISPLAY", previous_.c_str(), 1);
     }
     if (pid_ > 0) {
       ::kill(pid_, SIGTERM);

@@ -137,7 +137,8 @@ TEST(SourceSet, SpreadPosesKeepLidarsApart) {
     ASSERT_EQ(poses.size(), count);
     for (std::size_t i = 0; i < count; ++i)
       for (std::size_t j = i + 1; j < count; ++j)
-        EXPECT_GE(std::hypot(poses[i].x_m - poses[j].x_m, poses[i].y_m - poses[j].y_m), 3.0) << count << " " << i << " " << j;
+        EXPECT_GE(std::hypot(poses[i].x_m - poses[j].x_m, poses[i].y_m - poses[j].y_m), 3.0)
+            << count << " " << i << " " << j;
   }
 }
 
@@ -187,11 +188,12 @@ TEST(SourceSet, RememberedSourcesRoundTripAndABadLineIsSkippedWithANote) {
   look.pose.yaw_deg = -118.6637740153493;
   EXPECT_EQ(format_source_line(look), "front_left; 3.315,-1.5,-118.66,flip; #FF9628");
 
-  const std::string text = "source = G6; 1,2,30; #3CD2FF\n"
-                           "source = bad pose; 1,2; #FFFFFF\n"
-                           "source = G1; 1,2,30; orange\n"
-                           "source = no separators\n"
-                           "source = TG30;0,0,0,flip;#EB50DC\n";
+  const std::string text =
+      "source = G6; 1,2,30; #3CD2FF\n"
+      "source = bad pose; 1,2; #FFFFFF\n"
+      "source = G1; 1,2,30; orange\n"
+      "source = no separators\n"
+      "source = TG30;0,0,0,flip;#EB50DC\n";
   const ViewSettings parsed = parse_settings(text, &notes);
   ASSERT_EQ(parsed.sources.size(), 2u);
   EXPECT_EQ(parsed.sources[0].name, "G6");

@@ -59,8 +59,8 @@ TEST(ViewState, ScanningBeforeTheFirstLapWaits) {
 }
 
 TEST(ViewState, EveryStateButLiveScanningDims) {
-  for (const LinkState state : {LinkState::Idle, LinkState::Connecting, LinkState::Probing, LinkState::Ready, LinkState::Stalled,
-                                LinkState::Reconnecting, LinkState::Failed}) {
+  for (const LinkState state : {LinkState::Idle, LinkState::Connecting, LinkState::Probing, LinkState::Ready,
+                                LinkState::Stalled, LinkState::Reconnecting, LinkState::Failed}) {
     ViewStateInput in = scanning(0.1);  // even with a fresh lap in hand
     in.state = state;
     const ViewState v = describe_view_state(in);
@@ -121,8 +121,9 @@ TEST(ViewState, ASourceThatDidNotStartSaysWhyInLargeWords) {
 }
 
 TEST(ViewState, ASourcesWarningsAreSaidLiveOrNot) {
-  const std::vector<std::string> warnings{"cut.ydrec ends inside a record at byte 9 (the recorder was probably stopped "
-                                          "abruptly); the 3 records before it are intact"};
+  const std::vector<std::string> warnings{
+      "cut.ydrec ends inside a record at byte 9 (the recorder was probably stopped "
+      "abruptly); the 3 records before it are intact"};
   ViewStateInput in = scanning(0.1);
   in.replay = true;
   in.source_warnings = warnings;

@@ -25,7 +25,8 @@ std::string grouped(long n) {
   return out;
 }
 
-void draw_legend(ImDrawList* draw, ImFont* font, const ColourLegend& legend, float px, ImVec2 bottom_right, float bar_width) {
+void draw_legend(ImDrawList* draw, ImFont* font, const ColourLegend& legend, float px, ImVec2 bottom_right,
+                 float bar_width) {
   const float title_px = px * 0.55f;
   const float tick_px = px * 0.5f;
   const float pad = px * 0.45f;
@@ -58,7 +59,8 @@ void draw_legend(ImDrawList* draw, ImFont* font, const ColourLegend& legend, flo
       const float w = font->CalcTextSizeA(tick_px, 1e9f, 0.0f, t.text.c_str()).x;
       // Centred under its place, kept inside the bar's ends.
       const float tx = std::clamp(x + t.at * bar_width - w * 0.5f, x, x + bar_width - w);
-      draw->AddLine({x + t.at * bar_width, y - pad * 0.3f}, {x + t.at * bar_width, y - pad * 0.05f}, IM_COL32(220, 225, 235, 255), 2.0f);
+      draw->AddLine({x + t.at * bar_width, y - pad * 0.3f}, {x + t.at * bar_width, y - pad * 0.05f},
+                    IM_COL32(220, 225, 235, 255), 2.0f);
       draw->AddText(font, tick_px, {tx, y}, IM_COL32(225, 230, 240, 255), t.text.c_str());
     }
   } else {

@@ -27,7 +27,6 @@ std::string model_label(int choice, const char* none = "detect") {
   return std::string(profiles[static_cast<std::size_t>(choice - 1)].name);
 }
 
-
 void port_section(UiModel& m) {
   ImGui::TextDisabled("Serial port or tcp://host:port");
   if (ImGui::BeginCombo("##ports", m.port_text[0] ? m.port_text : "choose a port")) {
@@ -65,15 +64,17 @@ void host_section(UiModel& m) {
   if (!ImGui::TreeNode("host")) return;
   ImGui::Combo("answers", &m.sim_host_choice, kHosts, IM_ARRAYSIZE(kHosts));
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("YDLidar-SDK host: also answers what YDLIDAR's SDK and ROS 2 driver ask beyond\n"
-                      "the manual (A5 92 on G6/TG, A5 93, ...), so they start without timeouts.");
+    ImGui::SetTooltip(
+        "YDLidar-SDK host: also answers what YDLIDAR's SDK and ROS 2 driver ask beyond\n"
+        "the manual (A5 92 on G6/TG, A5 93, ...), so they start without timeouts.");
   const bool g1 = model_label(m.sim_model_choice) == "G1";  // its CT carries major 0..3, minor 0..31
   ImGui::InputInt2("firmware", m.sim_firmware);
   m.sim_firmware[0] = std::clamp(m.sim_firmware[0], 0, g1 ? 3 : 255);
   m.sim_firmware[1] = std::clamp(m.sim_firmware[1], 0, g1 ? 31 : 255);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("major.minor in the manual's byte order; YDLidar-SDK reads it the other way round\n"
-                      "and picks TG's distance scale from it (1.1: S/2 mm as the manual, 1.2 and above: S mm)");
+    ImGui::SetTooltip(
+        "major.minor in the manual's byte order; YDLidar-SDK reads it the other way round\n"
+        "and picks TG's distance scale from it (1.1: S/2 mm as the manual, 1.2 and above: S mm)");
   ImGui::Combo("delivery", &m.sim_delivery_choice, kDeliveries, IM_ARRAYSIZE(kDeliveries));
   if (m.sim_delivery_choice == 1) {
     ImGui::InputInt("burst bytes", &m.sim_burst_bytes);
@@ -159,10 +160,13 @@ void replay_section(UiModel& m) {
       m.replay.paused = !m.replay.paused;
       changed = true;
     }
-    changed |= ImGui::SliderFloat("speed", &m.replay.speed, kMinReplaySpeedShown, kMaxReplaySpeedShown, "%.2fx", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("speed", &m.replay.speed, kMinReplaySpeedShown, kMaxReplaySpeedShown, "%.2fx",
+                                  ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::Checkbox("loop", &m.replay.loop);
-    if (changed) m.requests.push_back(ControlReplay{m.replay.paused, static_cast<double>(m.replay.speed), m.replay.loop});
-    const float fraction = m.replay.duration_s > 0.0 ? static_cast<float>(m.replay.position_s / m.replay.duration_s) : 0.0f;
+    if (changed)
+      m.requests.push_back(ControlReplay{m.replay.paused, static_cast<double>(m.replay.speed), m.replay.loop});
+    const float fraction =
+        m.replay.duration_s > 0.0 ? static_cast<float>(m.replay.position_s / m.replay.duration_s) : 0.0f;
     char text[48];
     std::snprintf(text, sizeof text, "%.1f / %.1f s", m.replay.position_s, m.replay.duration_s);
     ImGui::ProgressBar(fraction, {-1.0f, 0.0f}, text);
@@ -189,7 +193,8 @@ void record_section(UiModel& m, const SessionSnapshot& s) {
     command_feedback_line(m, CommandControl::Recording);
   } else {
     constexpr const char* kFormats[] = {".ydrec (every byte)", ".mcap (ROS 2 topics)", ".ydrec + .mcap"};
-    constexpr const char* kHints[] = {"ydscope-<date>-<time>.ydrec", "ydscope-<date>-<time>.mcap", "ydscope-<date>-<time>.ydrec"};
+    constexpr const char* kHints[] = {"ydscope-<date>-<time>.ydrec", "ydscope-<date>-<time>.mcap",
+                                      "ydscope-<date>-<time>.ydrec"};
     m.record_format = std::clamp(m.record_format, 0, 2);
     ImGui::Combo("format", &m.record_format, kFormats, IM_ARRAYSIZE(kFormats));
     // Empty means a new timestamped name at each start, so no recording overwrites another.
@@ -213,9 +218,10 @@ void record_section(UiModel& m, const SessionSnapshot& s) {
     }
     if (!connected) ImGui::EndDisabled();
     command_feedback_line(m, CommandControl::Recording);
-    help_marker(".ydrec: every byte in both directions, with timestamps, written by the I/O thread; replay it from the "
-                "Replay tab. .mcap: /scan, /points, /diagnostics and the link bytes as ROS 2 messages, for Foxglove "
-                "and ros2 bag (chunks flushed every second).");
+    help_marker(
+        ".ydrec: every byte in both directions, with timestamps, written by the I/O thread; replay it from the "
+        "Replay tab. .mcap: /scan, /points, /diagnostics and the link bytes as ROS 2 messages, for Foxglove "
+        "and ros2 bag (chunks flushed every second).");
   }
 }
 
@@ -233,10 +239,11 @@ void share_section(UiModel& m) {
     wrapped_text(m.share.error.c_str());
     ImGui::PopStyleColor();
   }
-  help_marker("In Foxglove: Open connection > Foxglove WebSocket > the address above. Serves /scan, /points, "
-              "/diagnostics and the link bytes, follows a change of source, and lets the Parameters panel set "
-              "scan_hz, ranging_khz, power_down_protection and the G1 filters through the same commands as this "
-              "window. Only this machine can connect (127.0.0.1); --share-port picks the port.");
+  help_marker(
+      "In Foxglove: Open connection > Foxglove WebSocket > the address above. Serves /scan, /points, "
+      "/diagnostics and the link bytes, follows a change of source, and lets the Parameters panel set "
+      "scan_hz, ranging_khz, power_down_protection and the G1 filters through the same commands as this "
+      "window. Only this machine can connect (127.0.0.1); --share-port picks the port.");
 }
 
 }  // namespace

@@ -8,9 +8,7 @@
 #include "ui/panels/panels.h"
 
 namespace ydscope::ui {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 CommandCallback track_command(UiModel& m, CommandControl control) {
   const std::uint64_t ticket = m.feedback->issued(control);
@@ -47,13 +45,17 @@ void draw_frequency_panels(UiModel& m) {
       ImGui::TableNextColumn();
       ImGui::TextDisabled("set (A5 0D)");
       ImGui::TableNextColumn();
-      if (s.scan_hz) ImGui::Text("%.2f Hz", *s.scan_hz);
-      else ImGui::TextDisabled("-");
+      if (s.scan_hz)
+        ImGui::Text("%.2f Hz", *s.scan_hz);
+      else
+        ImGui::TextDisabled("-");
       ImGui::TableNextColumn();
       ImGui::TextDisabled("measured");
       ImGui::TableNextColumn();
-      if (measured) ImGui::Text("%.2f Hz", *measured);
-      else ImGui::TextDisabled("-");
+      if (measured)
+        ImGui::Text("%.2f Hz", *measured);
+      else
+        ImGui::TextDisabled("-");
       ImGui::EndTable();
     }
     if (!can_command) ImGui::BeginDisabled();
@@ -77,14 +79,17 @@ void draw_frequency_panels(UiModel& m) {
     if (!can_command) ImGui::EndDisabled();
     if (profile) {
       ImGui::SameLine();
-      ImGui::TextDisabled("%s: %.0f-%.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz, profile->max_scan_hz);
+      ImGui::TextDisabled("%s: %.0f-%.0f Hz", std::string(profile->name).c_str(), profile->min_scan_hz,
+                          profile->max_scan_hz);
     }
     command_feedback_line(m, CommandControl::ScanFrequency);
   }
 
   if (ImGui::CollapsingHeader("Ranging frequency")) {
-    if (s.ranging_khz) ImGui::Text("current: %u kHz", static_cast<unsigned>(*s.ranging_khz));
-    else ImGui::TextDisabled("current: unknown");
+    if (s.ranging_khz)
+      ImGui::Text("current: %u kHz", static_cast<unsigned>(*s.ranging_khz));
+    else
+      ImGui::TextDisabled("current: unknown");
     if (profile && profile->ranging_settable) {
       if (!can_command) ImGui::BeginDisabled();
       for (const std::uint16_t khz : profile->ranging_khz) {
@@ -114,8 +119,9 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::RadioButton("lap age", &mode, 2);
   ImGui::SameLine();
   ImGui::RadioButton("motion", &mode, 3);
-  help_marker("Returns closer than the room learned over the last 5 s (people walking past) hot, with fading trails; "
-              "the room calm. The booth view's default.");
+  help_marker(
+      "Returns closer than the room learned over the last 5 s (people walking past) hot, with fading trails; "
+      "the room calm. The booth view's default.");
   if (m.several_sources() || v.colours.mode == ColourMode::Source) {
     ImGui::SameLine();
     ImGui::RadioButton("source", &mode, 4);
@@ -181,7 +187,9 @@ void draw_filter_panel(UiModel& m, ViewSettings& v) {
   ImGui::SameLine();
   ImGui::TextDisabled("%d / lap", static_cast<int>(m.cloud.newest_ambient_removed));
   ImGui::Checkbox("show removed as ghosts", &v.interference.show_ghosts);
-  help_marker("G1 marks samples hit by a mirror-like reflection (2) or strong ambient light (3). G6 and TG never set these flags.");
+  help_marker(
+      "G1 marks samples hit by a mirror-like reflection (2) or strong ambient light (3). G6 and TG never set these "
+      "flags.");
 }
 
 }  // namespace ydscope::ui

@@ -31,7 +31,8 @@ void lamp(std::optional<bool> set, bool trusted) {
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const ImVec2 c{p.x + r + 2.0f, p.y + ImGui::GetTextLineHeight() * 0.5f};
   ImU32 colour = IM_COL32(90, 95, 105, 255);
-  if (set) colour = *set ? (trusted ? IM_COL32(255, 80, 70, 255) : IM_COL32(230, 160, 60, 255)) : IM_COL32(70, 200, 110, 255);
+  if (set)
+    colour = *set ? (trusted ? IM_COL32(255, 80, 70, 255) : IM_COL32(230, 160, 60, 255)) : IM_COL32(70, 200, 110, 255);
   ImGui::GetWindowDrawList()->AddCircleFilled(c, r, colour, 16);
   ImGui::Dummy({2.0f * r + 4.0f, ImGui::GetTextLineHeight()});
 }
@@ -59,7 +60,8 @@ void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std
   for (const HealthBitInfo& info : health_bits(model)) {
     if ((any >> info.bit) & 1u) {
       ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", std::string(info.name).c_str(), std::string(info.meaning).c_str());
+      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", std::string(info.name).c_str(),
+                         std::string(info.meaning).c_str());
       ImGui::PopTextWrapPos();
     }
   }
@@ -83,7 +85,8 @@ void draw_device_panel(UiModel& m) {
     std::snprintf(text, sizeof text, "%u", static_cast<unsigned>(d.model_code));
     cell("model code", text);
     ImGui::TableNextRow();
-    std::snprintf(text, sizeof text, "%u.%u", static_cast<unsigned>(d.firmware.major), static_cast<unsigned>(d.firmware.minor));
+    std::snprintf(text, sizeof text, "%u.%u", static_cast<unsigned>(d.firmware.major),
+                  static_cast<unsigned>(d.firmware.minor));
     cell("firmware", text);
     std::snprintf(text, sizeof text, "%u", static_cast<unsigned>(d.hardware));
     cell("hardware", text);
@@ -104,12 +107,14 @@ void draw_device_panel(UiModel& m) {
       m.requests.push_back(SetDistanceScale{});
     }
   }
-  help_marker("The manuals give G6 S/4 and TG S/2 mm per count; some vendor firmware uses S/2 (G6) or S (TG above 1.2). "
-              "If walls look twice too near or far, change the scale here.");
+  help_marker(
+      "The manuals give G6 S/4 and TG S/2 mm per count; some vendor firmware uses S/2 (G6) or S (TG above 1.2). "
+      "If walls look twice too near or far, change the scale here.");
   if (m.distance_scale_override) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110.0f);
-    if (ImGui::InputFloat("##scale", &m.distance_scale_value, 0.0f, 0.0f, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue) &&
+    if (ImGui::InputFloat("##scale", &m.distance_scale_value, 0.0f, 0.0f, "%.3f",
+                          ImGuiInputTextFlags_EnterReturnsTrue) &&
         m.distance_scale_value > 0.0f) {
       m.requests.push_back(SetDistanceScale{static_cast<double>(m.distance_scale_value)});
     }
@@ -127,7 +132,9 @@ void draw_health_panel(UiModel& m) {
     bit_table(model, m.ct_health, m.ct_health_trusted, answer);
     if (m.ct_health && !m.ct_health_trusted) {
       ImGui::TextColored({1.0f, 0.7f, 0.3f, 1.0f}, "CT health untrusted: the lap's CRC8 failed");
-      help_marker("G1 spreads health over the packets of a lap; when the LastCRC byte disagrees a packet was lost, so the CT information may belong to another index.");
+      help_marker(
+          "G1 spreads health over the packets of a lap; when the LastCRC byte disagrees a packet was lost, so the CT "
+          "information may belong to another index.");
     }
     ImGui::TextDisabled("CT: live, every lap.  A5 92: asked at connect.");
   } else if (s.health) {
@@ -135,12 +142,14 @@ void draw_health_panel(UiModel& m) {
     const HealthStatusInfo info = health_status_info(h.status);
     lamp(info.is_problem, true);
     ImGui::SameLine();
-    ImGui::TextColored(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f}, "%s status %u: %s",
-                       h.command == Command::HealthStatusBits ? "A5 92" : "A5 91", static_cast<unsigned>(h.status),
-                       std::string(info.name).c_str());
+    ImGui::TextColored(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f},
+                       "%s status %u: %s", h.command == Command::HealthStatusBits ? "A5 92" : "A5 91",
+                       static_cast<unsigned>(h.status), std::string(info.name).c_str());
     // What the status means: in the panel when it is a problem, one hover away when it is not.
-    if (info.is_problem) wrapped_text(std::string(info.meaning).c_str());
-    else if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(info.meaning).c_str());
+    if (info.is_problem)
+      wrapped_text(std::string(info.meaning).c_str());
+    else if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s", std::string(info.meaning).c_str());
     ImGui::Text("error code 0x%04X", static_cast<unsigned>(h.error_code));
     if (!h.summary.empty()) {
       ImGui::SameLine();

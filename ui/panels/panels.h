@@ -35,7 +35,8 @@ float status_band_height();
 // The booth view (full screen): model, state and rates in large type, and the colour legend.
 void draw_booth_overlay(const UiModel& model, float view_left, float view_width, float view_height);
 // When model.view_state says the picture is not live: dim the view and say why in large type.
-void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height, float view_top = 0.0f);
+void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height,
+                       float view_top = 0.0f);
 
 // Small helpers shared by the panels.
 // The colour of words of this severity over the view: green, blue, amber, red.

@@ -50,8 +50,8 @@ void scan_rate_plot(const RunPlots& plots) {
   const std::size_t n = set.size();
   for (std::size_t i = 1; i < n; ++i) {
     const float v0 = set.data()[(set.offset() + i - 1) % n], v1 = set.data()[(set.offset() + i) % n];
-    draw->AddLine({sample_x(a, b, i - 1, n), sample_y(a, b, v0, lo, hi)}, {sample_x(a, b, i, n), sample_y(a, b, v1, lo, hi)},
-                  IM_COL32(90, 210, 120, 200), 1.5f);
+    draw->AddLine({sample_x(a, b, i - 1, n), sample_y(a, b, v0, lo, hi)},
+                  {sample_x(a, b, i, n), sample_y(a, b, v1, lo, hi)}, IM_COL32(90, 210, 120, 200), 1.5f);
   }
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("last %zu laps: blue measured, green set", n);
@@ -60,8 +60,10 @@ void scan_rate_plot(const RunPlots& plots) {
 
 void value_plot(const char* id, const MetricHistory& h, const char* format, const char* what) {
   char overlay[96];
-  if (const auto now = h.last()) std::snprintf(overlay, sizeof overlay, format, *now);
-  else std::snprintf(overlay, sizeof overlay, "%s: waiting", what);
+  if (const auto now = h.last())
+    std::snprintf(overlay, sizeof overlay, format, *now);
+  else
+    std::snprintf(overlay, sizeof overlay, "%s: waiting", what);
   const float hi = std::max(h.max() * 1.15f, 1.0f);
   plot_lines(id, h, overlay, 0.0f, hi);
 }

@@ -20,9 +20,13 @@ void legend_line(ImDrawList* draw, const SourceRow& row, ImVec2 at, bool selecte
   const ImU32 colour = IM_COL32(c.r, c.g, c.b, row.dim || row.look.hidden ? 110 : 255);
   const ImVec2 swatch{at.x, at.y + (line - box) * 0.5f};
   draw->AddRectFilled(swatch, {swatch.x + box, swatch.y + box}, colour, 2.0f);
-  if (selected) draw->AddRect({swatch.x - 2.0f, swatch.y - 2.0f}, {swatch.x + box + 2.0f, swatch.y + box + 2.0f}, IM_COL32(255, 255, 255, 200), 2.0f);
+  if (selected)
+    draw->AddRect({swatch.x - 2.0f, swatch.y - 2.0f}, {swatch.x + box + 2.0f, swatch.y + box + 2.0f},
+                  IM_COL32(255, 255, 255, 200), 2.0f);
   // A silent source's words in amber: the news of the view.
-  const ImU32 ink = row.dim ? IM_COL32(255, 190, 80, 255) : row.look.hidden ? IM_COL32(140, 145, 155, 255) : IM_COL32(230, 235, 245, 255);
+  const ImU32 ink = row.dim           ? IM_COL32(255, 190, 80, 255)
+                    : row.look.hidden ? IM_COL32(140, 145, 155, 255)
+                                      : IM_COL32(230, 235, 245, 255);
   draw->AddText({swatch.x + box + legend_pad(), at.y}, ink, row.legend.c_str());
 }
 
@@ -39,7 +43,8 @@ void draw_source_legend(const UiModel& m, float view_left, float view_width) {
                   lo.y + line * static_cast<float>(m.sources.size()) + pad};
   draw->AddRectFilled(lo, hi, IM_COL32(15, 20, 30, 200), pad * 0.5f);
   for (std::size_t i = 0; i < m.sources.size(); ++i)
-    legend_line(draw, m.sources[i], {lo.x + pad, lo.y + pad * 0.5f + line * static_cast<float>(i)}, i == m.selected_source);
+    legend_line(draw, m.sources[i], {lo.x + pad, lo.y + pad * 0.5f + line * static_cast<float>(i)},
+                i == m.selected_source);
 }
 
 void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected) {

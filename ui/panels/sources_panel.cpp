@@ -23,7 +23,8 @@ void pose_fields(UiModel& m, std::size_t index, const SourceLook& look) {
   SourceLook edited = look;
   float xy[2] = {static_cast<float>(look.pose.x_m), static_cast<float>(look.pose.y_m)};
   float yaw = static_cast<float>(look.pose.yaw_deg);
-  bool changed = ImGui::DragFloat2("x, y m", xy, 0.01f, -static_cast<float>(kMaxPoseOffsetM), static_cast<float>(kMaxPoseOffsetM), "%.2f");
+  bool changed = ImGui::DragFloat2("x, y m", xy, 0.01f, -static_cast<float>(kMaxPoseOffsetM),
+                                   static_cast<float>(kMaxPoseOffsetM), "%.2f");
   changed |= ImGui::DragFloat("yaw deg", &yaw, 0.5f, -360.0f, 360.0f, "%.1f");
   changed |= ImGui::Checkbox("upside down", &edited.pose.upside_down);
   if (!changed) return;
@@ -50,7 +51,8 @@ void add_source_controls(UiModel& m) {
     add.request.scene = kScenes[m.add_source_scene_choice];
   } else {
     // A port path or tcp://host:port, or a .ydrec to play round and round.
-    ImGui::InputText(m.add_source_kind == 1 ? "address##add" : "file##add", m.add_source_address, sizeof m.add_source_address);
+    ImGui::InputText(m.add_source_kind == 1 ? "address##add" : "file##add", m.add_source_address,
+                     sizeof m.add_source_address);
     add.request.kind = m.add_source_kind == 1 ? ConnectRequest::Kind::Port : ConnectRequest::Kind::Replay;
     add.request.address = m.add_source_address;
   }

@@ -20,8 +20,10 @@ void draw_stats_panel(const UiModel& m) {
     ImGui::TableNextColumn();
     char text[48];
     std::snprintf(text, sizeof text, format, value);
-    if (warn) ImGui::TextColored({1.0f, 0.6f, 0.35f, 1.0f}, "%s", text);
-    else ImGui::TextUnformatted(text);
+    if (warn)
+      ImGui::TextColored({1.0f, 0.6f, 0.35f, 1.0f}, "%s", text);
+    else
+      ImGui::TextUnformatted(text);
   };
   pair("bytes/s", "%.0f", c.bytes_per_s, false);
   pair("packets/s", "%.0f", c.packets_per_s, false);
@@ -45,9 +47,11 @@ void draw_stats_panel(const UiModel& m) {
   if (m.snap.consumers.size() > 1) {
     ImGui::TextDisabled("lap consumers (ring, delivered, dropped)");
     for (const LapConsumerStats& consumer : m.snap.consumers) {
-      const ImVec4 colour = consumer.dropped > 0 ? ImVec4{1.0f, 0.6f, 0.35f, 1.0f} : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+      const ImVec4 colour =
+          consumer.dropped > 0 ? ImVec4{1.0f, 0.6f, 0.35f, 1.0f} : ImGui::GetStyleColorVec4(ImGuiCol_Text);
       ImGui::TextColored(colour, "  %s: %zu, %llu, %llu", consumer.name.c_str(), consumer.capacity,
-                         static_cast<unsigned long long>(consumer.delivered), static_cast<unsigned long long>(consumer.dropped));
+                         static_cast<unsigned long long>(consumer.delivered),
+                         static_cast<unsigned long long>(consumer.dropped));
     }
   }
 }
@@ -74,7 +78,8 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
     if (ImGui::BeginTabBar("sidebar")) {
       const int wanted = m.show_sidebar_tab;
       const auto tab = [&m](const char* name, SidebarTab which) {
-        return ImGui::BeginTabItem(name, nullptr, m.show_sidebar_tab == static_cast<int>(which) ? ImGuiTabItemFlags_SetSelected : 0);
+        return ImGui::BeginTabItem(name, nullptr,
+                                   m.show_sidebar_tab == static_cast<int>(which) ? ImGuiTabItemFlags_SetSelected : 0);
       };
       if (tab("Lidar", SidebarTab::Lidar)) {
         draw_connection_panel(m);
@@ -102,11 +107,12 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
       // The keys, one hover away instead of a row of their own.
       ImGui::TabItemButton("keys", ImGuiTabItemFlags_Trailing);
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Tab: hide the panels   F11: full-screen   R: reset view   A: auto-range\n"
-                          "P: freeze   S: screenshot   E: shown laps as CSV   M: as MCAP   W: share on/off\n"
-                          "N: next source   Esc: clear the ruler   Ctrl+Q: quit\n"
-                          "Wheel: zoom   drag: pan   double-click: reset   right-click twice: ruler\n"
-                          "Shift+drag: watch a sector   Alt+drag / Ctrl+drag: move / turn the selected source");
+        ImGui::SetTooltip(
+            "Tab: hide the panels   F11: full-screen   R: reset view   A: auto-range\n"
+            "P: freeze   S: screenshot   E: shown laps as CSV   M: as MCAP   W: share on/off\n"
+            "N: next source   Esc: clear the ruler   Ctrl+Q: quit\n"
+            "Wheel: zoom   drag: pan   double-click: reset   right-click twice: ruler\n"
+            "Shift+drag: watch a sector   Alt+drag / Ctrl+drag: move / turn the selected source");
       ImGui::EndTabBar();
     }
     ImGui::PopItemWidth();

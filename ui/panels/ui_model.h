@@ -74,19 +74,19 @@ struct SourceRow {
 struct UiModel {
   // ---- filled by the app each frame -------------------------------------------------------------
   SessionSnapshot snap;
-  std::string source_text;  // "virtual G6 (demo scene) on /dev/pts/4", "recording demo.ydrec"
-  std::string banner;       // shown over the view, e.g. "No lidar found — showing the virtual G6 (demo scene)"
+  std::string source_text;      // "virtual G6 (demo scene) on /dev/pts/4", "recording demo.ydrec"
+  std::string banner;           // shown over the view, e.g. "No lidar found — showing the virtual G6 (demo scene)"
   double banner_since_s = 0.0;  // when this banner first showed (the booth view fades it)
-  std::string start_error;  // why the chosen source did not start (then there is no source)
-  bool start_error_replay = false;  // ... and it was a recording
+  std::string start_error;      // why the chosen source did not start (then there is no source)
+  bool start_error_replay = false;           // ... and it was a recording
   std::vector<std::string> source_warnings;  // wrong with the source but not stopping it
   std::vector<PortEntry> ports;
   bool sim_active = false;
-  double now_s = 0.0;       // since start, for the health timeline
+  double now_s = 0.0;  // since start, for the health timeline
   ScanRateMeter scan_rate;
   RunningMean frame_ms;
   RunningMean frame_interval_ms;  // start to start of frames: how often the view redraws
-  RunningMean latency_ms;   // lap's last byte -> the frame that first shows it
+  RunningMean latency_ms;         // lap's last byte -> the frame that first shows it
   std::uint64_t laps_shown = 0;
   std::uint64_t laps_skipped = 0;  // drained but never shown (its LapRing::skipped)
   std::size_t points_in_lap = 0;
@@ -98,16 +98,16 @@ struct UiModel {
   std::uint64_t crc_mismatch_laps = 0;
   HealthTimeline timeline;
   CounterRate bytes_rate, packets_rate, laps_rate;
-  RunPlots plots;                         // the Plots panel's history
-  std::vector<SectorWatch> sectors;       // the Sectors panel's, in settings order
+  RunPlots plots;                    // the Plots panel's history
+  std::vector<SectorWatch> sectors;  // the Sectors panel's, in settings order
   ReplayControl replay;
-  bool paused_view = false;               // the view holds the current laps
-  ViewState view_state;                   // live, or dimmed with the reason in words
-  std::vector<HealthAlert> alerts;        // worst first, for the status line and the badge
+  bool paused_view = false;         // the view holds the current laps
+  ViewState view_state;             // live, or dimmed with the reason in words
+  std::vector<HealthAlert> alerts;  // worst first, for the status line and the badge
   ShareState share;
   McapRecordingState mcap_recording;
-  bool booth = false;                     // the full-screen view: large type and a legend
-  ColourLegend legend;                    // what the colours mean, for the booth view
+  bool booth = false;   // the full-screen view: large type and a legend
+  ColourLegend legend;  // what the colours mean, for the booth view
   // Outcomes of device commands for the panel beside the control that issued them. Shared with
   // the session's completion callbacks, which run on the I/O thread.
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();
@@ -136,9 +136,9 @@ struct UiModel {
   int sim_model_choice = 2;   // 1-based in all_profiles(): G6
   int sim_scene_choice = 1;   // demo
   FaultConfig sim_faults;
-  int sim_host_choice = 0;            // 0 manual, 1 YDLidar-SDK
-  int sim_firmware[2] = {1, 2};       // major, minor
-  int sim_delivery_choice = 0;        // 0 whole, 1 USB bursts, 2 random splits
+  int sim_host_choice = 0;       // 0 manual, 1 YDLidar-SDK
+  int sim_firmware[2] = {1, 2};  // major, minor
+  int sim_delivery_choice = 0;   // 0 whole, 1 USB bursts, 2 random splits
   int sim_burst_bytes = 64;
   int sim_burst_interval_us = 1000;
   int sim_random_max = 17;
@@ -152,9 +152,9 @@ struct UiModel {
   float scan_target_hz = 10.0f;
   bool distance_scale_override = false;
   float distance_scale_value = 1.0f;
-  int add_source_kind = 0;          // the Sources panel's "add": 0 virtual lidar, 1 port, 2 recording
-  int add_source_model_choice = 2;  // 1-based in all_profiles(): G6
-  int add_source_scene_choice = 1;  // demo
+  int add_source_kind = 0;            // the Sources panel's "add": 0 virtual lidar, 1 port, 2 recording
+  int add_source_model_choice = 2;    // 1-based in all_profiles(): G6
+  int add_source_scene_choice = 1;    // demo
   char add_source_address[512] = "";  // the port, tcp:// address or recording to add
 };
 

@@ -20,18 +20,18 @@ namespace ydscope::ui {
 // A source to start in place of the current one.
 struct ConnectRequest {
   enum class Kind { Port, Sim, Replay } kind = Kind::Port;
-  std::string address;                // port path / tcp URL, or the recording for Replay
-  std::optional<std::string> model;   // Port: fixed model (empty = detect); Sim: the model;
-                                      // Replay: decode as this one (empty = the recording's)
-  std::optional<std::uint32_t> baud;  // Port only
-  std::string scene = "demo";         // Sim only
-  FaultConfig faults;                 // Sim only
+  std::string address;                          // port path / tcp URL, or the recording for Replay
+  std::optional<std::string> model;             // Port: fixed model (empty = detect); Sim: the model;
+                                                // Replay: decode as this one (empty = the recording's)
+  std::optional<std::uint32_t> baud;            // Port only
+  std::string scene = "demo";                   // Sim only
+  FaultConfig faults;                           // Sim only
   HostCompat host_compat = HostCompat::Manual;  // Sim only: what it answers beyond the manual
-  std::uint8_t firmware_major = 1;    // Sim only: what its device info reports
+  std::uint8_t firmware_major = 1;              // Sim only: what its device info reports
   std::uint8_t firmware_minor = 2;
-  DeliveryModel delivery;             // Sim only: how its bytes reach the host
-  double replay_speed = 1.0;          // Replay only: 1 as recorded, within the panel's slider
-  bool replay_loop = true;            // Replay only: false stops at the end and says so
+  DeliveryModel delivery;     // Sim only: how its bytes reach the host
+  double replay_speed = 1.0;  // Replay only: 1 as recorded, within the panel's slider
+  bool replay_loop = true;    // Replay only: false stops at the end and says so
 };
 
 // ---- the source -------------------------------------------------------------------------------

@@ -62,8 +62,8 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   const auto measured = m.scan_rate.hz();
   int n = std::snprintf(text, sizeof text, "%s%s%s", model, *model ? "  \xE2\x80\xA2  " : "", v.status.c_str());
   if (measured && n > 0 && v.live) {
-    std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n), "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured,
-                  m.points_in_lap);
+    std::snprintf(text + n, sizeof text - static_cast<std::size_t>(n),
+                  "  \xE2\x80\xA2  %.1f Hz  \xE2\x80\xA2  %zu points", *measured, m.points_in_lap);
   }
   // Lines stack upwards from the status line; each wraps inside the view.
   float y = bottom - pad;
@@ -101,7 +101,8 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   }
   if (!m.alerts.empty()) {
     const bool error = m.alerts.front().severity == Severity::Error;
-    badge(draw, {right, top}, error ? "HEALTH ERROR" : "HEALTH WARNING", error ? IM_COL32(190, 40, 35, 235) : IM_COL32(215, 150, 20, 235),
+    badge(draw, {right, top}, error ? "HEALTH ERROR" : "HEALTH WARNING",
+          error ? IM_COL32(190, 40, 35, 235) : IM_COL32(215, 150, 20, 235),
           error ? IM_COL32(255, 255, 255, 255) : IM_COL32(20, 15, 5, 255));
   }
 
@@ -111,9 +112,10 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
     const float x = view_left + std::max(16.0f, (view_width - size.x) * 0.5f);
     const float by = 44.0f + (m.recording() || m.share.on || !m.alerts.empty() ? line : 0.0f);
     const auto alpha = [banner_alpha](int a) { return static_cast<ImU32>(static_cast<float>(a) * banner_alpha); };
-    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f}, IM_COL32(22, 45, 80, alpha(215)), 8.0f);
-    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x, by}, IM_COL32(210, 230, 255, alpha(255)), m.banner.c_str(),
-                  nullptr, wrap - 28.0f);
+    draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f},
+                        IM_COL32(22, 45, 80, alpha(215)), 8.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), {x, by}, IM_COL32(210, 230, 255, alpha(255)),
+                  m.banner.c_str(), nullptr, wrap - 28.0f);
   }
 }
 
@@ -133,21 +135,26 @@ void draw_view_overlay(const UiModel& m, float view_left, float view_width, floa
   const ImVec2 head = font->CalcTextSizeA(headline_px, FLT_MAX, 0.0f, v.headline.c_str());
   const ImVec2 sub = font->CalcTextSizeA(body_px, FLT_MAX, wrap, v.subtitle.c_str());
   const float detail_px = body_px * 0.8f;
-  const ImVec2 det = v.detail.empty() ? ImVec2{0.0f, 0.0f} : font->CalcTextSizeA(detail_px, FLT_MAX, wrap, v.detail.c_str());
+  const ImVec2 det =
+      v.detail.empty() ? ImVec2{0.0f, 0.0f} : font->CalcTextSizeA(detail_px, FLT_MAX, wrap, v.detail.c_str());
   const float gap = body_px * 0.5f;
   const float box_w = std::max({head.x, sub.x, det.x}) + 2.0f * body_px;
   const float box_h = head.y + gap + sub.y + (v.detail.empty() ? 0.0f : gap + det.y) + 1.6f * body_px;
   const float cx = view_left + view_width * 0.5f;
   const float top = view_top + view_height * 0.5f - box_h * 0.5f;
-  draw->AddRectFilled({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(20, 24, 32, 235), body_px * 0.6f);
-  draw->AddRect({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(90, 100, 120, 255), body_px * 0.6f, 0, 2.0f);
+  draw->AddRectFilled({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(20, 24, 32, 235),
+                      body_px * 0.6f);
+  draw->AddRect({cx - box_w * 0.5f, top}, {cx + box_w * 0.5f, top + box_h}, IM_COL32(90, 100, 120, 255), body_px * 0.6f,
+                0, 2.0f);
   float y = top + 0.8f * body_px;
   // White and light grey only: the words must read on any screen, and must not look like scan points.
   draw->AddText(font, headline_px, {cx - head.x * 0.5f, y}, IM_COL32(245, 245, 250, 255), v.headline.c_str());
   y += head.y + gap;
   draw->AddText(font, body_px, {cx - sub.x * 0.5f, y}, IM_COL32(215, 220, 230, 255), v.subtitle.c_str(), nullptr, wrap);
   y += sub.y + gap;
-  if (!v.detail.empty()) draw->AddText(font, detail_px, {cx - det.x * 0.5f, y}, IM_COL32(160, 168, 182, 255), v.detail.c_str(), nullptr, wrap);
+  if (!v.detail.empty())
+    draw->AddText(font, detail_px, {cx - det.x * 0.5f, y}, IM_COL32(160, 168, 182, 255), v.detail.c_str(), nullptr,
+                  wrap);
 }
 
 }  // namespace ydscope::ui

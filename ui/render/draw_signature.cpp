@@ -26,7 +26,9 @@ std::uint64_t mix_bytes(std::uint64_t h, const void* data, std::size_t bytes) {
 
 }  // namespace
 
-std::uint64_t mix_signature(std::uint64_t signature, std::uint64_t value) { return mix_bytes(signature, &value, sizeof value); }
+std::uint64_t mix_signature(std::uint64_t signature, std::uint64_t value) {
+  return mix_bytes(signature, &value, sizeof value);
+}
 
 std::uint64_t draw_signature(const ImDrawData& data) {
   std::uint64_t h = kOffset;

@@ -22,7 +22,8 @@ const char* flag_text(PointFlag flag) {
 }
 
 // `bounds` keeps the whole label inside the view (spoke labels sit at its edges).
-void label(ImDrawList* draw, Vec2 at, const char* text, ImU32 colour, bool centred, const ViewTransform* bounds = nullptr) {
+void label(ImDrawList* draw, Vec2 at, const char* text, ImU32 colour, bool centred,
+           const ViewTransform* bounds = nullptr) {
   const ImVec2 size = ImGui::CalcTextSize(text);
   ImVec2 p = im(at);
   if (centred) p = {p.x - size.x * 0.5f, p.y - size.y * 0.5f};
@@ -33,7 +34,8 @@ void label(ImDrawList* draw, Vec2 at, const char* text, ImU32 colour, bool centr
     p.y = std::clamp(p.y, lo.y + 2.0f, std::max(lo.y + 2.0f, hi.y - size.y - 2.0f));
   }
   // A dark plate under the words: they stay legible over scan points and grid lines alike.
-  draw->AddRectFilled({p.x - 4.0f, p.y - 1.0f}, {p.x + size.x + 4.0f, p.y + size.y + 1.0f}, IM_COL32(11, 13, 18, 200), 4.0f);
+  draw->AddRectFilled({p.x - 4.0f, p.y - 1.0f}, {p.x + size.x + 4.0f, p.y + size.y + 1.0f}, IM_COL32(11, 13, 18, 200),
+                      4.0f);
   draw->AddText(p, colour, text);
 }
 
@@ -45,8 +47,8 @@ void sector_wedge(ImDrawList* draw, const ViewTransform& view, const SectorShape
   Vec2 previous = view.world_to_screen(polar_to_world(sector.from_deg, reach_mm));
   draw->AddLine(im(o), im(previous), edge, 1.5f);
   for (int i = 1; i <= steps; ++i) {
-    const Vec2 next = view.world_to_screen(
-        polar_to_world(sector.from_deg + sector.width_deg * static_cast<float>(i) / static_cast<float>(steps), reach_mm));
+    const Vec2 next = view.world_to_screen(polar_to_world(
+        sector.from_deg + sector.width_deg * static_cast<float>(i) / static_cast<float>(steps), reach_mm));
     draw->AddTriangleFilled(im(o), im(previous), im(next), fill);
     previous = next;
   }
@@ -68,7 +70,8 @@ void lidar_mark(ImDrawList* draw, const ViewTransform& view, const Pose& pose, I
   draw->AddCircleFilled(im(o), 4.0f, accent, 16);
   draw->AddCircle(im(o), 9.0f, IM_COL32(255, 255, 255, 90), 24, 1.5f);
   if (selected) draw->AddCircle(im(o), 15.0f, accent, 32, 2.0f);
-  draw->AddTriangleFilled(im(o + forward * 24.0f), im(o + forward * 13.0f - side * 7.0f), im(o + forward * 13.0f + side * 7.0f), accent);
+  draw->AddTriangleFilled(im(o + forward * 24.0f), im(o + forward * 13.0f - side * 7.0f),
+                          im(o + forward * 13.0f + side * 7.0f), accent);
 }
 
 }  // namespace
@@ -78,8 +81,10 @@ void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
   draw->PushClipRect(im(view.viewport_origin()), im(view.viewport_origin() + view.viewport_size()), true);
 
   if (in.show_grid_labels && in.grid) {
-    for (const GridLabel& l : in.grid->ring_labels) label(draw, l.screen + Vec2{4.0f, -2.0f}, l.text.c_str(), IM_COL32(170, 190, 220, 200), false);
-    for (const GridLabel& l : in.grid->spoke_labels) label(draw, l.screen, l.text.c_str(), IM_COL32(150, 170, 200, 170), true, &view);
+    for (const GridLabel& l : in.grid->ring_labels)
+      label(draw, l.screen + Vec2{4.0f, -2.0f}, l.text.c_str(), IM_COL32(170, 190, 220, 200), false);
+    for (const GridLabel& l : in.grid->spoke_labels)
+      label(draw, l.screen, l.text.c_str(), IM_COL32(150, 170, 200, 170), true, &view);
   }
 
   for (const SectorShape& sector : in.sectors)

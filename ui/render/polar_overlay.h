@@ -37,8 +37,8 @@ struct OverlayInput {
   const Ruler* ruler = nullptr;
   std::optional<Vec2> ruler_cursor_world;  // rubber band from the first end to the cursor
   std::vector<SectorShape> sectors;
-  std::optional<SectorShape> sweep;        // the sector a Shift+drag is sweeping out
-  std::vector<SourceMark> marks;           // several sources; empty: the lone lidar at the origin
+  std::optional<SectorShape> sweep;  // the sector a Shift+drag is sweeping out
+  std::vector<SourceMark> marks;     // several sources; empty: the lone lidar at the origin
 };
 
 void draw_polar_overlay(ImDrawList* draw, const OverlayInput& input);

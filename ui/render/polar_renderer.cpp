@@ -83,7 +83,8 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
   if (style.show_grid && lines_.count > 0) {
     line_program_.use();
     glUniform4f(line_program_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);
-    glUniform1f(line_program_.uniform("u_half_width_px"), 0.5f * style.grid.line_width_px);  // edge_px is in window pixels too
+    glUniform1f(line_program_.uniform("u_half_width_px"),
+                0.5f * style.grid.line_width_px);  // edge_px is in window pixels too
     glBindVertexArray(lines_.vao);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines_.count));
   }

@@ -77,7 +77,8 @@ void PolarView::handle_input(ViewSettings& settings, bool pointer_in_window, dou
 std::optional<SectorShape> PolarView::sweep_shape() const {
   if (!sweep_from_deg_) return std::nullopt;
   SectorShape shape;
-  shape.from_deg = sweep_turned_deg_ >= 0.0f ? *sweep_from_deg_ : std::fmod(*sweep_from_deg_ + sweep_turned_deg_ + 360.0f, 360.0f);
+  shape.from_deg =
+      sweep_turned_deg_ >= 0.0f ? *sweep_from_deg_ : std::fmod(*sweep_from_deg_ + sweep_turned_deg_ + 360.0f, 360.0f);
   shape.width_deg = std::fabs(sweep_turned_deg_);
   char label[32];
   std::snprintf(label, sizeof label, "%.0f\xC2\xB0", static_cast<double>(shape.width_deg));
@@ -138,8 +139,10 @@ const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const 
   return stats_;
 }
 
-const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings, float phase) {
-  const bool several_laps = std::any_of(layers.begin(), layers.end(), [](const SourceLayer& l) { return l.history && l.history->size() > 1; });
+const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings,
+                                               float phase) {
+  const bool several_laps = std::any_of(layers.begin(), layers.end(),
+                                        [](const SourceLayer& l) { return l.history && l.history->size() > 1; });
   const ColourParams colours = colours_for(settings, phase, several_laps);
   if (dirty_) {
     stats_ = build_source_clouds(layers, colours, settings.interference, vertices_, scratch_, phase);
@@ -149,7 +152,7 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
 }
 
 void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings) {
-  const float key[6] = {view_.px_per_mm(),        view_.centre_world().x,   view_.centre_world().y,
+  const float key[6] = {view_.px_per_mm(),       view_.centre_world().x,  view_.centre_world().y,
                         view_.viewport_size().x, view_.viewport_size().y, status_band_px_};
   if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
     std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
@@ -169,7 +172,8 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
   overlay.sectors = sectors_;
   overlay.sweep = sweep_shape();
   overlay.marks = marks_;
-  if (hover_cursor_ && !history.empty()) overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
+  if (hover_cursor_ && !history.empty())
+    overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
 }
 

@@ -106,7 +106,8 @@ std::vector<std::uint8_t> app_icon_rgba(int size) {
       const float a = sum[3] / n;
       std::uint8_t* out = &pixels[(static_cast<std::size_t>(py) * size + px) * 4];
       for (int k = 0; k < 3; ++k)
-        out[k] = static_cast<std::uint8_t>(std::lround(a > 0 ? std::clamp(sum[k] / sum[3], 0.0f, 1.0f) * 255.0f : 0.0f));
+        out[k] =
+            static_cast<std::uint8_t>(std::lround(a > 0 ? std::clamp(sum[k] / sum[3], 0.0f, 1.0f) * 255.0f : 0.0f));
       out[3] = static_cast<std::uint8_t>(std::lround(a * 255.0f));
     }
   }

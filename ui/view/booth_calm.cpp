@@ -16,6 +16,8 @@ bool banner_fading(double age_s, bool booth) {
 
 bool cursor_hidden(double rested_s, bool booth) { return booth && rested_s >= kCursorRestSeconds; }
 
-int booth_persistence(int windowed_laps) { return std::clamp(windowed_laps, kBoothMinPersistence, kBoothMaxPersistence); }
+int booth_persistence(int windowed_laps) {
+  return std::clamp(windowed_laps, kBoothMinPersistence, kBoothMaxPersistence);
+}
 
 }  // namespace ydscope::ui

@@ -20,10 +20,10 @@ struct LegendSwatch {
 };
 
 struct ColourLegend {
-  std::string title;                  // "range", "interference flag", "lap age"
-  std::vector<Rgba8> bar;             // the bar's colours from start to end; empty for swatches
-  std::vector<LegendTick> ticks;      // under the bar
-  std::vector<LegendSwatch> swatches; // flag mode
+  std::string title;                   // "range", "interference flag", "lap age"
+  std::vector<Rgba8> bar;              // the bar's colours from start to end; empty for swatches
+  std::vector<LegendTick> ticks;       // under the bar
+  std::vector<LegendSwatch> swatches;  // flag mode
 };
 
 // `colours` as the cloud uses them (near/far already following auto-range); `persistence_laps` for

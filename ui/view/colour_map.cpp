@@ -35,9 +35,7 @@ constexpr std::array<Stop, 9> kViridis{{{0.194f, 0.398f, 0.553f},
                                         {0.774f, 0.877f, 0.179f},
                                         {0.992f, 0.906f, 0.145f}}};
 
-std::uint8_t to_byte(float v) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-}
+std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
 }  // namespace
 
@@ -52,9 +50,7 @@ std::string_view colour_mode_name(ColourMode mode) {
   return "?";
 }
 
-std::string_view palette_name(Palette palette) {
-  return palette == Palette::Turbo ? "turbo" : "viridis";
-}
+std::string_view palette_name(Palette palette) { return palette == Palette::Turbo ? "turbo" : "viridis"; }
 
 Rgba8 sample_palette(Palette palette, float t) {
   const auto& stops = palette == Palette::Turbo ? kTurbo : kViridis;

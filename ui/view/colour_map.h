@@ -26,8 +26,8 @@ Rgba8 flag_colour(PointFlag flag);
 struct ColourParams {
   ColourMode mode = ColourMode::Range;
   Palette palette = Palette::Turbo;
-  float near_mm = 0.0f;     // range mapped to the palette's start
-  float far_mm = 8000.0f;   // range mapped to the palette's end
+  float near_mm = 0.0f;    // range mapped to the palette's start
+  float far_mm = 8000.0f;  // range mapped to the palette's end
   bool fade_old_laps = true;
   friend bool operator==(const ColourParams&, const ColourParams&) = default;
 };

@@ -20,7 +20,7 @@ struct GridStyle {
   Rgba8 ring{140, 165, 205, 80};
   Rgba8 major_ring{150, 180, 225, 130};  // every fifth ring
   Rgba8 spoke{140, 165, 205, 40};
-  float spoke_start_px = 24.0f;          // keep the lidar marker clear
+  float spoke_start_px = 24.0f;  // keep the lidar marker clear
 };
 
 // Half the quad width in pixels: half the line plus a pixel of fade.

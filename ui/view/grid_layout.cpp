@@ -70,7 +70,8 @@ GridLayout layout_grid(const ViewTransform& view, float min_ring_px, float spoke
   grid.ring_step_mm = nice_ring_step_mm(view.px_per_mm(), min_ring_px);
   const float visible = view.visible_radius_mm();
   // Rings inside the visible radius only; at most a few hundred even when panned far out.
-  const float first = std::max(grid.ring_step_mm, std::floor((length(view.centre_world()) - visible) / grid.ring_step_mm) * grid.ring_step_mm);
+  const float first = std::max(
+      grid.ring_step_mm, std::floor((length(view.centre_world()) - visible) / grid.ring_step_mm) * grid.ring_step_mm);
   const Vec2 lo = view.viewport_origin() + Vec2{edge_margin_px, edge_margin_px};
   const Vec2 hi = view.viewport_origin() + view.viewport_size() - Vec2{edge_margin_px, edge_margin_px + status_band_px};
   for (float r = first; r <= visible && grid.ring_radii_mm.size() < 400; r += grid.ring_step_mm) {
@@ -109,7 +110,8 @@ float robust_max_range_mm(std::span<const LapPoint> points, float fraction) {
     ++total;
   }
   if (total == 0) return 0.0f;
-  const auto wanted = static_cast<std::size_t>(std::ceil(static_cast<double>(total) * std::clamp(fraction, 0.0f, 1.0f)));
+  const auto wanted =
+      static_cast<std::size_t>(std::ceil(static_cast<double>(total) * std::clamp(fraction, 0.0f, 1.0f)));
   std::size_t seen = 0;
   for (std::size_t bin = 0; bin < kBins; ++bin) {
     seen += histogram[bin];

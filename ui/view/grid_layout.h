@@ -19,14 +19,14 @@ float nice_ring_step_mm(float px_per_mm, float min_px);
 std::string format_distance(float mm);
 
 struct GridLabel {
-  Vec2 screen;       // anchor in pixels
+  Vec2 screen;  // anchor in pixels
   std::string text;
 };
 
 struct GridLayout {
   float ring_step_mm = 1000.0f;
-  std::vector<float> ring_radii_mm;   // every ring to draw, inside the visible radius
-  std::vector<GridLabel> ring_labels;   // only where the text fits inside the (inset) viewport
+  std::vector<float> ring_radii_mm;    // every ring to draw, inside the visible radius
+  std::vector<GridLabel> ring_labels;  // only where the text fits inside the (inset) viewport
   std::vector<float> spoke_angles_deg;
   std::vector<GridLabel> spoke_labels;  // where each spoke leaves the (inset) viewport
 };

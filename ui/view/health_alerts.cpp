@@ -13,10 +13,9 @@ Severity worst(Severity a, Severity b) { return static_cast<int>(a) >= static_ca
 std::vector<HealthAlert> health_alerts(const HealthAlertInput& in) {
   std::vector<HealthAlert> alerts;
   const bool bits_model = reports_health_bits(in.model) || in.answer_is_bits;
-  const HealthLevel answer_level =
-      !in.answer_status ? HealthLevel::Ok
-      : bits_model      ? health_bits_level(*in.answer_status)
-                        : health_status_level(*in.answer_status, in.answer_error_code);
+  const HealthLevel answer_level = !in.answer_status ? HealthLevel::Ok
+                                   : bits_model      ? health_bits_level(*in.answer_status)
+                                                     : health_status_level(*in.answer_status, in.answer_error_code);
   if (answer_level != HealthLevel::Ok) {
     if (bits_model) {
       alerts.push_back({Severity::Error, "health (A5 92): " + describe_health_bits(in.model, *in.answer_status)});
@@ -38,8 +37,9 @@ std::vector<HealthAlert> health_alerts(const HealthAlertInput& in) {
     alerts.push_back({Severity::Warning, std::to_string(in.crc8_failures) + (in.crc8_failures == 1 ? " lap" : " laps") +
                                              " failed the CRC8 check: packets were lost"});
   }
-  std::stable_sort(alerts.begin(), alerts.end(),
-                   [](const HealthAlert& a, const HealthAlert& b) { return static_cast<int>(a.severity) > static_cast<int>(b.severity); });
+  std::stable_sort(alerts.begin(), alerts.end(), [](const HealthAlert& a, const HealthAlert& b) {
+    return static_cast<int>(a.severity) > static_cast<int>(b.severity);
+  });
   return alerts;
 }
 

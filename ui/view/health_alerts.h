@@ -16,7 +16,7 @@ struct HealthAlertInput {
   // The last health answer: G1 status bits (A5 92), or the G6/TG status 0/1/2 with its error code.
   std::optional<std::uint8_t> answer_status;
   std::uint16_t answer_error_code = 0;
-  bool answer_is_bits = false;  // the answer came from A5 92 (bits) rather than A5 91 (status)
+  bool answer_is_bits = false;          // the answer came from A5 92 (bits) rather than A5 91 (status)
   std::optional<std::uint8_t> ct_bits;  // G1 CT health of the newest lap that carried it
   bool ct_trusted = true;               // that lap's CRC8 agreed
   std::uint64_t crc8_failures = 0;      // G1 laps whose LastCRC disagreed, this source

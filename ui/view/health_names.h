@@ -21,7 +21,7 @@ std::span<const HealthBitInfo> health_bits(Model model);
 bool reports_health_bits(Model model);
 
 struct HealthStatusInfo {
-  std::string_view name;     // "normal", "warning", "error", "unknown"
+  std::string_view name;  // "normal", "warning", "error", "unknown"
   std::string_view meaning;
   bool is_problem;
 };

@@ -10,10 +10,10 @@
 namespace ydscope::ui {
 
 struct HealthEvent {
-  double time_s;        // seconds since the app started
-  std::string source;   // "CT health", "A5 92", "A5 91", "link"
+  double time_s;       // seconds since the app started
+  std::string source;  // "CT health", "A5 92", "A5 91", "link"
   std::uint32_t value;
-  std::string text;     // what it means now
+  std::string text;  // what it means now
 };
 
 class HealthTimeline {

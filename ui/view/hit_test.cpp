@@ -4,8 +4,8 @@
 
 namespace ydscope::ui {
 
-std::optional<PointHit> nearest_point(std::span<const LapPoint> points, const ViewTransform& view,
-                                      Vec2 cursor_px, float max_distance_px) {
+std::optional<PointHit> nearest_point(std::span<const LapPoint> points, const ViewTransform& view, Vec2 cursor_px,
+                                      float max_distance_px) {
   // Compare in world units: one conversion of the cursor instead of one per point.
   const Vec2 cursor_world = view.screen_to_world(cursor_px);
   const float max_mm = max_distance_px / view.px_per_mm();

@@ -15,8 +15,8 @@ struct PointHit {
   float distance_px;  // from the cursor
 };
 
-std::optional<PointHit> nearest_point(std::span<const LapPoint> points, const ViewTransform& view,
-                                      Vec2 cursor_px, float max_distance_px);
+std::optional<PointHit> nearest_point(std::span<const LapPoint> points, const ViewTransform& view, Vec2 cursor_px,
+                                      float max_distance_px);
 
 // Click once for the first end, again for the second; a third click starts a new measurement.
 class Ruler {

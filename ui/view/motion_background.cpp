@@ -43,7 +43,8 @@ void MotionBackground::update_background(std::size_t bin) {
     background_[bin] = 0.0f;
     return;
   }
-  const auto k = static_cast<std::ptrdiff_t>(std::min(n - 1, static_cast<std::size_t>(kQuantile * static_cast<float>(n))));
+  const auto k =
+      static_cast<std::ptrdiff_t>(std::min(n - 1, static_cast<std::size_t>(kQuantile * static_cast<float>(n))));
   std::nth_element(ranges.begin(), ranges.begin() + k, ranges.begin() + static_cast<std::ptrdiff_t>(n));
   background_[bin] = ranges[static_cast<std::size_t>(k)];
 }

@@ -28,8 +28,10 @@ PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams&
       }
       const bool removed = interference.removes(p.flag);
       if (removed && newest) {
-        if (p.flag == PointFlag::Specular) ++stats.newest_specular_removed;
-        else ++stats.newest_ambient_removed;
+        if (p.flag == PointFlag::Specular)
+          ++stats.newest_specular_removed;
+        else
+          ++stats.newest_ambient_removed;
       }
       const Vec2 w = polar_to_world(p.angle_deg, p.range_mm);
       if (removed) {

@@ -31,7 +31,7 @@ struct PointCloudStats {
   std::size_t ghosts = 0;
   std::size_t newest_specular_removed = 0;  // in the newest lap
   std::size_t newest_ambient_removed = 0;
-  std::size_t newest_no_return = 0;         // range 0: no echo, never drawn
+  std::size_t newest_no_return = 0;  // range 0: no echo, never drawn
 };
 
 // Clears `out` (keeping its capacity) and fills it. Points with range 0 are not drawn. `motion`

@@ -23,7 +23,8 @@ Pose dragged_pose(const Pose& pose, const PoseDrag& drag) {
   }
   const double cx = pose.x_m * 1000.0, cy = pose.y_m * 1000.0;
   // A pointer on the lidar itself has no direction to turn by.
-  if (std::hypot(drag.from_world.x - cx, drag.from_world.y - cy) < 1.0 || std::hypot(drag.to_world.x - cx, drag.to_world.y - cy) < 1.0)
+  if (std::hypot(drag.from_world.x - cx, drag.from_world.y - cy) < 1.0 ||
+      std::hypot(drag.to_world.x - cx, drag.to_world.y - cy) < 1.0)
     return out;
   const double before = std::atan2(drag.from_world.y - cy, drag.from_world.x - cx);
   const double after = std::atan2(drag.to_world.y - cy, drag.to_world.x - cx);

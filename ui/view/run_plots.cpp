@@ -25,7 +25,8 @@ void RunPlots::sample_counters(const CounterSample& sample) {
 }
 
 void RunPlots::clear() {
-  for (MetricHistory* h : {&measured_hz_, &set_hz_, &points_, &latency_ms_, &bytes_per_s_, &checksum_per_s_, &crc8_per_s_})
+  for (MetricHistory* h :
+       {&measured_hz_, &set_hz_, &points_, &latency_ms_, &bytes_per_s_, &checksum_per_s_, &crc8_per_s_})
     h->clear();
   last_second_.reset();
 }

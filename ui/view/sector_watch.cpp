@@ -11,7 +11,8 @@ void SectorWatch::add_lap(const Lap& lap) {
   if (newest_->range_mm.count > 0) mean_mm_.add(static_cast<float>(newest_->range_mm.mean));
   histogram_.assign(newest_->histogram.counts.begin(), newest_->histogram.counts.end());
   valid_pct_.clear();
-  for (const double share : newest_->valid_share_by_angle) valid_pct_.push_back(share < 0 ? 0.0f : static_cast<float>(share * 100));
+  for (const double share : newest_->valid_share_by_angle)
+    valid_pct_.push_back(share < 0 ? 0.0f : static_cast<float>(share * 100));
 }
 
 void SectorWatch::clear() {

@@ -74,14 +74,21 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
     const std::string value = trim(line.substr(eq + 1));
     const auto b = to_bool(value);
     if (key == "colour_mode") {
-      if (value == "range") s.colours.mode = ColourMode::Range;
-      else if (value == "flag") s.colours.mode = ColourMode::Flag;
-      else if (value == "age") s.colours.mode = ColourMode::LapAge;
-      else if (value == "motion") s.colours.mode = ColourMode::Motion;
-      else if (value == "source") s.colours.mode = ColourMode::Source;
+      if (value == "range")
+        s.colours.mode = ColourMode::Range;
+      else if (value == "flag")
+        s.colours.mode = ColourMode::Flag;
+      else if (value == "age")
+        s.colours.mode = ColourMode::LapAge;
+      else if (value == "motion")
+        s.colours.mode = ColourMode::Motion;
+      else if (value == "source")
+        s.colours.mode = ColourMode::Source;
     } else if (key == "palette") {
-      if (value == "turbo") s.colours.palette = Palette::Turbo;
-      else if (value == "viridis") s.colours.palette = Palette::Viridis;
+      if (value == "turbo")
+        s.colours.palette = Palette::Turbo;
+      else if (value == "viridis")
+        s.colours.palette = Palette::Viridis;
     } else if (key == "near_mm") {
       take_number(key, value, 0.0, kMaxColourRangeMm, s.colours.near_mm, notes);
     } else if (key == "far_mm") {
@@ -112,12 +119,16 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.last_replay_file = value;
     } else if (key == "source") {
       std::string error;
-      if (auto look = parse_source_line(value, error)) s.sources.push_back(std::move(*look));
-      else if (notes) notes->push_back("source = " + value + " is left out: " + error);
+      if (auto look = parse_source_line(value, error))
+        s.sources.push_back(std::move(*look));
+      else if (notes)
+        notes->push_back("source = " + value + " is left out: " + error);
     } else if (key == "sector") {
       std::string error;
       if (s.sectors.size() >= kMaxWatchedSectors) {
-        if (notes) notes->push_back("sector = " + value + " is left out: at most " + std::to_string(kMaxWatchedSectors) + " sectors");
+        if (notes)
+          notes->push_back("sector = " + value + " is left out: at most " + std::to_string(kMaxWatchedSectors) +
+                           " sectors");
       } else if (parse_sector_spec(value, error)) {
         s.sectors.push_back(value);
       } else if (notes) {

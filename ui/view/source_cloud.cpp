@@ -44,7 +44,8 @@ float robust_extent_mm(std::span<const SourceLayer> layers, float share) {
   for (const SourceLayer& layer : layers) {
     if (!layer.history || layer.history->empty()) continue;
     const double from_origin = std::hypot(layer.pose.x_m, layer.pose.y_m) * 1000.0;
-    extent = std::max(extent, static_cast<float>(from_origin) + robust_max_range_mm(layer.history->newest().points, share));
+    extent =
+        std::max(extent, static_cast<float>(from_origin) + robust_max_range_mm(layer.history->newest().points, share));
   }
   return extent;
 }

@@ -24,7 +24,7 @@ struct ViewStateInput {
   bool replay = false;            // the source is (or was to be) a recording
   bool replay_paused = false;
   std::uint64_t replay_passes = 0;  // times the replay went round to its start (loop)
-  std::string_view model;         // the model the bytes are decoded as: "G6"
+  std::string_view model;           // the model the bytes are decoded as: "G6"
   // What is wrong with the source but does not stop it, one sentence each (a recording cut off
   // at its end): said whatever the state, since a live picture may rest on damaged data.
   std::span<const std::string> source_warnings;
@@ -36,15 +36,15 @@ struct ViewStateInput {
 inline constexpr double kStaleLapSeconds = 1.5;
 
 struct ViewState {
-  bool live = false;       // laps are arriving: full brightness, no overlay
-  bool dim = false;        // the cloud is old or absent: dim it and show the overlay
+  bool live = false;  // laps are arriving: full brightness, no overlay
+  bool dim = false;   // the cloud is old or absent: dim it and show the overlay
   Severity severity = Severity::Ok;
-  std::string headline;    // large: "No data"
-  std::string subtitle;    // "reconnecting to /dev/ttyUSB0, last lap 12 s ago"
-  std::string detail;      // the session's own sentence, smaller
-  std::string status;      // one word or two for the status line: "scanning", "no data"
+  std::string headline;              // large: "No data"
+  std::string subtitle;              // "reconnecting to /dev/ttyUSB0, last lap 12 s ago"
+  std::string detail;                // the session's own sentence, smaller
+  std::string status;                // one word or two for the status line: "scanning", "no data"
   std::vector<std::string> notices;  // the source's warnings, a line each beside the status line
-  bool give_up = false;    // going on cannot show anything (a replay without a lap in a whole pass)
+  bool give_up = false;              // going on cannot show anything (a replay without a lap in a whole pass)
 };
 
 ViewState describe_view_state(const ViewStateInput& in);

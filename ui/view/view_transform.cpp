@@ -50,8 +50,8 @@ void ViewTransform::fit_range(float range_mm) {
 
 float ViewTransform::visible_radius_mm() const {
   float best = 0.0f;
-  const Vec2 corners[4] = {origin_, {origin_.x + size_.x, origin_.y}, {origin_.x, origin_.y + size_.y},
-                           origin_ + size_};
+  const Vec2 corners[4] = {
+      origin_, {origin_.x + size_.x, origin_.y}, {origin_.x, origin_.y + size_.y}, origin_ + size_};
   for (const Vec2& corner : corners) best = std::max(best, length(screen_to_world(corner)));
   return best;
 }

@@ -6,7 +6,9 @@
 namespace ydscope::ui {
 namespace {
 
-int scaled(int px, float scale) { return static_cast<int>(std::lround(static_cast<float>(px) * std::max(scale, 0.5f))); }
+int scaled(int px, float scale) {
+  return static_cast<int>(std::lround(static_cast<float>(px) * std::max(scale, 0.5f)));
+}
 
 }  // namespace
 
