@@ -243,9 +243,17 @@ int run_record(std::span<const std::string> raw) {
   }
   if (tty) std::fputs("\r\033[K", stderr);
 
-  // Close the files first (flushed and complete), then stop the lidar.
-  if (out_option) run_and_wait([&](CommandCallback done) { session.stop_recording(std::move(done)); });
-  if (live && !live->stop()) throw std::runtime_error(live->error());
+  // Close the files first (flushed and complete), then stop the lidar. The .ydrec's close is asked
+  // for before the MCAP's taps close, without waiting between, so both end at the same byte.
+  std::promise<void> file_closed;
+  std::future<void> file_closing = file_closed.get_future();
+  if (out_option)
+    session.stop_recording([&file_closed](const CommandResult&) { file_closed.set_value(); });
+  else
+    file_closed.set_value();
+  const bool live_written = !live || live->stop();
+  file_closing.wait();
+  if (!live_written) throw std::runtime_error(live->error());
   session.disconnect();
   session.wait_until(
       [](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },

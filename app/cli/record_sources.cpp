@@ -210,13 +210,19 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   }
   if (tty) std::fputs("\r\033[K", stderr);
 
-  // Close the files first (every tap's last records in them), then stop the lidars.
-  if (recording) {
-    for (std::size_t id = 0; id < sources.size(); ++id)
-      wait_for([&](CommandCallback done) { sources[id].session->stop_tap(recording->tap(id), std::move(done)); });
-    if (!recording->finish() && failure.empty()) failure = recording->error();
-  }
+  // Close the files first (every tap's last records in them), then stop the lidars. Every tap's
+  // close is asked for before waiting on any, so the .ydrec and the MCAP end at the same byte of
+  // each lidar (each session closes its taps in the order asked, between two reads).
+  std::vector<std::future<CommandResult>> closed;
+  if (recording)
+    for (std::size_t id = 0; id < sources.size(); ++id) {
+      auto promise = std::make_shared<std::promise<CommandResult>>();
+      closed.push_back(promise->get_future());
+      sources[id].session->stop_tap(recording->tap(id), [promise](const CommandResult& r) { promise->set_value(r); });
+    }
   if (live && !live->stop() && failure.empty()) failure = live->error();
+  for (auto& tap_closed : closed) tap_closed.wait();
+  if (recording && !recording->finish() && failure.empty()) failure = recording->error();
   for (Source& source : sources) source.session->disconnect();
   for (Source& source : sources)
     source.session->wait_until(
