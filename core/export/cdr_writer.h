@@ -16,8 +16,9 @@ namespace ydscope {
 class CdrWriter {
  public:
   explicit CdrWriter(std::vector<std::uint8_t>& out) : out_(out) {
-    out_.clear();
-    out_.insert(out_.end(), {0x00, 0x01, 0x00, 0x00});
+    // The encapsulation header: CDR little-endian, no options. (assign, not insert into the empty
+    // vector: GCC 12 warns falsely about that insert at -O2.)
+    out_.assign({0x00, 0x01, 0x00, 0x00});
   }
 
   void u8(std::uint8_t v) { out_.push_back(v); }
