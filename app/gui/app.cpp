@@ -12,6 +12,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "app/gui/screenshot.h"
+#include "app/gui/source_origin.h"
 #include "ui/panels/panels.h"
 #include "ui/render/draw_signature.h"
 #include "ui/render/gl.h"
@@ -88,6 +89,16 @@ std::string App::start_source() {
   if (options_.share) model().requests.push_back(ui::SetShare{true});  // carried out after the first frame
   record_from_start_ = !options_.record.empty();
   if (!options_.sources.empty()) return start_several();
+  if (options_.source == SourceKind::Auto) {
+    // The last run had several lidars: the same ones again, as they were placed.
+    if (std::vector<SourceChoice> last = last_run_choices(settings_); !last.empty()) {
+      options_.sources = std::move(last);
+      const std::string error = start_several();
+      // Short: centred over the view, it must clear the legend in its top-left corner.
+      model().banner = "the last run's " + std::to_string(sources_.size()) + " lidars, as placed";
+      return error;
+    }
+  }
   ui::ConnectRequest request;
   start_clean();
   sel().has_source = true;
@@ -132,6 +143,7 @@ std::string App::start_source() {
 
 std::string App::start(const ui::ConnectRequest& request) {
   const std::string error = source().start(request);
+  sel().look.origin = origin_of(request);
   sel().has_source = error.empty();
   model().start_error = error;
   model().start_error_replay = request.kind == ui::ConnectRequest::Kind::Replay;

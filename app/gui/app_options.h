@@ -22,6 +22,7 @@ struct SourceChoice {
   std::optional<unsigned> baud;
   std::string name;          // empty: the model's name, or lidar0, lidar1, ...
   std::optional<Pose> pose;  // empty: a spread that keeps the clouds apart
+  std::string scene;         // Sim: its scene (empty: --scene's)
 };
 
 struct AppOptions {

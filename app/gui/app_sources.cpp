@@ -40,7 +40,9 @@ void App::recall_look(ui::SourceLook& look, bool pose_given) const {
 }
 
 void App::remember_looks() {
+  settings_.last_sources.clear();
   if (sources_.size() < 2) return;  // a lone lidar is drawn around itself: nothing to remember
+  for (const auto& slot : sources_) settings_.last_sources.push_back(slot->look.name);
   constexpr std::size_t kRemembered = 32;
   for (const auto& slot : sources_) {
     ui::SourceLook look = slot->look;
@@ -58,7 +60,7 @@ ui::ConnectRequest App::connect_request_for(const SourceChoice& choice) const {
   request.address = choice.port;
   request.model = choice.model;
   request.baud = choice.baud;
-  request.scene = options_.scene;
+  request.scene = choice.scene.empty() ? options_.scene : choice.scene;
   return request;
 }
 

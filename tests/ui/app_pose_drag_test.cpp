@@ -1,6 +1,7 @@
 // Posing a source by hand: with two lidars in one view, Alt+drag on the view moves the selected
 // source's cloud with the pointer and leaves the other where it was, N selects the other one for
-// the next drag, and the poses they end at are the ones settings.ini remembers.
+// the next drag, and the poses they end at are the ones settings.ini remembers: a next run that
+// names no source starts the same two lidars again, each where it was left.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -42,7 +43,7 @@ std::pair<double, int> centroid_x(const Image& image, ui::Rgba8 colour) {
 
 class AppPoseDrag : public HandsOnApp {};
 
-TEST_F(AppPoseDrag, AltDragMovesTheSelectedSourcesCloudOnlyAndNSelectsTheNext) {
+TEST_F(AppPoseDrag, AltDragMovesTheSelectedCloudOnlyNSelectsTheNextAndTheNextRunStartsThemThere) {
   X11Hands& hands = this->hands();
   const std::filesystem::path dir = fresh_temp_dir("ydscope-pose-drag");
   hands.move_pointer(900, 790);  // parked low in the view, away from where the drag starts
@@ -100,6 +101,19 @@ TEST_F(AppPoseDrag, AltDragMovesTheSelectedSourcesCloudOnlyAndNSelectsTheNext) {
   ASSERT_EQ(saved.sources.size(), 2u) << text.str();
   EXPECT_EQ(saved.sources[0].name, "G1");
   EXPECT_GT(saved.sources[0].pose.x_m, ui::spread_poses(2)[0].x_m + 1.0) << text.str();
+  EXPECT_EQ(saved.last_sources, (std::vector<std::string>{"G1", "G6"})) << text.str();
+
+  // The next run names no source: the same two lidars start again, each where it was left.
+  const pid_t again = spawn_in(dir, {YDSCOPE_APP_PATH});
+  const auto where_left = [&](const Reading& r) {
+    return both_drawn(r) && std::abs(r.first.first - last.first.first) < 30 &&
+           std::abs(r.second.first - last.second.first) < 30;
+  };
+  const Reading restarted = screenshot_until(again, dir, seen, read, where_left, std::chrono::seconds(30));
+  EXPECT_TRUE(both_drawn(restarted)) << "the last run's two lidars did not start again";
+  EXPECT_LT(std::abs(restarted.first.first - last.first.first), 30) << "G1 is not where it was left";
+  EXPECT_LT(std::abs(restarted.second.first - last.second.first), 30) << "G6 is not where it was left";
+  EXPECT_EQ(stop_process(again, SIGTERM), 0);
   if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
 }
 

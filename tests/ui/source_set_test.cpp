@@ -205,5 +205,30 @@ TEST(SourceSet, RememberedSourcesRoundTripAndABadLineIsSkippedWithANote) {
   EXPECT_NE(notes[1].find("orange"), std::string::npos);
 }
 
+TEST(SourceSet, HowEachSourceStartedAndTheLastRunsListRoundTrip) {
+  ViewSettings settings;
+  SourceLook sim;
+  sim.name = "G6";
+  sim.colour = {60, 210, 255, 255};
+  sim.origin = "sim G6 room";
+  SourceLook port = sim;
+  port.name = "back";
+  port.origin = "port detect /dev/serial/by-id/usb-Silicon Labs CP2102-if00";  // an address may hold spaces
+  SourceLook replay = sim;  // a replay has no origin: it is not started again unasked
+  replay.name = "recorded";
+  replay.origin.clear();
+  settings.sources = {sim, port, replay};
+  settings.last_sources = {"G6", "back"};
+  EXPECT_EQ(format_source_line(sim), "G6; 0,0,0; #3CD2FF; sim G6 room");
+  EXPECT_EQ(format_source_line(replay), "recorded; 0,0,0; #3CD2FF");
+  std::vector<std::string> notes;
+  const ViewSettings parsed = parse_settings(format_settings(settings), &notes);
+  EXPECT_EQ(parsed.sources, settings.sources);
+  EXPECT_EQ(parsed.last_sources, settings.last_sources);
+  EXPECT_TRUE(notes.empty());
+  // A run of one lidar leaves no list.
+  EXPECT_EQ(format_settings(ViewSettings{}).find("last_sources"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ydscope::ui

@@ -117,6 +117,16 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.split_view = *b;
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
+    } else if (key == "last_sources") {
+      s.last_sources.clear();
+      std::size_t at = 0;
+      while (at <= value.size()) {
+        const std::size_t comma = std::min(value.find(',', at), value.size());
+        std::string name = value.substr(at, comma - at);
+        std::erase(name, ' ');
+        if (!name.empty()) s.last_sources.push_back(std::move(name));
+        at = comma + 1;
+      }
     } else if (key == "source") {
       std::string error;
       if (auto look = parse_source_line(value, error))
@@ -166,6 +176,11 @@ std::string format_settings(const ViewSettings& s) {
       << "last_replay_file = " << s.last_replay_file << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
   for (const SourceLook& source : s.sources) out << "source = " << format_source_line(source) << "\n";
+  if (!s.last_sources.empty()) {
+    out << "last_sources = ";
+    for (std::size_t i = 0; i < s.last_sources.size(); ++i) out << (i ? ", " : "") << s.last_sources[i];
+    out << "\n";
+  }
   return out.str();
 }
 

@@ -35,6 +35,9 @@ struct ViewSettings {
   std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
   // Sources by name: a source of a remembered name gets its pose and colour back.
   std::vector<SourceLook> sources;
+  // The last run's lidars, by name, when it had several: a run with no source named starts them
+  // again (their `origin`). Empty after a run of one.
+  std::vector<std::string> last_sources;
 
   friend bool operator==(const ViewSettings&, const ViewSettings&) = default;
 };

@@ -90,7 +90,7 @@ std::string format_source_line(const SourceLook& look) {
   rounded.x_m = std::round(rounded.x_m * 1000.0) / 1000.0;
   rounded.y_m = std::round(rounded.y_m * 1000.0) / 1000.0;
   rounded.yaw_deg = std::round(rounded.yaw_deg * 100.0) / 100.0 + 0.0;  // + 0.0: no "-0"
-  return look.name + "; " + format_pose(rounded) + "; " + colour;
+  return look.name + "; " + format_pose(rounded) + "; " + colour + (look.origin.empty() ? "" : "; " + look.origin);
 }
 
 std::optional<SourceLook> parse_source_line(std::string_view text, std::string& error) {
@@ -114,7 +114,10 @@ std::optional<SourceLook> parse_source_line(std::string_view text, std::string& 
   const auto pose = parse_pose(trim(text.substr(first + 1, second - first - 1)), error);
   if (!pose) return std::nullopt;
   look.pose = *pose;
-  const std::string_view hex = trim(text.substr(second + 1));
+  const std::size_t third = text.find(';', second + 1);
+  const std::string_view hex =
+      trim(text.substr(second + 1, third == std::string_view::npos ? third : third - second - 1));
+  if (third != std::string_view::npos) look.origin = std::string(trim(text.substr(third + 1)));
   unsigned r = 0, g = 0, b = 0;
   char tail = 0;
   if (hex.size() != 7 || std::sscanf(std::string(hex).c_str(), "#%2x%2x%2x%c", &r, &g, &b, &tail) != 3) {

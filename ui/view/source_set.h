@@ -20,6 +20,9 @@ struct SourceLook {
   Pose pose;
   bool hidden = false;  // not drawn (its session still runs)
   bool paused = false;  // its picture holds its current laps
+  // How to start it again in the next run (app/gui/source_origin.h spells it): "sim G6 demo",
+  // "port detect /dev/ttyUSB0". Empty: it cannot be (a recording's replay).
+  std::string origin;
   friend bool operator==(const SourceLook&, const SourceLook&) = default;
 };
 
@@ -47,8 +50,9 @@ std::string source_legend_line(std::string_view name, const ViewState& state, st
 // The name for a new source of `base` ("G6", "lidar") that none of `taken` has: G6, G6_2, G6_3...
 std::string unique_source_name(std::string_view base, const std::vector<std::string>& taken);
 
-// settings.ini's line for a remembered source: "NAME; X,Y,YAW[,flip]; #RRGGBB" (the pose as --pose
-// spells it). parse_source_line gives nothing and one sentence in `error` for a line it cannot read.
+// settings.ini's line for a remembered source: "NAME; X,Y,YAW[,flip]; #RRGGBB[; ORIGIN]" (the pose
+// as --pose spells it). parse_source_line gives nothing and one sentence in `error` for a line it
+// cannot read.
 std::string format_source_line(const SourceLook& look);
 std::optional<SourceLook> parse_source_line(std::string_view text, std::string& error);
 
