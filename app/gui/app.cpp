@@ -65,7 +65,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
     toggle_fullscreen();
   }
   add_slot({});
-  std::snprintf(model().replay_text, sizeof model().replay_text, "%s", settings_.last_replay_file.c_str());
+  std::snprintf(edits().replay_text, sizeof edits().replay_text, "%s", settings_.last_replay_file.c_str());
   model().ports = discover_ports();
   restore_sectors();
   install_key_callback();
@@ -115,15 +115,15 @@ std::string App::start_source() {
       if (options_.model && *options_.model != "auto") request.model = options_.model;
       if (options_.baud) request.baud = *options_.baud;
       // The Port tab shows what runs, so Connect there reconnects to it.
-      std::snprintf(model().port_text, sizeof model().port_text, "%s", options_.port.c_str());
+      std::snprintf(edits().port_text, sizeof edits().port_text, "%s", options_.port.c_str());
       break;
     case SourceKind::Sim: {
       request.kind = ui::ConnectRequest::Kind::Sim;
       request.model = options_.model;
       request.scene = options_.scene;
       // The Virtual tab shows what runs.
-      model().sim_model_choice = model_choice(options_.model, model().sim_model_choice);
-      model().sim_scene_choice = options_.scene == "room" ? 0 : options_.scene == "booth" ? 2 : 1;
+      edits().sim_model_choice = model_choice(options_.model, edits().sim_model_choice);
+      edits().sim_scene_choice = options_.scene == "room" ? 0 : options_.scene == "booth" ? 2 : 1;
       break;
     }
     case SourceKind::Replay:
@@ -133,8 +133,8 @@ std::string App::start_source() {
       request.replay_speed = options_.replay_speed;
       request.replay_loop = !options_.replay_once;
       settings_.last_replay_file = options_.replay_file;
-      std::snprintf(model().replay_text, sizeof model().replay_text, "%s", options_.replay_file.c_str());
-      model().replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
+      std::snprintf(edits().replay_text, sizeof edits().replay_text, "%s", options_.replay_file.c_str());
+      edits().replay_model_choice = model_choice(options_.model, 0);  // the Replay tab shows the model it decodes as
       break;
   }
   model().show_source_tab = static_cast<int>(request.kind);
@@ -213,8 +213,8 @@ void App::start_clean() {
   m.feedback->clear();
   m.start_error.clear();
   m.source_warnings.clear();
-  if (m.distance_scale_override) {
-    m.distance_scale_override = false;
+  if (edits().distance_scale_override) {
+    edits().distance_scale_override = false;
     session().set_distance_scale(std::nullopt);  // posted before the connect, so it applies to it
   }
   sel().last_set_scan_hz.reset();
@@ -292,7 +292,7 @@ void App::frame() {
   const float fb_scale = win_w > 0 ? static_cast<float>(fb_w) / static_cast<float>(win_w) : 1.0f;
 
   fill_source_rows();
-  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), settings_) : 0.0f;
+  const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), edits(), settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
   if (const SourceSlot* pacing = fading_source())
     shown_phase_ = pacing->lap_phase.at(seconds_since_start(last_frame_));

@@ -85,6 +85,7 @@ class App {
   const SourceSlot& sel() const { return *sources_[selected_]; }
   ui::UiModel& model() { return sel().model; }
   const ui::UiModel& model() const { return sel().model; }
+  ui::PanelEdits& edits() { return sel().edits; }
   Session& session() { return sel().session; }
   LidarSource& source() { return sel().source; }
   ui::LapHistory& history() { return sel().history; }

@@ -39,7 +39,7 @@ void App::update_model(SourceSlot& slot) {
   slot.model.sim_active = slot.source.sim_active();
   const SessionSnapshot& s = slot.model.snap;
   // The target field starts from the device's set value whenever that changes.
-  if (s.scan_hz && s.scan_hz != slot.last_set_scan_hz) slot.model.scan_target_hz = static_cast<float>(*s.scan_hz);
+  if (s.scan_hz && s.scan_hz != slot.last_set_scan_hz) slot.edits.scan_target_hz = static_cast<float>(*s.scan_hz);
   slot.last_set_scan_hz = s.scan_hz;
   slot.model.timeline.observe("link", static_cast<std::uint32_t>(s.state), slot.model.now_s,
                               std::string(link_state_name(s.state)));

@@ -97,7 +97,7 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         } else if constexpr (std::is_same_v<R, ui::WatchSector>) {
           m.sector_error = watch_sector(r.spec);
           if (!m.sector_error.empty()) return;
-          m.sector_text[0] = '\0';
+          edits().sector_text[0] = '\0';
           sync_sectors();
         } else if constexpr (std::is_same_v<R, ui::UnwatchSector>) {
           unwatch_sector(r.index);

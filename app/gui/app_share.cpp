@@ -95,7 +95,7 @@ void App::follow_share_and_recording() {
     const auto format = options_.record == "mcap"   ? ui::RecordFormat::Mcap
                         : options_.record == "both" ? ui::RecordFormat::Both
                                                     : ui::RecordFormat::Ydrec;
-    m.record_format = static_cast<int>(format);
+    edits().record_format = static_cast<int>(format);
     const ui::RecordingPaths paths = ui::recording_paths(format, "");
     m.record_started_s = m.now_s;
     m.show_source_tab = static_cast<int>(ui::SourceTab::Record);

@@ -12,6 +12,7 @@
 
 #include "app/gui/lidar_source.h"
 #include "core/link/session.h"
+#include "ui/panels/panel_edits.h"
 #include "ui/panels/ui_model.h"
 #include "ui/view/lap_history.h"
 #include "ui/view/lap_phase.h"
@@ -38,6 +39,7 @@ struct SourceSlot {
 
   ui::SourceLook look;
   ui::UiModel model;
+  ui::PanelEdits edits;  // what its panels hold while the user types or picks
   Session session;
   std::unique_ptr<LapSubscription> measured_laps;  // every lap, for rates, plots, sectors, health
   Lap measured_lap;

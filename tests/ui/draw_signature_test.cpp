@@ -14,10 +14,11 @@ namespace {
 // The signature of the sidebar's frame for `m` (after a frame that settles the layout).
 std::uint64_t sidebar_signature(UiModel& m, ViewSettings& settings) {
   std::uint64_t signature = 0;
+  PanelEdits edits;
   for (int frame = 0; frame < 2; ++frame) {
     ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
     ImGui::NewFrame();
-    draw_sidebar(m, settings);
+    draw_sidebar(m, edits, settings);
     ImGui::Render();
     signature = draw_signature(*ImGui::GetDrawData());
   }

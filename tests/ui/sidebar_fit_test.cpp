@@ -37,12 +37,13 @@ UiModel busy_model() {
 // The sidebar's scroll range after a few frames on `tab` (a frame settles the layout).
 float scroll_needed(UiModel& m, SidebarTab tab) {
   ViewSettings settings;
+  PanelEdits edits;
   float scroll = 0.0f;
   for (int frame = 0; frame < 4; ++frame) {
     ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
     ImGui::NewFrame();
     if (frame == 0) m.show_sidebar_tab = static_cast<int>(tab);
-    draw_sidebar(m, settings);
+    draw_sidebar(m, edits, settings);
     ImGui::Begin("ydscope");  // the sidebar's window again, to read what it measured
     scroll = ImGui::GetScrollMaxY();
     ImGui::End();
@@ -77,11 +78,12 @@ TEST(SidebarFit, TheSidebarLeavesTheViewMostOfASmallWindow) {
   HeadlessImGui imgui(1024.0f, 568.0f);
   UiModel m = busy_model();
   ViewSettings settings;
+  PanelEdits edits;
   float width = 0.0f;
   for (int frame = 0; frame < 2; ++frame) {
     ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
     ImGui::NewFrame();
-    width = draw_sidebar(m, settings);
+    width = draw_sidebar(m, edits, settings);
     ImGui::Render();
   }
   EXPECT_LE(width, 0.4f * 1024.0f + 1.0f);

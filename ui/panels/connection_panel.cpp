@@ -27,30 +27,30 @@ std::string model_label(int choice, const char* none = "detect") {
   return std::string(profiles[static_cast<std::size_t>(choice - 1)].name);
 }
 
-void port_section(UiModel& m) {
+void port_section(UiModel& m, PanelEdits& e) {
   ImGui::TextDisabled("Serial port or tcp://host:port");
-  if (ImGui::BeginCombo("##ports", m.port_text[0] ? m.port_text : "choose a port")) {
+  if (ImGui::BeginCombo("##ports", e.port_text[0] ? e.port_text : "choose a port")) {
     if (m.ports.empty()) ImGui::TextDisabled("no serial ports found");
     for (const PortEntry& p : m.ports) {
-      if (ImGui::Selectable(p.label.c_str(), p.path == m.port_text)) {
-        std::snprintf(m.port_text, sizeof m.port_text, "%s", p.path.c_str());
+      if (ImGui::Selectable(p.label.c_str(), p.path == e.port_text)) {
+        std::snprintf(e.port_text, sizeof e.port_text, "%s", p.path.c_str());
       }
     }
     ImGui::EndCombo();
   }
   ImGui::SameLine();
   if (ImGui::SmallButton("rescan")) m.requests.push_back(RefreshPorts{});
-  ImGui::InputText("address", m.port_text, sizeof m.port_text);
-  model_combo("model", m.port_model_choice, "detect");
-  ImGui::Combo("baud", &m.port_baud_choice, kBauds, IM_ARRAYSIZE(kBauds));
-  const bool can_connect = m.port_text[0] != '\0';
+  ImGui::InputText("address", e.port_text, sizeof e.port_text);
+  model_combo("model", e.port_model_choice, "detect");
+  ImGui::Combo("baud", &e.port_baud_choice, kBauds, IM_ARRAYSIZE(kBauds));
+  const bool can_connect = e.port_text[0] != '\0';
   if (!can_connect) ImGui::BeginDisabled();
   if (ImGui::Button("Connect")) {
     ConnectRequest r;
     r.kind = ConnectRequest::Kind::Port;
-    r.address = m.port_text;
-    if (m.port_model_choice > 0) r.model = model_label(m.port_model_choice);
-    if (m.port_baud_choice > 0) r.baud = kBaudValues[m.port_baud_choice];
+    r.address = e.port_text;
+    if (e.port_model_choice > 0) r.model = model_label(e.port_model_choice);
+    if (e.port_baud_choice > 0) r.baud = kBaudValues[e.port_baud_choice];
     m.requests.push_back(r);
   }
   if (!can_connect) ImGui::EndDisabled();
@@ -60,53 +60,53 @@ void port_section(UiModel& m) {
 
 // For testing other host software against the virtual lidar (README, "The virtual lidar as a
 // vendor-SDK test double"); applies when the virtual lidar starts.
-void host_section(UiModel& m) {
+void host_section(PanelEdits& e) {
   if (!ImGui::TreeNode("host")) return;
-  ImGui::Combo("answers", &m.sim_host_choice, kHosts, IM_ARRAYSIZE(kHosts));
+  ImGui::Combo("answers", &e.sim_host_choice, kHosts, IM_ARRAYSIZE(kHosts));
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "YDLidar-SDK host: also answers what YDLIDAR's SDK and ROS 2 driver ask beyond\n"
         "the manual (A5 92 on G6/TG, A5 93, ...), so they start without timeouts.");
-  const bool g1 = model_label(m.sim_model_choice) == "G1";  // its CT carries major 0..3, minor 0..31
-  ImGui::InputInt2("firmware", m.sim_firmware);
-  m.sim_firmware[0] = std::clamp(m.sim_firmware[0], 0, g1 ? 3 : 255);
-  m.sim_firmware[1] = std::clamp(m.sim_firmware[1], 0, g1 ? 31 : 255);
+  const bool g1 = model_label(e.sim_model_choice) == "G1";  // its CT carries major 0..3, minor 0..31
+  ImGui::InputInt2("firmware", e.sim_firmware);
+  e.sim_firmware[0] = std::clamp(e.sim_firmware[0], 0, g1 ? 3 : 255);
+  e.sim_firmware[1] = std::clamp(e.sim_firmware[1], 0, g1 ? 31 : 255);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "major.minor in the manual's byte order; YDLidar-SDK reads it the other way round\n"
         "and picks TG's distance scale from it (1.1: S/2 mm as the manual, 1.2 and above: S mm)");
-  ImGui::Combo("delivery", &m.sim_delivery_choice, kDeliveries, IM_ARRAYSIZE(kDeliveries));
-  if (m.sim_delivery_choice == 1) {
-    ImGui::InputInt("burst bytes", &m.sim_burst_bytes);
-    ImGui::InputInt("latency timer us", &m.sim_burst_interval_us, 100, 1000);
-  } else if (m.sim_delivery_choice == 2) {
-    ImGui::InputInt("largest write", &m.sim_random_max);
+  ImGui::Combo("delivery", &e.sim_delivery_choice, kDeliveries, IM_ARRAYSIZE(kDeliveries));
+  if (e.sim_delivery_choice == 1) {
+    ImGui::InputInt("burst bytes", &e.sim_burst_bytes);
+    ImGui::InputInt("latency timer us", &e.sim_burst_interval_us, 100, 1000);
+  } else if (e.sim_delivery_choice == 2) {
+    ImGui::InputInt("largest write", &e.sim_random_max);
   }
-  m.sim_burst_bytes = std::clamp(m.sim_burst_bytes, 1, 4096);
-  m.sim_burst_interval_us = std::clamp(m.sim_burst_interval_us, 1, 1'000'000);
-  m.sim_random_max = std::clamp(m.sim_random_max, 1, 4096);
+  e.sim_burst_bytes = std::clamp(e.sim_burst_bytes, 1, 4096);
+  e.sim_burst_interval_us = std::clamp(e.sim_burst_interval_us, 1, 1'000'000);
+  e.sim_random_max = std::clamp(e.sim_random_max, 1, 4096);
   ImGui::TextDisabled("applies when the virtual lidar starts");
   ImGui::TreePop();
 }
 
-void sim_section(UiModel& m) {
-  model_combo("sim model", m.sim_model_choice, nullptr);
-  ImGui::Combo("scene", &m.sim_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
+void sim_section(UiModel& m, PanelEdits& e) {
+  model_combo("sim model", e.sim_model_choice, nullptr);
+  ImGui::Combo("scene", &e.sim_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
   if (ImGui::TreeNode("faults")) {
-    float corrupt = static_cast<float>(m.sim_faults.corrupt_byte_rate * 1e3);
-    float drop = static_cast<float>(m.sim_faults.drop_byte_rate * 1e3);
-    float lost = static_cast<float>(m.sim_faults.lost_packet_rate * 1e2);
+    float corrupt = static_cast<float>(e.sim_faults.corrupt_byte_rate * 1e3);
+    float drop = static_cast<float>(e.sim_faults.drop_byte_rate * 1e3);
+    float lost = static_cast<float>(e.sim_faults.lost_packet_rate * 1e2);
     bool changed = false;
     changed |= ImGui::SliderFloat("corrupt /1000 B", &corrupt, 0.0f, 10.0f, "%.2f");
     changed |= ImGui::SliderFloat("drop /1000 B", &drop, 0.0f, 10.0f, "%.2f");
     changed |= ImGui::SliderFloat("lost packets %", &lost, 0.0f, 20.0f, "%.1f");
-    int bits = m.sim_faults.health_bits;
+    int bits = e.sim_faults.health_bits;
     changed |= ImGui::InputInt("health bits", &bits, 1, 4, ImGuiInputTextFlags_CharsHexadecimal);
-    m.sim_faults.corrupt_byte_rate = corrupt * 1e-3;
-    m.sim_faults.drop_byte_rate = drop * 1e-3;
-    m.sim_faults.lost_packet_rate = lost * 1e-2;
-    m.sim_faults.health_bits = static_cast<std::uint8_t>(bits & 0xFF);
-    if (changed && m.sim_active) m.requests.push_back(SetSimFaults{m.sim_faults});
+    e.sim_faults.corrupt_byte_rate = corrupt * 1e-3;
+    e.sim_faults.drop_byte_rate = drop * 1e-3;
+    e.sim_faults.lost_packet_rate = lost * 1e-2;
+    e.sim_faults.health_bits = static_cast<std::uint8_t>(bits & 0xFF);
+    if (changed && m.sim_active) m.requests.push_back(SetSimFaults{e.sim_faults});
     if (m.sim_active) {
       if (ImGui::SmallButton("unplug")) m.requests.push_back(UnplugSim{});
       ImGui::SameLine();
@@ -114,44 +114,44 @@ void sim_section(UiModel& m) {
     }
     ImGui::TreePop();
   }
-  host_section(m);
+  host_section(e);
   if (ImGui::Button("Start virtual lidar")) {
     ConnectRequest r;
     r.kind = ConnectRequest::Kind::Sim;
-    r.model = model_label(m.sim_model_choice);
-    r.scene = kScenes[m.sim_scene_choice];
-    r.faults = m.sim_faults;
-    r.host_compat = m.sim_host_choice == 1 ? HostCompat::YdlidarSdk : HostCompat::Manual;
-    r.firmware_major = static_cast<std::uint8_t>(m.sim_firmware[0]);
-    r.firmware_minor = static_cast<std::uint8_t>(m.sim_firmware[1]);
-    r.delivery.kind = static_cast<DeliveryKind>(m.sim_delivery_choice);
-    r.delivery.burst_bytes = static_cast<std::uint32_t>(m.sim_burst_bytes);
-    r.delivery.interval_ns = static_cast<std::int64_t>(m.sim_burst_interval_us) * 1000;
-    r.delivery.max_piece = static_cast<std::uint32_t>(m.sim_random_max);
+    r.model = model_label(e.sim_model_choice);
+    r.scene = kScenes[e.sim_scene_choice];
+    r.faults = e.sim_faults;
+    r.host_compat = e.sim_host_choice == 1 ? HostCompat::YdlidarSdk : HostCompat::Manual;
+    r.firmware_major = static_cast<std::uint8_t>(e.sim_firmware[0]);
+    r.firmware_minor = static_cast<std::uint8_t>(e.sim_firmware[1]);
+    r.delivery.kind = static_cast<DeliveryKind>(e.sim_delivery_choice);
+    r.delivery.burst_bytes = static_cast<std::uint32_t>(e.sim_burst_bytes);
+    r.delivery.interval_ns = static_cast<std::int64_t>(e.sim_burst_interval_us) * 1000;
+    r.delivery.max_piece = static_cast<std::uint32_t>(e.sim_random_max);
     m.requests.push_back(r);
   }
 }
 
 // The recording in the field, decoded as chosen, at the speed and loop the tab shows.
-ConnectRequest replay_request(const UiModel& m) {
+ConnectRequest replay_request(const UiModel& m, const PanelEdits& e) {
   ConnectRequest r;
   r.kind = ConnectRequest::Kind::Replay;
-  r.address = m.replay_text;
-  if (m.replay_model_choice > 0) r.model = model_label(m.replay_model_choice);
+  r.address = e.replay_text;
+  if (e.replay_model_choice > 0) r.model = model_label(e.replay_model_choice);
   r.replay_speed = m.replay.speed;
   r.replay_loop = m.replay.loop;
   return r;
 }
 
-void replay_section(UiModel& m) {
-  ImGui::InputText("recording", m.replay_text, sizeof m.replay_text);
+void replay_section(UiModel& m, PanelEdits& e) {
+  ImGui::InputText("recording", e.replay_text, sizeof e.replay_text);
   // For a recording that names no model (or one this ydscope does not know), as --model does.
-  model_combo("decode as", m.replay_model_choice, "as recorded");
-  if (ImGui::Button("Open recording") && m.replay_text[0]) m.requests.push_back(replay_request(m));
+  model_combo("decode as", e.replay_model_choice, "as recorded");
+  if (ImGui::Button("Open recording") && e.replay_text[0]) m.requests.push_back(replay_request(m, e));
   if (m.replay.available && m.replay.ended) {
     // The link is closed at its end: playing again opens the recording anew, as it was set.
     ImGui::SameLine();
-    if (ImGui::Button("Play again") && m.replay_text[0]) m.requests.push_back(replay_request(m));
+    if (ImGui::Button("Play again") && e.replay_text[0]) m.requests.push_back(replay_request(m, e));
     ImGui::TextDisabled("played to the end at %.2fx (loop off)", static_cast<double>(m.replay.speed));
   } else if (m.replay.available) {
     ImGui::SameLine();
@@ -182,7 +182,7 @@ void recording_file_line(const std::string& path) {
   wrapped_text(path.c_str());
 }
 
-void record_section(UiModel& m, const SessionSnapshot& s) {
+void record_section(UiModel& m, PanelEdits& e, const SessionSnapshot& s) {
   if (m.recording()) {
     ImGui::TextColored({1.0f, 0.35f, 0.35f, 1.0f}, "\xE2\x80\xA2 REC");
     ImGui::SameLine();
@@ -195,14 +195,14 @@ void record_section(UiModel& m, const SessionSnapshot& s) {
     constexpr const char* kFormats[] = {".ydrec (every byte)", ".mcap (ROS 2 topics)", ".ydrec + .mcap"};
     constexpr const char* kHints[] = {"ydscope-<date>-<time>.ydrec", "ydscope-<date>-<time>.mcap",
                                       "ydscope-<date>-<time>.ydrec"};
-    m.record_format = std::clamp(m.record_format, 0, 2);
-    ImGui::Combo("format", &m.record_format, kFormats, IM_ARRAYSIZE(kFormats));
+    e.record_format = std::clamp(e.record_format, 0, 2);
+    ImGui::Combo("format", &e.record_format, kFormats, IM_ARRAYSIZE(kFormats));
     // Empty means a new timestamped name at each start, so no recording overwrites another.
-    ImGui::InputTextWithHint("file", kHints[m.record_format], m.record_text, sizeof m.record_text);
+    ImGui::InputTextWithHint("file", kHints[e.record_format], e.record_text, sizeof e.record_text);
     const bool connected = link_state_connected(s.state);
     if (!connected) ImGui::BeginDisabled();
     if (ImGui::Button("Start recording")) {
-      const RecordingPaths paths = recording_paths(static_cast<RecordFormat>(m.record_format), m.record_text);
+      const RecordingPaths paths = recording_paths(static_cast<RecordFormat>(e.record_format), e.record_text);
       std::error_code ec;
       std::string taken;
       for (const std::string* path : {&paths.ydrec, &paths.mcap})
@@ -311,7 +311,7 @@ void help_marker(const char* text) {
   }
 }
 
-void draw_connection_panel(UiModel& m) {
+void draw_connection_panel(UiModel& m, PanelEdits& e) {
   if (!ImGui::CollapsingHeader("Connection", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const SessionSnapshot& s = m.snap;
   ImGui::TextDisabled("source");
@@ -330,19 +330,19 @@ void draw_connection_panel(UiModel& m) {
     };
     const int wanted = m.show_source_tab;
     if (ImGui::BeginTabItem("Port", nullptr, tab_flags(0))) {
-      port_section(m);
+      port_section(m, e);
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Virtual", nullptr, tab_flags(1))) {
-      sim_section(m);
+      sim_section(m, e);
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Replay", nullptr, tab_flags(2))) {
-      replay_section(m);
+      replay_section(m, e);
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Record", nullptr, tab_flags(static_cast<int>(SourceTab::Record)))) {
-      record_section(m, s);
+      record_section(m, e, s);
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Share", nullptr, tab_flags(static_cast<int>(SourceTab::Share)))) {

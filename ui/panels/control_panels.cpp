@@ -31,7 +31,7 @@ void command_feedback_line(UiModel& m, CommandControl control) {
   ImGui::PopStyleColor();
 }
 
-void draw_frequency_panels(UiModel& m) {
+void draw_frequency_panels(UiModel& m, PanelEdits& e) {
   const SessionSnapshot& s = m.snap;
   const ModelProfile* profile = s.device ? s.device->profile : nullptr;
   // A replay has no device behind it to command.
@@ -59,23 +59,23 @@ void draw_frequency_panels(UiModel& m) {
       ImGui::EndTable();
     }
     if (!can_command) ImGui::BeginDisabled();
-    const double base = s.scan_hz.value_or(static_cast<double>(m.scan_target_hz));
+    const double base = s.scan_hz.value_or(static_cast<double>(e.scan_target_hz));
     for (const double step : {-1.0, -0.1, 0.1, 1.0}) {
       char label[16];
       std::snprintf(label, sizeof label, "%+.1f", step);
       if (ImGui::Button(label)) {
         double target = std::round((base + step) * 10.0) / 10.0;
         if (profile) target = std::clamp(target, profile->min_scan_hz, profile->max_scan_hz);
-        m.scan_target_hz = static_cast<float>(target);
+        e.scan_target_hz = static_cast<float>(target);
         m.requests.push_back(SetScanHz{target});
       }
       ImGui::SameLine();
     }
     ImGui::NewLine();
     ImGui::SetNextItemWidth(110.0f);
-    ImGui::InputFloat("Hz##target", &m.scan_target_hz, 0.0f, 0.0f, "%.1f");
+    ImGui::InputFloat("Hz##target", &e.scan_target_hz, 0.0f, 0.0f, "%.1f");
     ImGui::SameLine();
-    if (ImGui::Button("Set target")) m.requests.push_back(SetScanHz{static_cast<double>(m.scan_target_hz)});
+    if (ImGui::Button("Set target")) m.requests.push_back(SetScanHz{static_cast<double>(e.scan_target_hz)});
     if (!can_command) ImGui::EndDisabled();
     if (profile) {
       ImGui::SameLine();

@@ -69,7 +69,7 @@ void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std
 
 }  // namespace
 
-void draw_device_panel(UiModel& m) {
+void draw_device_panel(UiModel& m, PanelEdits& e) {
   if (!ImGui::CollapsingHeader("Device", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const SessionSnapshot& s = m.snap;
   if (!s.device) {
@@ -99,10 +99,10 @@ void draw_device_panel(UiModel& m) {
     ImGui::EndTable();
   }
   // Some firmware uses another scale than its manual; let the user correct it live.
-  if (ImGui::Checkbox("override scale", &m.distance_scale_override)) {
-    if (m.distance_scale_override) {
-      m.distance_scale_value = static_cast<float>(s.distance_scale > 0 ? s.distance_scale : 1.0);
-      m.requests.push_back(SetDistanceScale{static_cast<double>(m.distance_scale_value)});
+  if (ImGui::Checkbox("override scale", &e.distance_scale_override)) {
+    if (e.distance_scale_override) {
+      e.distance_scale_value = static_cast<float>(s.distance_scale > 0 ? s.distance_scale : 1.0);
+      m.requests.push_back(SetDistanceScale{static_cast<double>(e.distance_scale_value)});
     } else {
       m.requests.push_back(SetDistanceScale{});
     }
@@ -110,13 +110,13 @@ void draw_device_panel(UiModel& m) {
   help_marker(
       "The manuals give G6 S/4 and TG S/2 mm per count; some vendor firmware uses S/2 (G6) or S (TG above 1.2). "
       "If walls look twice too near or far, change the scale here.");
-  if (m.distance_scale_override) {
+  if (e.distance_scale_override) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110.0f);
-    if (ImGui::InputFloat("##scale", &m.distance_scale_value, 0.0f, 0.0f, "%.3f",
+    if (ImGui::InputFloat("##scale", &e.distance_scale_value, 0.0f, 0.0f, "%.3f",
                           ImGuiInputTextFlags_EnterReturnsTrue) &&
-        m.distance_scale_value > 0.0f) {
-      m.requests.push_back(SetDistanceScale{static_cast<double>(m.distance_scale_value)});
+        e.distance_scale_value > 0.0f) {
+      m.requests.push_back(SetDistanceScale{static_cast<double>(e.distance_scale_value)});
     }
   }
 }

@@ -2,31 +2,32 @@
 // The ImGui panels of the sidebar. Each draws one collapsing section; draw_sidebar lays them out.
 #include <imgui.h>
 
+#include "ui/panels/panel_edits.h"
 #include "ui/panels/ui_model.h"
 
 namespace ydscope::ui {
 
-void draw_connection_panel(UiModel& model);
-void draw_device_panel(UiModel& model);
+void draw_connection_panel(UiModel& model, PanelEdits& edits);
+void draw_device_panel(UiModel& model, PanelEdits& edits);
 void draw_health_panel(UiModel& model);
-void draw_frequency_panels(UiModel& model);
+void draw_frequency_panels(UiModel& model, PanelEdits& edits);
 void draw_view_panel(UiModel& model, ViewSettings& settings);
 void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
 void draw_plots_panel(const UiModel& model);
-void draw_sectors_panel(UiModel& model);
+void draw_sectors_panel(UiModel& model, PanelEdits& edits);
 // Several sources: the selector over the tabs (which source the panels show and command), and the
 // Sources tab (the list, hide/pause, pose, add and remove).
 void draw_source_selector(UiModel& model);
-void draw_sources_panel(UiModel& model);
+void draw_sources_panel(UiModel& model, PanelEdits& edits);
 // Several sources: a line per source over the view, its colour and its state in words.
 void draw_source_legend(const UiModel& model, float view_left, float view_width);
 // One source's legend line at `top_left` (a tile of the split view); `selected` rings its swatch.
 void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected);
 
-// The whole left sidebar (full window height). Returns its width in pixels so the polar view can
-// use the rest of the window.
-float draw_sidebar(UiModel& model, ViewSettings& settings);
+// The whole left sidebar (full window height): it shows `model` and keeps what the user types or
+// picks in `edits`. Returns its width in pixels so the polar view can use the rest of the window.
+float draw_sidebar(UiModel& model, PanelEdits& edits, ViewSettings& settings);
 
 // Status line over the polar view: model, state, measured rate, health alert, badges, banner.
 void draw_view_header(const UiModel& model, float view_left, float view_width);

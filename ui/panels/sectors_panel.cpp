@@ -50,19 +50,19 @@ void sector_details(const SectorWatch& w) {
 
 }  // namespace
 
-void draw_sectors_panel(UiModel& m) {
+void draw_sectors_panel(UiModel& m, PanelEdits& e) {
   if (!m.sectors.empty()) ImGui::SetNextItemOpen(true, ImGuiCond_Once);  // watched from the start: show them
   if (!ImGui::CollapsingHeader("Sectors")) return;
   ImGui::TextDisabled("Shift+drag on the view sweeps a sector, or type one:");
   ImGui::SetNextItemWidth(150.0f);
-  const bool entered = ImGui::InputTextWithHint("##new_sector", "260:280 [1500:2500]", m.sector_text,
-                                                sizeof m.sector_text, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool entered = ImGui::InputTextWithHint("##new_sector", "260:280 [1500:2500]", e.sector_text,
+                                                sizeof e.sector_text, ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   help_marker(
       "FROM:TO in degrees, clockwise from straight ahead (may cross 0, e.g. 350:10); optionally a range "
       "band MIN:MAX in mm so only a target's returns count, not the wall behind it.");
   ImGui::SameLine();
-  if ((ImGui::Button("Add") || entered) && m.sector_text[0]) m.requests.push_back(WatchSector{m.sector_text});
+  if ((ImGui::Button("Add") || entered) && e.sector_text[0]) m.requests.push_back(WatchSector{e.sector_text});
   if (!m.sector_error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
     wrapped_text(m.sector_error.c_str());

@@ -34,29 +34,29 @@ void pose_fields(UiModel& m, std::size_t index, const SourceLook& look) {
   m.requests.push_back(SetSourceLook{index, edited});
 }
 
-void add_source_controls(UiModel& m) {
+void add_source_controls(UiModel& m, PanelEdits& e) {
   static constexpr const char* kScenes[] = {"room", "demo", "booth"};
   section("add a source");
-  ImGui::RadioButton("virtual lidar", &m.add_source_kind, 0);
+  ImGui::RadioButton("virtual lidar", &e.add_source_kind, 0);
   ImGui::SameLine();
-  ImGui::RadioButton("port", &m.add_source_kind, 1);
+  ImGui::RadioButton("port", &e.add_source_kind, 1);
   ImGui::SameLine();
-  ImGui::RadioButton("recording", &m.add_source_kind, 2);
+  ImGui::RadioButton("recording", &e.add_source_kind, 2);
   AddSource add;
-  if (m.add_source_kind == 0) {
-    model_combo("model##add", m.add_source_model_choice, nullptr);
-    ImGui::Combo("scene##add", &m.add_source_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
+  if (e.add_source_kind == 0) {
+    model_combo("model##add", e.add_source_model_choice, nullptr);
+    ImGui::Combo("scene##add", &e.add_source_scene_choice, kScenes, IM_ARRAYSIZE(kScenes));
     add.request.kind = ConnectRequest::Kind::Sim;
-    add.request.model = std::string(all_profiles()[static_cast<std::size_t>(m.add_source_model_choice - 1)].name);
-    add.request.scene = kScenes[m.add_source_scene_choice];
+    add.request.model = std::string(all_profiles()[static_cast<std::size_t>(e.add_source_model_choice - 1)].name);
+    add.request.scene = kScenes[e.add_source_scene_choice];
   } else {
     // A port path or tcp://host:port, or a .ydrec to play round and round.
-    ImGui::InputText(m.add_source_kind == 1 ? "address##add" : "file##add", m.add_source_address,
-                     sizeof m.add_source_address);
-    add.request.kind = m.add_source_kind == 1 ? ConnectRequest::Kind::Port : ConnectRequest::Kind::Replay;
-    add.request.address = m.add_source_address;
+    ImGui::InputText(e.add_source_kind == 1 ? "address##add" : "file##add", e.add_source_address,
+                     sizeof e.add_source_address);
+    add.request.kind = e.add_source_kind == 1 ? ConnectRequest::Kind::Port : ConnectRequest::Kind::Replay;
+    add.request.address = e.add_source_address;
   }
-  const bool ready = m.add_source_kind == 0 || m.add_source_address[0] != '\0';
+  const bool ready = e.add_source_kind == 0 || e.add_source_address[0] != '\0';
   if (!ready) ImGui::BeginDisabled();
   if (ImGui::Button("Add")) m.requests.push_back(add);
   if (!ready) ImGui::EndDisabled();
@@ -82,7 +82,7 @@ void draw_source_selector(UiModel& m) {
   help_marker("The Lidar, View and Statistics panels show this source, and their commands go to it only.");
 }
 
-void draw_sources_panel(UiModel& m) {
+void draw_sources_panel(UiModel& m, PanelEdits& e) {
   for (std::size_t i = 0; i < m.sources.size(); ++i) {
     const SourceRow& row = m.sources[i];
     ImGui::PushID(static_cast<int>(i));
@@ -104,7 +104,7 @@ void draw_sources_panel(UiModel& m) {
     ImGui::Separator();
     ImGui::PopID();
   }
-  add_source_controls(m);
+  add_source_controls(m, e);
 }
 
 }  // namespace ydscope::ui

@@ -56,7 +56,7 @@ void draw_stats_panel(const UiModel& m) {
   }
 }
 
-float draw_sidebar(UiModel& m, ViewSettings& v) {
+float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float scale = ImGui::GetFontSize() / 16.0f;  // the theme's font is 16 px at scale 1
   const float height = viewport->WorkSize.y;
@@ -82,16 +82,16 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
                                    m.show_sidebar_tab == static_cast<int>(which) ? ImGuiTabItemFlags_SetSelected : 0);
       };
       if (tab("Lidar", SidebarTab::Lidar)) {
-        draw_connection_panel(m);
-        draw_device_panel(m);
+        draw_connection_panel(m, e);
+        draw_device_panel(m, e);
         draw_health_panel(m);
-        draw_frequency_panels(m);
+        draw_frequency_panels(m, e);
         ImGui::EndTabItem();
       }
       if (tab("View", SidebarTab::View)) {
         draw_view_panel(m, v);
         draw_filter_panel(m, v);
-        draw_sectors_panel(m);
+        draw_sectors_panel(m, e);
         ImGui::EndTabItem();
       }
       if (tab("Statistics", SidebarTab::Statistics)) {
@@ -100,7 +100,7 @@ float draw_sidebar(UiModel& m, ViewSettings& v) {
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Sources")) {
-        draw_sources_panel(m);
+        draw_sources_panel(m, e);
         ImGui::EndTabItem();
       }
       if (wanted == m.show_sidebar_tab) m.show_sidebar_tab = -1;

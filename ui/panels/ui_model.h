@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "core/link/session_snapshot.h"
-#include "core/sim/faults.h"
 #include "ui/panels/ui_request.h"
 #include "ui/view/colour_legend.h"
 #include "ui/view/command_feedback.h"
@@ -129,33 +128,9 @@ struct UiModel {
   std::vector<UiRequest> requests;
   std::string status_message;  // outcome of the last local action (file saved, ...)
 
-  // ---- panel edit state (kept between frames) ---------------------------------------------------
-  char port_text[256] = "";
-  int port_model_choice = 0;  // 0 = detect, then model_names() order
-  int port_baud_choice = 0;   // 0 = model default
-  int sim_model_choice = 2;   // 1-based in all_profiles(): G6
-  int sim_scene_choice = 1;   // demo
-  FaultConfig sim_faults;
-  int sim_host_choice = 0;       // 0 manual, 1 YDLidar-SDK
-  int sim_firmware[2] = {1, 2};  // major, minor
-  int sim_delivery_choice = 0;   // 0 whole, 1 USB bursts, 2 random splits
-  int sim_burst_bytes = 64;
-  int sim_burst_interval_us = 1000;
-  int sim_random_max = 17;
-  char replay_text[512] = "";
-  int replay_model_choice = 0;  // 0 = as the recording says, then model_names() order
-  char record_text[512] = "";
-  int record_format = 0;  // RecordFormat (ui/view/file_names.h)
-  char sector_text[64] = "";
+  // ---- feedback the app keeps for the panels (their edit state is PanelEdits) ----------------
   std::string sector_error;  // why the typed sector was refused
   double record_started_s = 0.0;
-  float scan_target_hz = 10.0f;
-  bool distance_scale_override = false;
-  float distance_scale_value = 1.0f;
-  int add_source_kind = 0;            // the Sources panel's "add": 0 virtual lidar, 1 port, 2 recording
-  int add_source_model_choice = 2;    // 1-based in all_profiles(): G6
-  int add_source_scene_choice = 1;    // demo
-  char add_source_address[512] = "";  // the port, tcp:// address or recording to add
 };
 
 }  // namespace ydscope::ui
