@@ -159,6 +159,7 @@ void VirtualLidar::generate_packet() {
     truth.lost = true;
   } else {
     std::uint8_t lane_flips[2] = {0, 0};  // the checksum XORs u16 words: low and high byte lanes
+    const std::uint64_t corrupted_before = fault_counters_.corrupted_bytes;
     const std::size_t samples_at = sp.packet_offset + kPacketHeaderSize;
     for (std::size_t i = samples_at; i < packet_.size(); ++i) {
       if (!corrupt_random_.chance(faults_.corrupt_byte_rate)) continue;
@@ -170,6 +171,8 @@ void VirtualLidar::generate_packet() {
     if (lane_flips[0] || lane_flips[1]) {
       ++fault_counters_.corrupted_packets;
       truth.corrupted = true;
+    } else {
+      truth.altered = fault_counters_.corrupted_bytes != corrupted_before;
     }
     pacer_->enqueue(sp.ready_ns, packet_, sp.index == 0 ? packet_.size() : LinePacer::kNoZeroEnd, true);
   }

@@ -90,8 +90,11 @@ struct TruthPacket {
   std::uint64_t lap = 0;    // 0 = the lap begun by the first zero packet of this scan
   std::uint32_t index = 0;  // index within the lap; 0 = zero packet
   std::uint8_t ct = 0;
-  bool lost = false;             // never sent (lost-packet fault or stall)
-  bool corrupted = false;        // sent with a broken checksum
+  bool lost = false;       // never sent (lost-packet fault or stall)
+  bool corrupted = false;  // sent with a broken checksum
+  // Sent with bytes flipped that cancel in its checksum (the XOR of 16-bit words): the host takes
+  // it as good, but its points are not `points`. Rare: two flips of the same bit in the same lane.
+  bool altered = false;
   std::int64_t ready_ns = 0;     // when its last sample was measured
   std::vector<LapPoint> points;  // corrected angle in [0, 360), range in mm, flag
   // Direction the scene was sampled at for each point; equals the point's angle once the

@@ -195,6 +195,23 @@ TEST(RoundTripFaults, CorruptedPacketsAreExactlyTheChecksumErrors) {
   EXPECT_EQ(run.decoder.checksum_errors, run.faults.corrupted_packets);
 }
 
+// Two flips of the same bit in the same byte lane cancel in the XOR checksum: the host takes the
+// packet as good. The truth marks it altered (not corrupted), so a test can tell the laps that
+// carry other values than the device measured from the laps no fault touched.
+TEST(RoundTripFaults, FlipsThatCancelInTheChecksumAreMarkedAlteredNotCorrupted) {
+  VirtualLidarConfig c = faulty(Model::G6);
+  c.faults.corrupt_byte_rate = 0.01;  // high, so that pairs that cancel happen in a short run
+  const ScanRun run = scan(c, 3'000 * kMs);
+  std::size_t altered = 0;
+  for (const TruthPacket& packet : run.packets) {
+    EXPECT_FALSE(packet.altered && packet.corrupted);
+    altered += packet.altered ? 1 : 0;
+  }
+  ASSERT_GT(altered, 0u) << "no two flips cancelled; raise the rate";
+  // The host cannot tell: the altered packets are not among its checksum errors.
+  EXPECT_LE(run.decoder.checksum_errors, run.faults.corrupted_packets);
+}
+
 TEST(RoundTripFaults, DroppedBytesAreMissingFromWhatTheHostReads) {
   const ScanRun clean = scan(faulty(Model::TG30), 2'000 * kMs);
   VirtualLidarConfig c = faulty(Model::TG30);
