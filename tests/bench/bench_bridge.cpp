@@ -31,6 +31,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/process_probe.h"
 #include "bridge/ws_test_client.h"
 
 extern char** environ;
@@ -46,12 +47,6 @@ struct Args {
   double seconds = 30;
   double warmup = 3;
 };
-
-std::int64_t monotonic_now_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
 
 pid_t spawn(const std::vector<std::string>& argv, int stdout_fd = -1) {
   std::vector<char*> raw;
@@ -152,7 +147,7 @@ int main(int argc, char** argv) {
         if (!client.subscribe(1, "/scan") || !client.subscribe(2, "/points")) throw std::runtime_error("subscribe");
         while (!done.load()) {
           const auto message = client.read(5s);
-          const std::int64_t now = monotonic_now_ns();
+          const std::int64_t now = ydscope::bench::monotonic_now_ns();
           if (!message) throw std::runtime_error("read");
           if (!message->text && message->subscription == 1 && measuring.load()) {
             std::lock_guard lock(mutex);
@@ -169,11 +164,11 @@ int main(int argc, char** argv) {
   std::this_thread::sleep_for(std::chrono::duration<double>(args.warmup));
   const double cpu0 = cpu_seconds(serve);
   const auto wall0 = std::chrono::steady_clock::now();
-  const std::int64_t mono0 = monotonic_now_ns();
+  const std::int64_t mono0 = ydscope::bench::monotonic_now_ns();
   measuring.store(true);
   std::this_thread::sleep_for(std::chrono::duration<double>(args.seconds));
   measuring.store(false);
-  const std::int64_t mono1 = monotonic_now_ns();
+  const std::int64_t mono1 = ydscope::bench::monotonic_now_ns();
   const double cpu1 = cpu_seconds(serve);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   done.store(true);

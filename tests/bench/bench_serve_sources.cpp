@@ -37,12 +37,6 @@ struct Args {
   double warmup = 3;
 };
 
-std::int64_t monotonic_now_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
-
 // Zero packets a virtual lidar wrote within [from_ns, to_ns): the laps it closed then.
 long laps_closed(const fs::path& zero_log, std::int64_t from_ns, std::int64_t to_ns) {
   std::ifstream in(zero_log);
@@ -139,11 +133,11 @@ int main(int argc, char** argv) {
   std::this_thread::sleep_for(std::chrono::duration<double>(args.warmup));
   const long ticks0 = bench::cpu_ticks(serve);
   const long io0 = bench::thread_ticks(serve, "ydscope-io");
-  const std::int64_t from_ns = monotonic_now_ns();
+  const std::int64_t from_ns = bench::monotonic_now_ns();
   measuring.store(true);
   std::this_thread::sleep_for(std::chrono::duration<double>(args.seconds));
   measuring.store(false);
-  const std::int64_t to_ns = monotonic_now_ns();
+  const std::int64_t to_ns = bench::monotonic_now_ns();
   const long ticks1 = bench::cpu_ticks(serve);
   const long io1 = bench::thread_ticks(serve, "ydscope-io");
   done.store(true);

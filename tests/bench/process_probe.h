@@ -3,9 +3,11 @@
 // start it, read its CPU time and resident memory from /proc, stop it as a service manager would.
 #include <signal.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +19,13 @@
 #include <vector>
 
 namespace ydscope::bench {
+
+// CLOCK_MONOTONIC in ns: the clock the virtual lidar's zero-packet log (`sim --zero-log`) uses.
+inline std::int64_t monotonic_now_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
 
 // quiet: its stdout and stderr go to /dev/null; stdout_fd >= 0: its stdout goes there instead.
 inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_fd = -1) {
