@@ -90,6 +90,7 @@ class SimServer::Impl {
   std::int64_t replug_at = kNever;
   std::FILE* zero_log = nullptr;
   std::uint64_t zero_index = 0;
+  std::uint64_t last_overrun_lap = 0;  // the last lap that lost bytes, as its index + 1 (0: none)
 };
 
 void SimServer::Impl::unplug_locked(std::int64_t now) {
@@ -159,11 +160,17 @@ void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std:
   std::size_t pos = 0;
   std::size_t written = 0;
   std::size_t zeros = 0;
+  std::size_t laps_overrun = 0;
   const auto write_piece = [&](std::size_t end) {
     const std::span<const std::uint8_t> piece(out.data() + pos, end - pos);
     const std::size_t sent = endpoint ? endpoint->send(piece) : 0;
     written += sent;
     pos = end;
+    // A zero packet cut short is not counted as written, so its lap runs on to the next one.
+    if (sent < piece.size() && zero_index > 0 && last_overrun_lap != zero_index) {
+      last_overrun_lap = zero_index;
+      ++laps_overrun;
+    }
     return sent == piece.size();
   };
   std::size_t next_zero = 0;
@@ -194,6 +201,7 @@ void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std:
   counters.bytes_written += written;
   counters.bytes_unheard += out.size() - written;
   counters.zero_packets_written += zeros;
+  counters.laps_overrun += laps_overrun;
 }
 
 void SimServer::Impl::shape(std::int64_t now, const std::vector<std::uint8_t>& out,

@@ -49,14 +49,18 @@ struct SimServerOptions {
 };
 
 struct SimServerCounters {
-  std::uint64_t bytes_in = 0;          // host bytes handed to the device
-  std::uint64_t bytes_written = 0;     // device bytes a host could read
-  std::uint64_t bytes_unheard = 0;     // device bytes lost because no host had the port open
+  std::uint64_t bytes_in = 0;       // host bytes handed to the device
+  std::uint64_t bytes_written = 0;  // device bytes a host could read
+  // Device bytes lost because no host had the port open, or because the host read too slowly and
+  // the port's buffer was full (a UART overruns the same way).
+  std::uint64_t bytes_unheard = 0;
   std::uint64_t host_connections = 0;  // TCP accepts, or pty opens noticed
   std::uint64_t rejected_hosts = 0;    // TCP hosts turned away because one was already connected
   std::uint64_t unplugs = 0;
   std::uint64_t replugs = 0;
   std::uint64_t zero_packets_written = 0;
+  // Laps that lost bytes so: lap i runs from the i-th zero packet written whole to the next one.
+  std::uint64_t laps_overrun = 0;
 };
 
 struct SimCounters {

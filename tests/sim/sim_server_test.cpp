@@ -121,6 +121,40 @@ TEST(SimServerPty, AHostCanCloseAndReopenThePort) {
   EXPECT_TRUE(is_device_info_reply(host.read(27, 2s)));
 }
 
+// A host that stops reading: the pty fills and the device's bytes overrun, as on a UART. No zero
+// packet gets through meanwhile, so the loss falls into one lap, which runs on until a zero packet
+// is written whole again.
+TEST(SimServerPty, BytesAHostDoesNotReadOverrunOneLap) {
+  const std::string link = temp_path("lidar");
+  SimServer server(pty_options(Model::G1, link));
+  server.start();
+  HostPort host;
+  ASSERT_TRUE(host.open_device(link));
+  ASSERT_TRUE(host.send({0xA5, 0x60}));
+  const auto counters = [&] { return server.counters().server; };
+  auto give_up = Clock::now() + 10s;
+  while (counters().zero_packets_written < 2 && Clock::now() < give_up) (void)host.read(512, 100ms);
+  ASSERT_GE(counters().zero_packets_written, 2u) << "the device never scanned";
+  give_up = Clock::now() + 10s;
+  while (counters().bytes_unheard == 0 && Clock::now() < give_up) std::this_thread::sleep_for(10ms);
+  const SimServerCounters full = counters();
+  ASSERT_GT(full.bytes_unheard, 0u) << "the pty never filled";
+  EXPECT_EQ(full.laps_overrun, 1u);
+  // Several laps' worth more bytes (a G1 lap is about 1.6 kB) fall into the same lap.
+  give_up = Clock::now() + 10s;
+  while (counters().bytes_unheard < full.bytes_unheard + 8'000 && Clock::now() < give_up)
+    std::this_thread::sleep_for(10ms);
+  const SimServerCounters later = counters();
+  ASSERT_GE(later.bytes_unheard, full.bytes_unheard + 8'000);
+  EXPECT_EQ(later.zero_packets_written, full.zero_packets_written);
+  EXPECT_EQ(later.laps_overrun, 1u);
+  // Reading again lets the next zero packet through.
+  give_up = Clock::now() + 10s;
+  while (counters().zero_packets_written == later.zero_packets_written && Clock::now() < give_up)
+    (void)host.read(4'096, 100ms);
+  EXPECT_GT(counters().zero_packets_written, later.zero_packets_written);
+}
+
 TEST(SimServerPty, UnplugRemovesThePortAndReplugComesBackPoweredOn) {
   const std::string link = temp_path("lidar");
   SimServer server(pty_options(Model::TG30, link));
