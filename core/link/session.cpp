@@ -32,16 +32,16 @@ Session::~Session() = default;
 void Session::connect(SessionConfig config) { impl_->post_connect(std::move(config)); }
 void Session::disconnect() { impl_->post_disconnect(); }
 void Session::set_scan_hz(double target_hz, CommandCallback done) {
-  impl_->post_intent({Impl::Intent::Kind::ScanHz, target_hz, 0, false, std::move(done)});
+  impl_->post_intent({SessionIntent::Kind::ScanHz, target_hz, 0, false, std::move(done)});
 }
 void Session::set_ranging_khz(std::uint16_t target_khz, CommandCallback done) {
-  impl_->post_intent({Impl::Intent::Kind::RangingKhz, 0, target_khz, false, std::move(done)});
+  impl_->post_intent({SessionIntent::Kind::RangingKhz, 0, target_khz, false, std::move(done)});
 }
 void Session::set_power_down_protection(bool on, CommandCallback done) {
-  impl_->post_intent({Impl::Intent::Kind::PowerDown, 0, 0, on, std::move(done)});
+  impl_->post_intent({SessionIntent::Kind::PowerDown, 0, 0, on, std::move(done)});
 }
 void Session::refresh_health(CommandCallback done) {
-  impl_->post_intent({Impl::Intent::Kind::Health, 0, 0, false, std::move(done)});
+  impl_->post_intent({SessionIntent::Kind::Health, 0, 0, false, std::move(done)});
 }
 void Session::start_recording(std::string path, CommandCallback done) {
   impl_->post_start_recording(std::move(path), std::move(done));
@@ -99,9 +99,9 @@ void Session::Impl::run_thread() {
       io_.run();
       return;
     } catch (const std::exception& e) {
-      set_state(LinkState::Failed, std::string("internal error on the I/O thread: ") + e.what());
+      board_.set_state(LinkState::Failed, std::string("internal error on the I/O thread: ") + e.what());
     } catch (...) {
-      set_state(LinkState::Failed, "internal error on the I/O thread");
+      board_.set_state(LinkState::Failed, "internal error on the I/O thread");
     }
   }
 }
@@ -141,17 +141,18 @@ void Session::Impl::post_disconnect() {
   });
 }
 
-void Session::Impl::post_intent(Intent intent) {
+void Session::Impl::post_intent(SessionIntent intent) {
   asio::post(io_, [this, intent = std::move(intent)]() mutable {
-    const bool down = state_ == LinkState::Reconnecting || state_ == LinkState::Stalled || state_ == LinkState::Failed;
+    const LinkState state = board_.state();
+    const bool down = state == LinkState::Reconnecting || state == LinkState::Stalled || state == LinkState::Failed;
     if (!supervisor_running_ || stopping_ || down) {
       CommandResult result;
-      result.message = down ? "the lidar is not connected right now (" + std::string(link_state_name(state_)) + ")"
+      result.message = down ? "the lidar is not connected right now (" + std::string(link_state_name(state)) + ")"
                             : "not connected to a lidar: connect first";
-      finish(result, intent.done);
+      board_.post_result(result, intent.done);
       return;
     }
-    intents_.push_back(std::move(intent));
+    intents_.push(std::move(intent));
     notify();
   });
 }
@@ -167,7 +168,7 @@ RecordingMetadata Session::Impl::capture_start_metadata() const {
 void Session::Impl::publish_recording() {
   const bool active = recording_.file_active();
   const std::string path = active ? recording_.file_path() : std::string();
-  publish([&](SessionSnapshot& s) {
+  board_.publish([&](SessionSnapshot& s) {
     s.recording = active;
     s.recording_path = path;
   });
@@ -178,7 +179,7 @@ void Session::Impl::post_start_recording(std::string path, CommandCallback done)
     const CommandResult result = recording_.start_file(path, capture_start_metadata());
     if (result.ok) record_metadata();
     publish_recording();
-    finish(result, done);
+    board_.post_result(result, done);
   });
 }
 
@@ -186,7 +187,7 @@ void Session::Impl::post_stop_recording(CommandCallback done) {
   asio::post(io_, [this, done = std::move(done)] {
     const CommandResult result = recording_.stop_file();
     publish_recording();
-    finish(result, done);
+    board_.post_result(result, done);
   });
 }
 
@@ -194,12 +195,14 @@ void Session::Impl::post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallba
   asio::post(io_, [this, tap = std::move(tap), done = std::move(done)]() mutable {
     const CommandResult result = recording_.start_tap(std::move(tap), capture_start_metadata());
     record_metadata();
-    finish(result, done);
+    board_.post_result(result, done);
   });
 }
 
 void Session::Impl::post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
-  asio::post(io_, [this, tap = std::move(tap), done = std::move(done)] { finish(recording_.stop_tap(tap), done); });
+  asio::post(io_, [this, tap = std::move(tap), done = std::move(done)] {
+    board_.post_result(recording_.stop_tap(tap), done);
+  });
 }
 
 void Session::Impl::post_distance_scale(std::optional<double> scale) {
@@ -211,43 +214,8 @@ void Session::Impl::post_distance_scale(std::optional<double> scale) {
 
 // ---- snapshot -------------------------------------------------------------------------------
 
-void Session::Impl::set_state(LinkState state, std::string message) {
-  state_ = state;
-  publish([&](SessionSnapshot& s) {
-    s.state = state;
-    s.message = std::move(message);
-  });
-}
-
-void Session::Impl::publish(const std::function<void(SessionSnapshot&)>& change) {
-  {
-    std::lock_guard lock(mutex_);
-    change(shared_);
-  }
-  changed_.notify_all();
-}
-
-void Session::Impl::finish(const CommandResult& result, const CommandCallback& done) {
-  publish([&](SessionSnapshot& s) {
-    s.last_result = result;
-    s.busy = false;
-    s.busy_what.clear();
-  });
-  if (done) {
-    try {
-      done(result);
-    } catch (...) {
-      // A caller's callback must not take the I/O thread down.
-    }
-  }
-}
-
 SessionSnapshot Session::Impl::snapshot() const {
-  SessionSnapshot s;
-  {
-    std::lock_guard lock(mutex_);
-    s = shared_;
-  }
+  SessionSnapshot s = board_.read();
   s.counters = counters_.read(link_clock_ns());
   s.queue_dropped = main_consumer_.dropped_full();
   s.queue_skipped = main_consumer_.skipped();
@@ -257,21 +225,14 @@ SessionSnapshot Session::Impl::snapshot() const {
 
 SessionSnapshot Session::Impl::wait_until(const std::function<bool(const SessionSnapshot&)>& done,
                                           std::chrono::milliseconds timeout) const {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  for (;;) {
-    SessionSnapshot s = snapshot();
-    if (done(s) || std::chrono::steady_clock::now() >= deadline) return s;
-    // Counters change without a notification, so look again at least every 20 ms.
-    std::unique_lock lock(mutex_);
-    changed_.wait_until(lock, std::min(deadline, std::chrono::steady_clock::now() + 20ms));
-  }
+  return board_.wait_until([this] { return snapshot(); }, done, timeout);
 }
 
 // ---- the byte path --------------------------------------------------------------------------
 
 void Session::Impl::new_decoder() {
   const double scale = scan_.restart(*profile_);
-  publish([scale](SessionSnapshot& s) { s.distance_scale = scale; });
+  board_.publish([scale](SessionSnapshot& s) { s.distance_scale = scale; });
 }
 
 // ---- the tick: rates, stall watchdog, power-down keepalive ----------------------------------
@@ -294,14 +255,14 @@ void Session::Impl::on_tick() {
     if (recording_.file_active()) {
       const std::optional<std::string> stopped = recording_.flush_file();
       const bool recording = recording_.file_active();
-      publish([&](SessionSnapshot& s) {
+      board_.publish([&](SessionSnapshot& s) {
         s.recording = recording;
         if (stopped) s.message = "recording stopped: " + *stopped;
       });
     }
   }
-  if (state_ != LinkState::Scanning || !link_.device_scanning() || !config_) return;
-  if (power_down_wanted_ && scan_.keepalive_due(now))
+  if (board_.state() != LinkState::Scanning || !link_.device_scanning() || !config_) return;
+  if (intents_.power_down_wanted() && scan_.keepalive_due(now))
     link_.send(Command::Scan);  // the keepalive the power-down mode needs; SessionIo allows only this
   if (const auto quiet_ns = scan_.stalled_for(now, config_->stall_timeout)) {
     char seconds[16];
@@ -309,7 +270,7 @@ void Session::Impl::on_tick() {
     const std::string why = std::string("no data for ") + seconds + " s from " +
                             (link_.link() ? link_.link()->describe() : std::string("the port")) +
                             " while scanning: is the lidar powered and its cable seated?";
-    set_state(LinkState::Stalled, why);
+    board_.set_state(LinkState::Stalled, why);
     link_.fail(why);
   }
 }

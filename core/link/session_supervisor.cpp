@@ -1,19 +1,17 @@
-// The supervisor coroutine of a Session: open the link, start the device up as the manuals say,
-// hand over to serve() (session_intents.cpp) while laps flow, and on a fault reconnect with
-// backoff. I/O thread only.
+// The supervisor coroutine of a Session: start the device up (device_startup.h), serve the
+// user's intents (intent_runner.h) while laps flow, and on a fault reconnect with backoff. I/O
+// thread only.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <utility>  // before asio's coroutine headers, which use std::exchange without including it
-#include <vector>
 
 #include <boost/asio/co_spawn.hpp>
 #include <boost/asio/redirect_error.hpp>
 #include <boost/asio/use_awaitable.hpp>
 
-#include "core/link/device_probe.h"
+#include "core/link/device_startup.h"
 #include "core/link/link_address.h"
-#include "core/link/recorded_device.h"
 #include "core/link/session_impl.h"
 
 namespace ydscope {
@@ -42,30 +40,6 @@ std::string seconds_text(std::chrono::milliseconds duration) {
   return text;
 }
 
-std::string baud_list(const std::vector<std::uint32_t>& bauds) {
-  std::string text;
-  for (std::size_t i = 0; i < bauds.size(); ++i) text += (i ? ", " : "") + std::to_string(bauds[i]);
-  return text;
-}
-
-std::vector<std::uint32_t> candidate_bauds(const SessionConfig& config) {
-  std::vector<std::uint32_t> bauds;
-  const auto add = [&](std::uint32_t baud) {
-    if (std::find(bauds.begin(), bauds.end(), baud) == bauds.end()) bauds.push_back(baud);
-  };
-  if (config.baud) add(*config.baud);
-  if (config.probe_baud) {
-    for (const auto baud : kProbeBauds) add(baud);
-  } else if (!config.baud) {
-    if (config.model) {
-      add(profile_for(*config.model).default_baud);
-    } else {  // unknown model: the default bauds of every model
-      for (const auto& profile : all_profiles()) add(profile.default_baud);
-    }
-  }
-  return bauds;
-}
-
 }  // namespace
 
 void Session::Impl::spawn_supervisor() {
@@ -77,7 +51,7 @@ void Session::Impl::spawn_supervisor() {
   // What the snapshot says about a device belongs to the connection that learned it: a replay
   // after a G1 session must not show the G1's health answer or set rate.
   counters_.reset();
-  publish([](SessionSnapshot& s) {
+  board_.publish([](SessionSnapshot& s) {
     const SessionSnapshot fresh;
     s.link = fresh.link;
     s.baud = fresh.baud;
@@ -100,9 +74,9 @@ void Session::Impl::spawn_supervisor() {
         why += std::string(": ") + e.what();
       } catch (...) {
       }
-      set_state(LinkState::Failed, why);
+      board_.set_state(LinkState::Failed, why);
     }
-    fail_pending_intents("the session ended");
+    intents_.fail_all("the session ended");
     if (pending_config_ && !stopping_) spawn_supervisor();
   });
 }
@@ -119,10 +93,10 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
       error = link_.fault().empty() ? "the link closed" : link_.fault();
     }
     link_.detach();
-    fail_pending_intents(error);
+    intents_.fail_all(error);
     if (disconnect_requested_ || stopping_) break;
     if (!config.reconnect) {
-      set_state(LinkState::Failed, error);
+      board_.set_state(LinkState::Failed, error);
       co_return;
     }
     const auto port_path = watchable_path(config);
@@ -130,9 +104,9 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
       port_changed_ = true;
       notify();
     });
-    set_state(LinkState::Reconnecting,
-              error + (watching ? "; retrying when " + *port_path + " comes back, or in " : "; retrying in ") +
-                  seconds_text(delay));
+    board_.set_state(LinkState::Reconnecting,
+                     error + (watching ? "; retrying when " + *port_path + " comes back, or in " : "; retrying in ") +
+                         seconds_text(delay));
     co_await backoff(delay);
     port_watch_.disarm();
     counters_.add_reconnect();
@@ -147,7 +121,7 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
     }
   }
   link_.detach();
-  if (!stopping_) set_state(LinkState::Idle, "disconnected");
+  if (!stopping_) board_.set_state(LinkState::Idle, "disconnected");
 }
 
 asio::awaitable<void> Session::Impl::backoff(std::chrono::milliseconds duration) {
@@ -160,107 +134,38 @@ asio::awaitable<void> Session::Impl::backoff(std::chrono::milliseconds duration)
   }
 }
 
+// While connected: the user's intents, one at a time, until a fault or a disconnect.
+asio::awaitable<void> Session::Impl::serve() {
+  while (!disconnect_requested_ && !stopping_ && link_.attached() && link_.fault().empty()) {
+    if (intents_.pending()) {
+      co_await intents_.run_next(profile_);
+      continue;
+    }
+    signal_.expires_at(asio::steady_timer::time_point::max());
+    boost::system::error_code ec;
+    co_await signal_.async_wait(asio::redirect_error(asio::use_awaitable, ec));
+  }
+}
+
 asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& config, std::string& error) {
-  set_state(LinkState::Connecting, "opening " + config.address);
-  const std::vector<std::uint32_t> bauds = candidate_bauds(config);
-  std::unique_ptr<ByteLink> opened;
-  if (config.open_link)
-    opened = config.open_link(io_, bauds.front(), error);
-  else
-    opened = co_await open_byte_link(io_, config.address, bauds.front(), error);
-  if (!opened) {
-    if (error.empty()) error = "cannot open " + config.address;
+  const StartupParts parts{io_, link_, sequencer_, board_, [this] { return disconnect_requested_ || stopping_; }};
+  const StartupOutcome outcome = co_await start_device(parts, config, intents_.power_down_wanted());
+  if (!outcome.ok) {
+    error = outcome.error;
     co_return false;
   }
-  const bool commands = opened->accepts_commands();
-  link_.attach(std::move(opened));
-  const auto publish_link = [this](std::uint32_t baud) {
-    const std::string text = link_.link() ? link_.link()->describe() : std::string();
-    publish([&](SessionSnapshot& s) {
-      s.link = text;
-      s.baud = baud;
-    });
-  };
-  publish_link(bauds.front());
-
-  if (!commands) {  // a replay: nothing to ask, decode what comes
-    profile_ = &profile_for(config.model.value_or(Model::G6));
-    new_decoder();
-    DeviceDetails device;
-    device.profile = profile_;
-    if (const RecordingMetadata* recorded = link_.link()->recording_metadata())
-      device = recorded_device(*recorded, *profile_);
-    publish([&device](SessionSnapshot& s) { s.device = device; });
+  profile_ = outcome.profile;
+  new_decoder();
+  if (!outcome.accepts_commands) {  // a replay: decode what comes
     link_.listen_stream();
     scan_.scanning_from(link_clock_ns());
-    set_state(LinkState::Scanning, "");
+    board_.set_state(LinkState::Scanning, "");
     co_return true;
   }
-
-  set_state(LinkState::Probing, "asking " + link_.link()->describe() + " for its device info");
-  sequencer_.reset_device();
-  Step<DeviceInfo> info;
-  std::uint32_t baud = bauds.front();
-  for (std::size_t i = 0; i < bauds.size(); ++i) {
-    if (disconnect_requested_ || stopping_) co_return false;
-    if (i > 0) {
-      if (!link_.link()->set_baud(bauds[i], error)) co_return false;
-      publish_link(bauds[i]);
-    }
-    co_await sequencer_.pause_scan(true);  // a device left scanning answers nothing else
-    info = co_await sequencer_.device_info();
-    if (info.ok()) {
-      baud = bauds[i];
-      break;
-    }
-    if (info.link_lost) break;
-  }
-  if (!info.ok()) {
-    if (bauds.size() > 1 && !info.link_lost)
-      error = "no device-info reply (A5 90) at any of " + baud_list(bauds) + " baud on " + config.address +
-              ": is it a G1, G6 or TG lidar, powered, on this port?";
-    else
-      error = info.error;
-    co_return false;
-  }
-  std::string note;
-  profile_ = choose_profile(config.model, info.value->model_code, note);
-  if (!profile_) {
-    error = note;
-    co_return false;
-  }
-  new_decoder();
-  const DeviceDetails details = make_device_details(*info.value, *profile_);
-  publish([&](SessionSnapshot& s) {
-    s.device = details;
-    s.baud = baud;
-  });
-
-  // The rest of start-up is informative: a model without an answer still scans.
-  const auto health = co_await sequencer_.health(*profile_);
-  if (health.link_lost) co_return false;
-  const auto scan_hz = co_await sequencer_.scan_hz();
-  if (scan_hz.link_lost) co_return false;
-  const auto ranging = co_await sequencer_.ranging_khz(*profile_);
-  if (ranging.link_lost) co_return false;
-  std::optional<bool> protection;
-  if (power_down_wanted_) {  // a replugged device is back to its default (off)
-    const auto step = co_await sequencer_.power_down_protection(true);
-    if (step.link_lost) co_return false;
-    protection = step.value;
-  }
-  link_.allow_scan_keepalive(protection.value_or(false));
-  publish([&](SessionSnapshot& s) {
-    s.health = health.value;
-    s.scan_hz = scan_hz.value;
-    s.ranging_khz = ranging.value;
-    s.power_down_protection = protection;
-  });
+  link_.allow_scan_keepalive(outcome.power_down_protection.value_or(false));
   record_metadata();
-  if (!health.ok() && note.empty()) note = "health: " + health.error;
-
   if (!config.scan) {
-    set_state(LinkState::Ready, note);
+    board_.set_state(LinkState::Ready, outcome.note);
     co_return true;
   }
   scan_.scanning_from(link_clock_ns());
@@ -268,7 +173,7 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
     error = "could not send A5 60 to " + config.address;
     co_return false;
   }
-  set_state(LinkState::Scanning, note);
+  board_.set_state(LinkState::Scanning, outcome.note);
   co_return true;
 }
 

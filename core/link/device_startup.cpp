@@ -1,0 +1,151 @@
+#include "core/link/device_startup.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/link/device_probe.h"
+#include "core/link/link_address.h"
+#include "core/link/recorded_device.h"
+
+namespace ydscope {
+
+namespace {
+
+std::string baud_list(const std::vector<std::uint32_t>& bauds) {
+  std::string text;
+  for (std::size_t i = 0; i < bauds.size(); ++i) text += (i ? ", " : "") + std::to_string(bauds[i]);
+  return text;
+}
+
+std::vector<std::uint32_t> candidate_bauds(const SessionConfig& config) {
+  std::vector<std::uint32_t> bauds;
+  const auto add = [&](std::uint32_t baud) {
+    if (std::find(bauds.begin(), bauds.end(), baud) == bauds.end()) bauds.push_back(baud);
+  };
+  if (config.baud) add(*config.baud);
+  if (config.probe_baud) {
+    for (const auto baud : kProbeBauds) add(baud);
+  } else if (!config.baud) {
+    if (config.model) {
+      add(profile_for(*config.model).default_baud);
+    } else {  // unknown model: the default bauds of every model
+      for (const auto& profile : all_profiles()) add(profile.default_baud);
+    }
+  }
+  return bauds;
+}
+
+void post_link(const StartupParts& parts, std::uint32_t baud) {
+  const std::string text = parts.link.link() ? parts.link.link()->describe() : std::string();
+  parts.board.publish([&](SessionSnapshot& s) {
+    s.link = text;
+    s.baud = baud;
+  });
+}
+
+// A replay: decode what comes with the configured model, and show the recorded device.
+StartupOutcome start_replay(const StartupParts& parts, const SessionConfig& config) {
+  StartupOutcome outcome;
+  outcome.ok = true;
+  outcome.accepts_commands = false;
+  outcome.profile = &profile_for(config.model.value_or(Model::G6));
+  DeviceDetails device;
+  device.profile = outcome.profile;
+  if (const RecordingMetadata* recorded = parts.link.link()->recording_metadata())
+    device = recorded_device(*recorded, *outcome.profile);
+  parts.board.publish([&device](SessionSnapshot& s) { s.device = device; });
+  return outcome;
+}
+
+// The first baud at which the device answers A5 90, with its answer; an error when none does.
+boost::asio::awaitable<std::optional<DeviceInfo>> find_device(const StartupParts& parts, const SessionConfig& config,
+                                                              const std::vector<std::uint32_t>& bauds,
+                                                              std::uint32_t& baud, std::string& error) {
+  Step<DeviceInfo> info;
+  for (std::size_t i = 0; i < bauds.size(); ++i) {
+    if (parts.cancelled()) co_return std::nullopt;
+    if (i > 0) {
+      if (!parts.link.link()->set_baud(bauds[i], error)) co_return std::nullopt;
+      post_link(parts, bauds[i]);
+    }
+    co_await parts.sequencer.pause_scan(true);  // a device left scanning answers nothing else
+    info = co_await parts.sequencer.device_info();
+    if (info.ok()) {
+      baud = bauds[i];
+      co_return info.value;
+    }
+    if (info.link_lost) break;
+  }
+  if (bauds.size() > 1 && !info.link_lost)
+    error = "no device-info reply (A5 90) at any of " + baud_list(bauds) + " baud on " + config.address +
+            ": is it a G1, G6 or TG lidar, powered, on this port?";
+  else
+    error = info.error;
+  co_return std::nullopt;
+}
+
+}  // namespace
+
+boost::asio::awaitable<StartupOutcome> start_device(const StartupParts& parts, const SessionConfig& config,
+                                                    bool power_down_wanted) {
+  StartupOutcome outcome;
+  parts.board.set_state(LinkState::Connecting, "opening " + config.address);
+  const std::vector<std::uint32_t> bauds = candidate_bauds(config);
+  std::unique_ptr<ByteLink> opened;
+  if (config.open_link)
+    opened = config.open_link(parts.io, bauds.front(), outcome.error);
+  else
+    opened = co_await open_byte_link(parts.io, config.address, bauds.front(), outcome.error);
+  if (!opened) {
+    if (outcome.error.empty()) outcome.error = "cannot open " + config.address;
+    co_return outcome;
+  }
+  const bool commands = opened->accepts_commands();
+  parts.link.attach(std::move(opened));
+  post_link(parts, bauds.front());
+  if (!commands) co_return start_replay(parts, config);
+
+  parts.board.set_state(LinkState::Probing, "asking " + parts.link.link()->describe() + " for its device info");
+  parts.sequencer.reset_device();
+  std::uint32_t baud = bauds.front();
+  const std::optional<DeviceInfo> info = co_await find_device(parts, config, bauds, baud, outcome.error);
+  if (!info) co_return outcome;
+  outcome.profile = choose_profile(config.model, info->model_code, outcome.note);
+  if (!outcome.profile) {
+    outcome.error = outcome.note;
+    co_return outcome;
+  }
+  const DeviceDetails details = make_device_details(*info, *outcome.profile);
+  parts.board.publish([&](SessionSnapshot& s) {
+    s.device = details;
+    s.baud = baud;
+  });
+
+  // The rest is informative: a model without an answer still scans, unless the link went.
+  const auto lost = [&outcome](const auto& step) {
+    if (step.link_lost) outcome.error = step.error;
+    return step.link_lost;
+  };
+  const auto health = co_await parts.sequencer.health(*outcome.profile);
+  if (lost(health)) co_return outcome;
+  const auto scan_hz = co_await parts.sequencer.scan_hz();
+  if (lost(scan_hz)) co_return outcome;
+  const auto ranging = co_await parts.sequencer.ranging_khz(*outcome.profile);
+  if (lost(ranging)) co_return outcome;
+  if (power_down_wanted) {  // a replugged device is back to its default (off)
+    const auto step = co_await parts.sequencer.power_down_protection(true);
+    if (lost(step)) co_return outcome;
+    outcome.power_down_protection = step.value;
+  }
+  parts.board.publish([&](SessionSnapshot& s) {
+    s.health = health.value;
+    s.scan_hz = scan_hz.value;
+    s.ranging_khz = ranging.value;
+    s.power_down_protection = outcome.power_down_protection;
+  });
+  if (!health.ok() && outcome.note.empty()) outcome.note = "health: " + health.error;
+  outcome.ok = true;
+  co_return outcome;
+}
+
+}  // namespace ydscope

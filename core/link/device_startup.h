@@ -1,0 +1,44 @@
+#pragma once
+// Start-up on a fresh connection, in the order the manuals give: open the link; find the baud at
+// which the device answers device info (A5 90) and the model profile that goes with its answer;
+// then read health, the set scan frequency and the ranging frequency, and turn power-down
+// protection back on if the user had it on. Only device info is required: a device that does not
+// answer the rest still scans. A replay asks nothing and takes the device from its recording.
+// What it learns is posted as it learns it; the Session then starts the stream. I/O thread only.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>  // before asio's awaitable.hpp, which uses std::exchange without including it
+
+#include <boost/asio/awaitable.hpp>
+#include <boost/asio/io_context.hpp>
+
+#include "core/link/command_sequencer.h"
+#include "core/link/session.h"
+#include "core/link/session_io.h"
+#include "core/link/snapshot_board.h"
+
+namespace ydscope {
+
+struct StartupOutcome {
+  bool ok = false;
+  std::string error;  // when not ok: one sentence saying what failed and what to try
+  std::string note;   // when ok: what the user should know (the model guessed, health unreadable)
+  const ModelProfile* profile = nullptr;
+  bool accepts_commands = true;  // false for a replay: it is decoded, never commanded
+  std::optional<bool> power_down_protection;
+};
+
+struct StartupParts {
+  boost::asio::io_context& io;
+  SessionIo& link;  // the opened link is attached here
+  CommandSequencer& sequencer;
+  SnapshotBoard& board;             // the state, link, baud, device and set values, as they are learned
+  std::function<bool()> cancelled;  // a disconnect was asked for
+};
+
+boost::asio::awaitable<StartupOutcome> start_device(const StartupParts& parts, const SessionConfig& config,
+                                                    bool power_down_wanted);
+
+}  // namespace ydscope
