@@ -1,8 +1,6 @@
 // The supervisor coroutine of a Session: start the device up (device_startup.h), serve the
 // user's intents (intent_runner.h) while laps flow, and on a fault reconnect with backoff. I/O
 // thread only.
-#include <algorithm>
-#include <cstdio>
 #include <exception>
 #include <utility>  // before asio's coroutine headers, which use std::exchange without including it
 
@@ -11,36 +9,13 @@
 #include <boost/asio/use_awaitable.hpp>
 
 #include "core/link/device_startup.h"
-#include "core/link/link_address.h"
+#include "core/link/reconnect_plan.h"
 #include "core/link/session_impl.h"
 
 namespace ydscope {
 
 namespace asio = boost::asio;
 using namespace std::chrono_literals;
-
-namespace {
-// A serial port's return is seen by the PortWatch at once, so its timer is only the fallback and
-// for faults that are not a missing port. A TCP bridge cannot be watched: its backoff stays short
-// enough that a restarted bridge is used again within a second (a refused connect costs nothing).
-constexpr std::chrono::milliseconds kMaxTcpBackoff{750};
-
-// The serial device path a session opens, when it opens one (not TCP, not a test's own opener).
-std::optional<std::string> watchable_path(const SessionConfig& config) {
-  if (config.open_link) return std::nullopt;
-  std::string ignored;
-  const auto address = parse_link_address(config.address, ignored);
-  if (!address || address->kind != LinkAddress::Kind::Serial) return std::nullopt;
-  return address->path;
-}
-
-std::string seconds_text(std::chrono::milliseconds duration) {
-  char text[16];
-  std::snprintf(text, sizeof text, "%.2g s", static_cast<double>(duration.count()) / 1000.0);
-  return text;
-}
-
-}  // namespace
 
 void Session::Impl::spawn_supervisor() {
   SessionConfig config = std::move(*pending_config_);
@@ -83,11 +58,11 @@ void Session::Impl::spawn_supervisor() {
 
 asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
   sequencer_.configure(config.reply_timeout, config.command_attempts);
-  auto delay = config.first_backoff;
+  ReconnectPlan plan(config);
   while (!disconnect_requested_ && !stopping_) {
     std::string error;
     if (co_await connect_and_start(config, error)) {
-      delay = config.first_backoff;
+      plan.started();
       co_await serve();
       if (disconnect_requested_ || stopping_) break;
       error = link_.fault().empty() ? "the link closed" : link_.fault();
@@ -99,19 +74,16 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
       board_.set_state(LinkState::Failed, error);
       co_return;
     }
-    const auto port_path = watchable_path(config);
+    const auto& port_path = plan.watched_path();
     const bool watching = port_path && port_watch_.arm(*port_path, [this] {
       port_changed_ = true;
       notify();
     });
-    board_.set_state(LinkState::Reconnecting,
-                     error + (watching ? "; retrying when " + *port_path + " comes back, or in " : "; retrying in ") +
-                         seconds_text(delay));
-    co_await backoff(delay);
+    board_.set_state(LinkState::Reconnecting, error + plan.retry_text(watching));
+    co_await backoff(plan.delay());
     port_watch_.disarm();
     counters_.add_reconnect();
-    const bool tcp = !port_path && !config.open_link;
-    delay = std::min(delay * 2, tcp ? std::min(config.max_backoff, kMaxTcpBackoff) : config.max_backoff);
+    plan.waited();
   }
   if (link_.attached() && !stopping_) {
     if (link_.device_scanning()) {  // leave the lidar stopped, as we found it

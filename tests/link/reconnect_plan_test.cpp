@@ -1,0 +1,59 @@
+// ReconnectPlan: the waits between reopen attempts, and what is watched meanwhile.
+#include "core/link/reconnect_plan.h"
+
+#include <gtest/gtest.h>
+
+namespace ydscope {
+namespace {
+
+using namespace std::chrono_literals;
+
+SessionConfig config_for(const std::string& address) {
+  SessionConfig config;
+  config.address = address;
+  config.first_backoff = 250ms;
+  config.max_backoff = 4000ms;
+  return config;
+}
+
+std::vector<long> delays(ReconnectPlan& plan, int count) {
+  std::vector<long> seen;
+  for (int i = 0; i < count; ++i, plan.waited()) seen.push_back(static_cast<long>(plan.delay().count()));
+  return seen;
+}
+
+TEST(ReconnectPlan, ASerialPortIsWatchedAndItsWaitDoublesUpToTheMaximum) {
+  ReconnectPlan plan(config_for("/dev/ttyUSB0"));
+  ASSERT_TRUE(plan.watched_path());
+  EXPECT_EQ(*plan.watched_path(), "/dev/ttyUSB0");
+  EXPECT_EQ(delays(plan, 7), (std::vector<long>{250, 500, 1000, 2000, 4000, 4000, 4000}));
+  EXPECT_EQ(plan.retry_text(true), "; retrying when /dev/ttyUSB0 comes back, or in 4 s");
+  EXPECT_EQ(plan.retry_text(false), "; retrying in 4 s");  // the watch could not be armed
+}
+
+TEST(ReconnectPlan, ATcpBridgeIsNotWatchedAndWaitsUnderASecond) {
+  ReconnectPlan plan(config_for("tcp://192.168.1.20:2000"));
+  EXPECT_FALSE(plan.watched_path());
+  EXPECT_EQ(delays(plan, 4), (std::vector<long>{250, 500, 750, 750}));
+  EXPECT_EQ(plan.retry_text(true), "; retrying in 0.75 s");
+}
+
+TEST(ReconnectPlan, AGoodStartBeginsTheWaitsAgain) {
+  ReconnectPlan plan(config_for("/dev/ttyUSB0"));
+  delays(plan, 5);
+  plan.started();
+  EXPECT_EQ(plan.delay(), 250ms);
+}
+
+TEST(ReconnectPlan, ALinkOpenedByItsOwnOpenerIsNeitherWatchedNorCapped) {
+  SessionConfig config = config_for("/dev/ttyUSB0");
+  config.open_link = [](boost::asio::io_context&, std::uint32_t, std::string&) -> std::unique_ptr<ByteLink> {
+    return nullptr;
+  };
+  ReconnectPlan plan(config);
+  EXPECT_FALSE(plan.watched_path());
+  EXPECT_EQ(delays(plan, 6).back(), 4000);
+}
+
+}  // namespace
+}  // namespace ydscope
