@@ -16,7 +16,8 @@
 #include <string>
 #include <thread>
 
-#include "tests/bench/process_probe.h"
+#include "bench_options.h"
+#include "process_probe.h"
 
 namespace fs = std::filesystem;
 using namespace ydscope::bench;
@@ -33,12 +34,10 @@ constexpr long kFlatKib = 2048;
 int main(int argc, char** argv) {
   double minutes = 10;
   int every_s = 30;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--minutes") == 0)
-      minutes = std::atof(argv[i + 1]);
-    else if (std::strcmp(argv[i], "--every") == 0)
-      every_s = std::max(1, std::atoi(argv[i + 1]));
-  }
+  BenchOptions options("bench_app_soak", "the app on a real-time virtual G6, its memory and CPU over minutes");
+  options.add("--minutes", minutes, "how long to run").add("--every", every_s, "seconds between lines");
+  options.parse(argc, argv);
+  if (!(minutes > 0) || every_s < 1) options.fail("needs --minutes above 0 and --every of 1 or more");
   const auto binaries = find_app_binaries("bench_app_soak");
   if (!binaries) return 1;
   const fs::path home = fs::temp_directory_path() / ("ydscope-soak-" + std::to_string(getpid()));

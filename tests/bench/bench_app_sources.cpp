@@ -5,7 +5,7 @@
 // main thread (input, the view model, the vertex build) and llvmpipe's threads (the software GL);
 // then it stops the app, which prints each source's laps (from the device, drawn, lost) and the
 // frame work. Smooth on (30 frames/s on llvmpipe) and off (a frame per lap).
-//   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_app_sources [seconds] [lidars]
+//   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_app_sources [--seconds 20] [--lidars 4]
 // Not a Google Benchmark: it measures other processes, so it has its own main.
 #include <unistd.h>
 
@@ -18,7 +18,8 @@
 #include <thread>
 #include <vector>
 
-#include "tests/bench/process_probe.h"
+#include "bench_options.h"
+#include "process_probe.h"
 
 namespace fs = std::filesystem;
 using namespace ydscope::bench;
@@ -33,10 +34,14 @@ double share(long ticks, double seconds) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int seconds = argc > 1 ? std::atoi(argv[1]) : 20;
-  const int lidars = argc > 2 ? std::atoi(argv[2]) : 4;
+  int seconds = 20;
+  int lidars = 4;
+  BenchOptions options("bench_app_sources", "several virtual G6 into one app: CPU by thread and lost laps");
+  options.add("--seconds", seconds, "how long to measure, after 5 s").add("--lidars", lidars, "virtual G6 lidars");
+  options.parse(argc, argv);
+  if (seconds < 1 || lidars < 1) options.fail("needs --seconds and --lidars of 1 or more");
   const auto binaries = find_app_binaries("bench_app_sources");
-  if (!binaries || lidars < 1) return 1;
+  if (!binaries) return 1;
   const fs::path home = fs::temp_directory_path() / ("ydscope-sources-" + std::to_string(getpid()));
   fs::create_directories(home / "ydscope");
   setenv("XDG_CONFIG_HOME", home.c_str(), 1);

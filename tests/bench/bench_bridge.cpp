@@ -11,9 +11,7 @@
 // /points, as Foxglove's 3D panel would be, on 127.0.0.1. The sim runs in its own process, so its
 // CPU is not counted. Not run by ctest. Usage:
 //   bench_bridge --cli PATH [--clients 1] [--seconds 30] [--warmup 3]
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -31,15 +29,15 @@
 #include <thread>
 #include <vector>
 
-#include "bench/process_probe.h"
+#include "bench_options.h"
+#include "process_probe.h"
 #include "bridge/ws_test_client.h"
-
-extern char** environ;
 
 namespace {
 
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;
+namespace bench = ydscope::bench;
 
 struct Args {
   std::string cli;
@@ -47,38 +45,6 @@ struct Args {
   double seconds = 30;
   double warmup = 3;
 };
-
-pid_t spawn(const std::vector<std::string>& argv, int stdout_fd = -1) {
-  std::vector<char*> raw;
-  for (const auto& a : argv) raw.push_back(const_cast<char*>(a.c_str()));
-  raw.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  if (stdout_fd >= 0) posix_spawn_file_actions_adddup2(&actions, stdout_fd, STDOUT_FILENO);
-  pid_t pid = -1;
-  const int rc = posix_spawn(&pid, raw[0], &actions, nullptr, raw.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return rc == 0 ? pid : -1;
-}
-
-void stop(pid_t pid) {
-  if (pid <= 0) return;
-  kill(pid, SIGTERM);
-  int status = 0;
-  waitpid(pid, &status, 0);
-}
-
-// utime + stime of a process, in seconds.
-double cpu_seconds(pid_t pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::istringstream fields(stat.substr(stat.rfind(')') + 2));
-  std::string skip;
-  for (int i = 3; i < 14; ++i) fields >> skip;  // fields 3..13
-  unsigned long long utime = 0, stime = 0;
-  fields >> utime >> stime;
-  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
-}
 
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0;
@@ -91,37 +57,30 @@ double percentile(std::vector<double> values, double p) {
 
 int main(int argc, char** argv) {
   Args args;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--cli")
-      args.cli = argv[i + 1];
-    else if (key == "--clients")
-      args.clients = std::atoi(argv[i + 1]);
-    else if (key == "--seconds")
-      args.seconds = std::atof(argv[i + 1]);
-    else if (key == "--warmup")
-      args.warmup = std::atof(argv[i + 1]);
-  }
-  if (args.cli.empty()) {
-    std::fprintf(stderr, "usage: bench_bridge --cli PATH [--clients 1] [--seconds 30] [--warmup 3]\n");
-    return 2;
-  }
+  bench::BenchOptions options("bench_bridge", "one virtual lidar through `serve` to Foxglove clients");
+  options.add("--cli", args.cli, "path of ydscope-cli")
+      .add("--clients", args.clients, "Foxglove clients subscribed to every topic")
+      .add("--seconds", args.seconds, "how long to measure")
+      .add("--warmup", args.warmup, "seconds before measuring");
+  options.parse(argc, argv);
+  if (args.cli.empty()) options.fail("needs --cli PATH/ydscope-cli");
+  if (args.clients < 0 || !(args.seconds > 0) || args.warmup < 0)
+    options.fail("needs --clients of 0 or more, --seconds above 0 and --warmup of 0 or more");
 
   const fs::path dir = fs::temp_directory_path() / ("bench_bridge." + std::to_string(getpid()));
   fs::create_directories(dir);
   const std::string link = (dir / "lidar").string();
   const std::string zero_log = (dir / "zero.log").string();
-  const int quiet = open("/dev/null", O_WRONLY);  // the sim's "ready" line
-  const pid_t sim = spawn({args.cli, "sim", "--model", "G6", "--pty", link, "--zero-log", zero_log}, quiet);
-  close(quiet);
+  const pid_t sim = bench::spawn({args.cli, "sim", "--model", "G6", "--pty", link, "--zero-log", zero_log},
+                                 /*quiet=*/true);  // its "ready" line
   for (int i = 0; i < 100 && !fs::exists(link); ++i) std::this_thread::sleep_for(50ms);
   int pipe_fds[2];
   if (sim <= 0 || !fs::exists(link) || pipe(pipe_fds) != 0) {
     std::fprintf(stderr, "bench_bridge: the virtual lidar did not start\n");
-    stop(sim);
+    bench::stop(sim);
     return 1;
   }
-  const pid_t serve = spawn({args.cli, "serve", "--port", link, "--listen", "127.0.0.1:0"}, pipe_fds[1]);
+  const pid_t serve = bench::spawn({args.cli, "serve", "--port", link, "--listen", "127.0.0.1:0"}, false, pipe_fds[1]);
   close(pipe_fds[1]);
   std::string banner;
   char c = 0;
@@ -129,8 +88,8 @@ int main(int argc, char** argv) {
   unsigned port = 0;
   if (serve <= 0 || std::sscanf(banner.c_str(), "serving ws://127.0.0.1:%u", &port) != 1) {
     std::fprintf(stderr, "bench_bridge: serve did not start (it said '%s')\n", banner.c_str());
-    stop(serve);
-    stop(sim);
+    bench::stop(serve);
+    bench::stop(sim);
     return 1;
   }
 
@@ -162,19 +121,19 @@ int main(int argc, char** argv) {
   }
 
   std::this_thread::sleep_for(std::chrono::duration<double>(args.warmup));
-  const double cpu0 = cpu_seconds(serve);
+  const double cpu0 = bench::cpu_seconds(serve);
   const auto wall0 = std::chrono::steady_clock::now();
   const std::int64_t mono0 = ydscope::bench::monotonic_now_ns();
   measuring.store(true);
   std::this_thread::sleep_for(std::chrono::duration<double>(args.seconds));
   measuring.store(false);
   const std::int64_t mono1 = ydscope::bench::monotonic_now_ns();
-  const double cpu1 = cpu_seconds(serve);
+  const double cpu1 = bench::cpu_seconds(serve);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   done.store(true);
   for (auto& t : clients) t.join();
-  stop(serve);
-  stop(sim);
+  bench::stop(serve);
+  bench::stop(sim);
   close(pipe_fds[0]);
 
   std::vector<std::int64_t> zeros;

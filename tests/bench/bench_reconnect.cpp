@@ -23,8 +23,10 @@
 #include <thread>
 #include <vector>
 
+#include "bench_options.h"
 #include "core/link/session.h"
 #include "core/link/session_io.h"
+#include "process_probe.h"
 
 using namespace ydscope;
 using namespace std::chrono_literals;
@@ -40,26 +42,16 @@ struct Args {
 
 Args parse(int argc, char** argv) {
   Args args;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--cli")
-      args.cli = argv[i + 1];
-    else if (key == "--rounds")
-      args.rounds = std::atoi(argv[i + 1]);
-    else if (key == "--outage")
-      args.outage_s = std::atof(argv[i + 1]);
-    else if (key == "--model")
-      args.model = argv[i + 1];
-  }
+  bench::BenchOptions options("bench_reconnect", "how fast a session scans again after its port comes back");
+  options.add("--cli", args.cli, "path of ydscope-cli, whose virtual lidar is killed and restarted")
+      .add("--rounds", args.rounds, "outages to measure")
+      .add("--outage", args.outage_s, "seconds each outage lasts")
+      .add("--model", args.model, "G1, G6 or a TG model");
+  options.parse(argc, argv);
+  if (args.cli.empty()) options.fail("needs --cli PATH/ydscope-cli");
+  if (!find_profile(args.model)) options.fail("does not know the model '" + args.model + "'");
+  if (args.rounds < 1 || !(args.outage_s > 0)) options.fail("needs --rounds of 1 or more and --outage above 0");
   return args;
-}
-
-std::int64_t thread_cpu_ns(pthread_t thread) {
-  clockid_t clock;
-  if (pthread_getcpuclockid(thread, &clock) != 0) return -1;
-  timespec ts{};
-  clock_gettime(clock, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
 }
 
 // Starts the virtual lidar and returns once it printed "ready" (its pid; -1 on failure).
@@ -97,10 +89,6 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
   const ModelProfile* profile = find_profile(args.model);
-  if (args.cli.empty() || !profile) {
-    std::fprintf(stderr, "usage: bench_reconnect --cli PATH/ydscope-cli [--rounds N] [--outage S] [--model M]\n");
-    return 2;
-  }
   std::string dir = (std::filesystem::temp_directory_path() / "ydscope-reconnect-XXXXXX").string();
   if (!mkdtemp(dir.data())) return 1;
   const std::string link = dir + "/lidar";
@@ -144,10 +132,10 @@ int main(int argc, char** argv) {
     kill(sim, SIGKILL);
     waitpid(sim, nullptr, 0);
     session.wait_until([](const SessionSnapshot& s) { return s.state != LinkState::Scanning; }, 10s);
-    const std::int64_t cpu0 = thread_cpu_ns(io_thread);
+    const std::int64_t cpu0 = bench::thread_cpu_ns(io_thread);
     const std::int64_t wall0 = link_clock_ns();
     std::this_thread::sleep_for(std::chrono::duration<double>(args.outage_s));
-    const std::int64_t cpu1 = thread_cpu_ns(io_thread);
+    const std::int64_t cpu1 = bench::thread_cpu_ns(io_thread);
     const std::int64_t wall1 = link_clock_ns();
     sim = start_sim(args, link);
     if (sim < 0) return 1;

@@ -21,7 +21,8 @@
 #include <thread>
 #include <vector>
 
-#include "bench/process_probe.h"
+#include "bench_options.h"
+#include "process_probe.h"
 #include "bridge/ws_test_client.h"
 
 namespace {
@@ -60,21 +61,15 @@ unsigned read_serving_port(int fd) {
 
 int main(int argc, char** argv) {
   Args args;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--cli")
-      args.cli = argv[i + 1];
-    else if (key == "--lidars")
-      args.lidars = std::atoi(argv[i + 1]);
-    else if (key == "--seconds")
-      args.seconds = std::atof(argv[i + 1]);
-    else if (key == "--warmup")
-      args.warmup = std::atof(argv[i + 1]);
-  }
-  if (args.cli.empty() || args.lidars < 1 || args.lidars > 32) {
-    std::fprintf(stderr, "usage: bench_serve_sources --cli PATH [--lidars 1..32] [--seconds 30] [--warmup 3]\n");
-    return 2;
-  }
+  bench::BenchOptions options("bench_serve_sources", "several virtual lidars into one `serve`, and a Foxglove client");
+  options.add("--cli", args.cli, "path of ydscope-cli")
+      .add("--lidars", args.lidars, "virtual G6 lidars, 1 to 32")
+      .add("--seconds", args.seconds, "how long to measure")
+      .add("--warmup", args.warmup, "seconds before measuring");
+  options.parse(argc, argv);
+  if (args.cli.empty()) options.fail("needs --cli PATH/ydscope-cli");
+  if (args.lidars < 1 || args.lidars > 32) options.fail("takes --lidars from 1 to 32");
+  if (!(args.seconds > 0) || args.warmup < 0) options.fail("needs --seconds above 0 and --warmup of 0 or more");
 
   const fs::path dir = fs::temp_directory_path() / ("bench_serve_sources." + std::to_string(getpid()));
   fs::create_directories(dir);

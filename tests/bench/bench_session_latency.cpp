@@ -24,8 +24,10 @@
 #include <thread>
 #include <vector>
 
+#include "bench_options.h"
 #include "core/link/session.h"
 #include "core/link/session_io.h"
+#include "process_probe.h"
 #include "core/sim/sim_server.h"
 
 using namespace ydscope;
@@ -43,24 +45,14 @@ struct Args {
 
 Args parse(int argc, char** argv) {
   Args args;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--seconds")
-      args.seconds = std::atof(argv[i + 1]);
-    else if (key == "--model")
-      args.model = argv[i + 1];
-    else if (key == "--cli")
-      args.cli = argv[i + 1];
-  }
+  bench::BenchOptions options("bench_session_latency", "the I/O thread's CPU and the lap latency on a live stream");
+  options.add("--seconds", args.seconds, "how long to measure")
+      .add("--model", args.model, "G1, G6 or a TG model")
+      .add("--cli", args.cli, "path of ydscope-cli, to measure `scan`'s peak memory too");
+  options.parse(argc, argv);
+  if (!(args.seconds > 0)) options.fail("needs --seconds above 0");
+  if (!find_profile(args.model)) options.fail("does not know the model '" + args.model + "'");
   return args;
-}
-
-std::int64_t thread_cpu_ns(pthread_t thread) {
-  clockid_t clock;
-  if (pthread_getcpuclockid(thread, &clock) != 0) return -1;
-  timespec ts{};
-  clock_gettime(clock, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
 }
 
 double percentile(std::vector<double> values, double p) {
@@ -93,10 +85,6 @@ long cli_scan_max_rss_kib(const std::string& cli, const std::string& port, const
 int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
   const ModelProfile* profile = find_profile(args.model);
-  if (!profile) {
-    std::fprintf(stderr, "unknown model %s\n", args.model.c_str());
-    return 2;
-  }
   std::string dir = (std::filesystem::temp_directory_path() / "ydscope-bench-XXXXXX").string();
   if (!mkdtemp(dir.data())) return 1;
   const std::string port = dir + "/lidar";
@@ -163,10 +151,10 @@ int main(int argc, char** argv) {
     while (!have_thread.load(std::memory_order_acquire)) std::this_thread::sleep_for(1ms);
     std::this_thread::sleep_for(1s);  // past start-up
     const std::uint64_t reads0 = session.snapshot().counters.reads;
-    const std::int64_t cpu0 = thread_cpu_ns(io_thread);
+    const std::int64_t cpu0 = bench::thread_cpu_ns(io_thread);
     const std::int64_t wall0 = link_clock_ns();
     std::this_thread::sleep_for(std::chrono::duration<double>(args.seconds));
-    const std::int64_t cpu1 = thread_cpu_ns(io_thread);
+    const std::int64_t cpu1 = bench::thread_cpu_ns(io_thread);
     const std::int64_t wall1 = link_clock_ns();
     cpu_seconds = static_cast<double>(cpu1 - cpu0) * 1e-9;
     reads_in_window = session.snapshot().counters.reads - reads0;

@@ -3,12 +3,13 @@
 // then the device bytes in 5 ms reads. The input for timing `ydscope-cli export --mcap` on an
 // hour of G6 (README, "MCAP and the Foxglove bridge"); the file is large, keep it out of the repo.
 // Not a Google Benchmark and not run by ctest. Usage:
-//   bench_sim_recording OUT.ydrec [--minutes 60] [--model G6] [--scene demo]
+//   bench_sim_recording --out OUT.ydrec [--minutes 60] [--model G6] [--scene demo]
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
 #include "core/protocol/model_profile.h"
 #include "core/record/recording_writer.h"
 #include "core/sim/virtual_lidar.h"
@@ -16,30 +17,22 @@
 using namespace ydscope;
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argv[1][0] == '-') {
-    std::fprintf(stderr, "usage: bench_sim_recording OUT.ydrec [--minutes 60] [--model G6] [--scene demo]\n");
-    return 2;
-  }
-  const std::string out = argv[1];
+  std::string out;
   double minutes = 60;
+  std::string model = "G6";
   VirtualLidarConfig config;
-  config.model = Model::G6;
-  for (int i = 2; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--minutes")
-      minutes = std::atof(argv[i + 1]);
-    else if (key == "--scene")
-      config.scene = argv[i + 1];
-    else if (key == "--model") {
-      const ModelProfile* profile = find_profile(argv[i + 1]);
-      if (!profile) {
-        std::fprintf(stderr, "bench_sim_recording: unknown model '%s' (%s)\n", argv[i + 1],
-                     std::string(model_names()).c_str());
-        return 2;
-      }
-      config.model = profile->model;
-    }
-  }
+  bench::BenchOptions options("bench_sim_recording",
+                              "a long recording of the virtual lidar, made faster than real time");
+  options.add("--out", out, "the .ydrec file to write")
+      .add("--minutes", minutes, "device minutes to record")
+      .add("--model", model, "G1, G6 or a TG model")
+      .add("--scene", config.scene, "the virtual lidar's scene");
+  options.parse(argc, argv);
+  if (out.empty()) options.fail("needs --out FILE.ydrec");
+  if (!(minutes > 0)) options.fail("needs --minutes above 0");
+  const ModelProfile* chosen = find_profile(model);
+  if (!chosen) options.fail("does not know the model '" + model + "' (" + std::string(model_names()) + ")");
+  config.model = chosen->model;
 
   VirtualLidar lidar(config);
   const ModelProfile& profile = profile_for(config.model);

@@ -1,6 +1,7 @@
 #pragma once
-// Another process as `top` sees it, for the benchmarks that measure the real app from outside:
+// Another process (or thread) as `top` sees it, for the benchmarks that measure from outside:
 // start it, read its CPU time and resident memory from /proc, stop it as a service manager would.
+#include <pthread.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -24,6 +25,15 @@ namespace ydscope::bench {
 inline std::int64_t monotonic_now_ns() {
   timespec ts{};
   clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+// A thread's own CPU time in ns (its thread CPU clock); -1 when it cannot be read.
+inline std::int64_t thread_cpu_ns(pthread_t thread) {
+  clockid_t clock;
+  if (pthread_getcpuclockid(thread, &clock) != 0) return -1;
+  timespec ts{};
+  clock_gettime(clock, &ts);
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
 }
 
@@ -64,6 +74,11 @@ inline long stat_ticks(const std::filesystem::path& stat_file) {
 
 // utime + stime in clock ticks; -1 when the process is gone.
 inline long cpu_ticks(pid_t pid) { return stat_ticks("/proc/" + std::to_string(pid) + "/stat"); }
+
+// utime + stime in seconds; negative when the process is gone.
+inline double cpu_seconds(pid_t pid) {
+  return static_cast<double>(cpu_ticks(pid)) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
 
 // utime + stime of the process's threads whose name (comm) starts with `prefix`, summed.
 inline long thread_ticks(pid_t pid, const std::string& prefix) {
