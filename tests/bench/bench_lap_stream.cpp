@@ -11,12 +11,12 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "bench_options.h"
 #include "core/allocation_counter.h"
 #include "core/stream/lap_stream.h"
 
@@ -122,18 +122,10 @@ void run(double laps_per_s, int consumers, double seconds) {
 
 int main(int argc, char** argv) {
   double seconds = 3;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
-      seconds = std::atof(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: bench_lap_stream [--seconds S]\n");
-      return 2;
-    }
-  }
-  if (!(seconds > 0 && seconds <= 3600)) {
-    std::fprintf(stderr, "bench_lap_stream: --seconds takes a number of seconds from 0 to 3600.\n");
-    return 2;
-  }
+  ydscope::bench::BenchOptions options("bench_lap_stream", "one producer, 1, 3 and 8 consumers, one of them slow");
+  options.add("--seconds", seconds, "how long each case runs");
+  options.parse(argc, argv);
+  if (!(seconds > 0 && seconds <= 3600)) options.fail("takes --seconds from 0 to 3600");
   for (const double rate : {10.0, 1000.0})
     for (const int consumers : {1, 3, 8}) run(rate, consumers, seconds);
   return 0;
