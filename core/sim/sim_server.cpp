@@ -8,12 +8,12 @@
 #include <cerrno>
 #include <condition_variable>
 #include <cstdio>
-#include <cstring>
 #include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 
+#include "core/sim/line_writer.h"
 #include "core/sim/pty_endpoint.h"
 #include "core/sim/tcp_endpoint.h"
 
@@ -88,9 +88,7 @@ class SimServer::Impl {
   }
   std::int64_t unplug_at = kNever;
   std::int64_t replug_at = kNever;
-  std::FILE* zero_log = nullptr;
-  std::uint64_t zero_index = 0;
-  std::uint64_t last_overrun_lap = 0;  // the last lap that lost bytes, as its index + 1 (0: none)
+  LineWriter line_out{options.on_zero_packet_written};
 };
 
 void SimServer::Impl::unplug_locked(std::int64_t now) {
@@ -155,53 +153,12 @@ void SimServer::Impl::handle_requests_locked(std::int64_t now) {
 
 void SimServer::Impl::write_out(const std::vector<std::uint8_t>& out, const std::vector<std::size_t>& zero_ends,
                                 const std::vector<std::size_t>* piece_ends) {
-  // Written in pieces that end at each zero packet's last byte, so its time stamp is taken just
-  // after the write that completed it, and at each write the delivery model makes.
-  std::size_t pos = 0;
-  std::size_t written = 0;
-  std::size_t zeros = 0;
-  std::size_t laps_overrun = 0;
-  const auto write_piece = [&](std::size_t end) {
-    const std::span<const std::uint8_t> piece(out.data() + pos, end - pos);
-    const std::size_t sent = endpoint ? endpoint->send(piece) : 0;
-    written += sent;
-    pos = end;
-    // A zero packet cut short is not counted as written, so its lap runs on to the next one.
-    if (sent < piece.size() && zero_index > 0 && last_overrun_lap != zero_index) {
-      last_overrun_lap = zero_index;
-      ++laps_overrun;
-    }
-    return sent == piece.size();
-  };
-  std::size_t next_zero = 0;
-  std::size_t next_piece = 0;
-  const std::size_t pieces = piece_ends ? piece_ends->size() : 0;
-  while (next_zero < zero_ends.size() || next_piece < pieces) {
-    const std::size_t zero_end = next_zero < zero_ends.size() ? zero_ends[next_zero] : out.size() + 1;
-    const std::size_t piece_end = next_piece < pieces ? (*piece_ends)[next_piece] : out.size() + 1;
-    const std::size_t end = std::min(zero_end, piece_end);
-    if (piece_end == end) ++next_piece;
-    if (zero_end != end) {
-      if (end > pos) write_piece(end);
-      continue;
-    }
-    ++next_zero;
-    if (!write_piece(end)) continue;
-    const std::int64_t stamp = monotonic_ns();
-    const std::uint64_t index = zero_index++;
-    ++zeros;
-    if (options.on_zero_packet_written) options.on_zero_packet_written(stamp, index);
-    if (zero_log) {
-      std::fprintf(zero_log, "%llu %lld\n", static_cast<unsigned long long>(index), static_cast<long long>(stamp));
-      std::fflush(zero_log);
-    }
-  }
-  if (pos < out.size()) write_piece(out.size());
+  const LineWriter::Totals totals = line_out.write(endpoint.get(), out, zero_ends, piece_ends);
   std::lock_guard lock(mu);
-  counters.bytes_written += written;
-  counters.bytes_unheard += out.size() - written;
-  counters.zero_packets_written += zeros;
-  counters.laps_overrun += laps_overrun;
+  counters.bytes_written += totals.written;
+  counters.bytes_unheard += totals.unheard;
+  counters.zero_packets_written += totals.zero_packets;
+  counters.laps_overrun += totals.laps_overrun;
 }
 
 void SimServer::Impl::shape(std::int64_t now, const std::vector<std::uint8_t>& out,
@@ -296,17 +253,11 @@ void SimServer::start() {
                                                 s.options.device.seed, s.started_ns);
   s.shaped_zero_ends.clear();
   s.shaped_in = s.shaped_out = 0;
-  if (!s.options.zero_packet_log.empty()) {
-    s.zero_log = std::fopen(s.options.zero_packet_log.c_str(), "w");
-    if (!s.zero_log)
-      throw std::runtime_error("could not open the zero-packet log " + s.options.zero_packet_log + ": " +
-                               std::strerror(errno));
-  }
+  if (!s.options.zero_packet_log.empty()) s.line_out.open_zero_log(s.options.zero_packet_log);
   try {
     s.replug_locked(s.started_ns);
   } catch (...) {
-    if (s.zero_log) std::fclose(s.zero_log);
-    s.zero_log = nullptr;
+    s.line_out.close_zero_log();
     throw;
   }
   s.wake_fd = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
@@ -331,8 +282,7 @@ void SimServer::stop() {
   s.device_path.clear();
   if (s.wake_fd >= 0) ::close(s.wake_fd);
   s.wake_fd = -1;
-  if (s.zero_log) std::fclose(s.zero_log);
-  s.zero_log = nullptr;
+  s.line_out.close_zero_log();
   s.running = false;
   s.cv.notify_all();
 }
