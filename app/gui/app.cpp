@@ -75,8 +75,8 @@ App::~App() {
   remove_key_callback();
   if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
   // Files get their summaries and the clients a closed server before the source goes.
-  stop_recording();
-  stop_share();
+  outputs_.stop_recording(sel());
+  outputs_.stop_share(sel());
   for (auto& slot : sources_) slot->source.stop();
   remember_looks();
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
@@ -87,7 +87,6 @@ App::~App() {
 
 std::string App::start_source() {
   if (options_.share) model().requests.push_back(ui::SetShare{true});  // carried out after the first frame
-  record_from_start_ = !options_.record.empty();
   if (!options_.sources.empty()) return start_several();
   if (options_.source == SourceKind::Auto) {
     // The last run had several lidars: the same ones again, as they were placed.
@@ -314,7 +313,7 @@ void App::frame() {
   ImGui::Render();
   drew_ = render_if_changed(fb_scale, fb_w, fb_h);
   carry_out_requests(fb_w, fb_h);
-  follow_share_and_recording();
+  outputs_.follow(sel());
 }
 
 bool App::render_if_changed(float fb_scale, int fb_w, int fb_h) {

@@ -11,9 +11,8 @@
 
 #include "app/gui/app_options.h"
 #include "app/gui/lidar_source.h"
+#include "app/gui/source_outputs.h"
 #include "app/gui/source_slot.h"
-#include "core/bridge/live_topics.h"
-#include "core/bridge/session_share.h"
 #include "core/link/session.h"
 #include "ui/panels/ui_model.h"
 #include "ui/render/polar_view.h"
@@ -134,17 +133,6 @@ class App {
   void carry_out(const ui::UiRequest& request, int framebuffer_width, int framebuffer_height);
   // The replay's position for its panel, while a replay is the source.
   void follow_replay();
-  // Out of the app, live (app_share.cpp): Share serves the source to Foxglove and follows a new
-  // one; a recording writes .ydrec (the session), MCAP (LiveTopics), or both.
-  void start_share();
-  void stop_share();
-  void start_recording(const ui::StartRecording& request);
-  void stop_recording(const std::string& why = {});
-  // Each frame: the share's address and clients, the MCAP recording's size, and a share that
-  // waits for the new source to be up before serving it.
-  void follow_share_and_recording();
-  // A new source (or none) is about to start: the old one's recordings end, the share waits.
-  void leave_source();
   void export_shown_laps_mcap();
   // "lap 12" or "8 laps (5 to 12)", and " as frozen" while frozen: what an export of the shown laps holds.
   std::string shown_laps_words(std::size_t laps) const;
@@ -178,6 +166,7 @@ class App {
   std::vector<KeyPress> key_presses_;  // since the last frame, in order
   void (*imgui_key_callback_)(GLFWwindow*, int, int, int, int) = nullptr;
   AppOptions options_;
+  SourceOutputs outputs_{options_.share_port, options_.record};  // Share and the Record tab, of the selected source
   bool persist_;
   std::string settings_path_;
   std::string imgui_ini_path_;
@@ -200,12 +189,8 @@ class App {
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
   std::optional<std::chrono::steady_clock::time_point> last_present_;
   bool drew_ = false;
-  std::uint64_t drawn_signature_ = 0;                   // draw_signature of the last frame rendered
-  bool window_damaged_ = true;                          // the window system asks for the picture again
-  std::unique_ptr<SessionShare> share_;                 // while Share is on
-  std::unique_ptr<LiveTopics> mcap_recording_;          // while an MCAP recording runs
-  std::chrono::steady_clock::time_point share_polled_;  // clients are asked twice a second
-  bool record_from_start_ = false;                      // --record, until the source connects
+  std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
+  bool window_damaged_ = true;         // the window system asks for the picture again
   bool quit_ = false;
   bool fullscreen_ = false;
   int windowed_[4] = {100, 100, 1280, 800};

@@ -24,7 +24,7 @@ void App::update_model(SourceSlot& slot) {
       slot.source.auto_probe_done();
       slot.model.banner.clear();
     } else if (slot.model.now_s > kAutoProbeSeconds) {  // only ever the lone, selected source
-      leave_source();
+      outputs_.leave_source(slot);
       start_clean();
       slot.model.banner = slot.source.fall_back_to_sim();
       slot.model.source_text = slot.source.description();

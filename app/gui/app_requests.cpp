@@ -33,13 +33,13 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         using R = std::decay_t<decltype(r)>;
         if constexpr (std::is_same_v<R, ui::ConnectRequest>) {
           if (r.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = r.address;
-          leave_source();
+          outputs_.leave_source(sel());
           source().stop();
           start_clean();
           m.banner.clear();
           start(r);
         } else if constexpr (std::is_same_v<R, ui::Disconnect>) {
-          leave_source();
+          outputs_.leave_source(sel());
           source().stop();
           start_clean();
           sel().has_source = false;
@@ -66,14 +66,14 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         } else if constexpr (std::is_same_v<R, ui::RefreshHealth>) {
           session().refresh_health(ui::track_command(m, CommandControl::Health));
         } else if constexpr (std::is_same_v<R, ui::StartRecording>) {
-          start_recording(r);
+          outputs_.start_recording(sel(), r);
         } else if constexpr (std::is_same_v<R, ui::StopRecording>) {
-          stop_recording();
+          outputs_.stop_recording(sel());
         } else if constexpr (std::is_same_v<R, ui::SetShare>) {
           if (r.on)
-            start_share();
+            outputs_.start_share(sel());
           else
-            stop_share();
+            outputs_.stop_share(sel());
         } else if constexpr (std::is_same_v<R, ui::SetDistanceScale>) {
           session().set_distance_scale(r.mm_per_count);
         } else if constexpr (std::is_same_v<R, ui::ResetView>) {

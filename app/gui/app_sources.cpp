@@ -97,8 +97,8 @@ std::string App::start_several() {
 void App::select_source(std::size_t index) {
   if (index >= sources_.size() || index == selected_) return;
   // Share and recordings follow one session; they end rather than silently follow another.
-  if (model().recording()) stop_recording(" (another source was selected)");
-  if (share_) stop_share();
+  if (model().recording()) outputs_.stop_recording(sel(), " (another source was selected)");
+  if (outputs_.sharing()) outputs_.stop_share(sel());
   selected_ = index;
   shown_banner_ = model().banner;
   sync_sectors();

@@ -1,24 +1,21 @@
-// App, getting the lidar out of the window while it runs: Share serves the current source to
-// Foxglove (the server and topics `ydscope-cli serve` uses, core/bridge/session_share.h), and the
-// Record tab writes .ydrec, MCAP or both. Both follow the source: a recording is of one source and
-// ends when it changes; the share keeps its clients and serves the new source once it is up.
+#include "app/gui/source_outputs.h"
+
 #include <cstdio>
 
-#include "app/gui/app.h"
 #include "ui/panels/panels.h"
 #include "ui/view/file_names.h"
 
 namespace ydscope::gui {
 
-void App::start_share() {
-  ui::UiModel& m = model();
+void SourceOutputs::start_share(SourceSlot& slot) {
+  ui::UiModel& m = slot.model;
   if (share_) return;
   ShareOptions options;
-  options.server.port = options_.share_port;
+  options.server.port = share_port_;
   options.server.port_option = "--share-port";
   options.server.name = "ydscope" + (m.source_text.empty() ? std::string() : " on " + m.source_text);
   std::string error;
-  share_ = SessionShare::start(session(), std::move(options), error);
+  share_ = SessionShare::start(slot.session, std::move(options), error);
   if (!share_) {
     // One sentence where the user looks; the toggle stays off.
     m.share = {};
@@ -39,23 +36,24 @@ void App::start_share() {
   std::fflush(stdout);
 }
 
-void App::stop_share() {
+void SourceOutputs::stop_share(SourceSlot& slot) {
   if (!share_) return;
   share_->stop();
   share_.reset();
-  model().share = {};
-  model().status_message = "sharing stopped";
+  slot.model.share = {};
+  slot.model.status_message = "sharing stopped";
 }
 
-void App::start_recording(const ui::StartRecording& request) {
-  ui::UiModel& m = model();
+void SourceOutputs::start_recording(SourceSlot& slot, const ui::StartRecording& request) {
+  ui::UiModel& m = slot.model;
   using ui::CommandControl;
-  if (!request.path.empty()) session().start_recording(request.path, ui::track_command(m, CommandControl::Recording));
+  if (!request.path.empty())
+    slot.session.start_recording(request.path, ui::track_command(m, CommandControl::Recording));
   if (request.mcap_path.empty()) return;
   LiveTopicsOptions options;
   options.mcap_path = request.mcap_path;
   std::string error;
-  mcap_recording_ = LiveTopics::start(session(), std::move(options), error);
+  mcap_recording_ = LiveTopics::start(slot.session, std::move(options), error);
   if (!mcap_recording_) {
     const std::uint64_t ticket = m.feedback->issued(CommandControl::Recording);
     m.feedback->finished(CommandControl::Recording, ticket, false, error);
@@ -68,10 +66,10 @@ void App::start_recording(const ui::StartRecording& request) {
   }
 }
 
-void App::stop_recording(const std::string& why) {
-  ui::UiModel& m = model();
+void SourceOutputs::stop_recording(SourceSlot& slot, const std::string& why) {
+  ui::UiModel& m = slot.model;
   using ui::CommandControl;
-  if (m.snap.recording) session().stop_recording(ui::track_command(m, CommandControl::Recording));
+  if (m.snap.recording) slot.session.stop_recording(ui::track_command(m, CommandControl::Recording));
   if (!mcap_recording_) return;
   const bool written = mcap_recording_->stop();
   const std::string said = written ? mcap_recording_->file_summary() + why : mcap_recording_->error();
@@ -82,34 +80,33 @@ void App::stop_recording(const std::string& why) {
   m.status_message = said;
 }
 
-void App::leave_source() {
-  if (model().recording()) stop_recording(" (the source changed)");
+void SourceOutputs::leave_source(SourceSlot& slot) {
+  if (slot.model.recording()) stop_recording(slot, " (the source changed)");
   if (share_) share_->topics().detach();
 }
 
-void App::follow_share_and_recording() {
-  ui::UiModel& m = model();
-  if (record_from_start_ && link_state_connected(m.snap.state)) {
+void SourceOutputs::follow(SourceSlot& slot) {
+  ui::UiModel& m = slot.model;
+  if (!record_at_start_.empty() && link_state_connected(m.snap.state)) {
     // --record: as the Record tab's Start with an empty name, once there is something to record.
-    record_from_start_ = false;
-    const auto format = options_.record == "mcap"   ? ui::RecordFormat::Mcap
-                        : options_.record == "both" ? ui::RecordFormat::Both
-                                                    : ui::RecordFormat::Ydrec;
-    edits().record_format = static_cast<int>(format);
+    const auto format = record_at_start_ == "mcap"   ? ui::RecordFormat::Mcap
+                        : record_at_start_ == "both" ? ui::RecordFormat::Both
+                                                     : ui::RecordFormat::Ydrec;
+    record_at_start_.clear();
+    slot.edits.record_format = static_cast<int>(format);
     const ui::RecordingPaths paths = ui::recording_paths(format, "");
     m.record_started_s = m.now_s;
     m.show_source_tab = static_cast<int>(ui::SourceTab::Record);
-    start_recording({paths.ydrec, paths.mcap});
+    start_recording(slot, {paths.ydrec, paths.mcap});
   }
   if (mcap_recording_) {
     m.mcap_recording.bytes = mcap_recording_->bytes_written();
     m.mcap_recording.laps = mcap_recording_->laps();
-    if (!mcap_recording_->error().empty()) stop_recording();
+    if (!mcap_recording_->error().empty()) stop_recording(slot);
   }
   if (!share_) return;
   // The new source is served once it scans, so its model and times start the new topics.
-  if (!share_->topics().attached() && sel().has_source && m.snap.state == LinkState::Scanning)
-    share_->topics().attach();
+  if (!share_->topics().attached() && slot.has_source && m.snap.state == LinkState::Scanning) share_->topics().attach();
   const auto now = std::chrono::steady_clock::now();
   if (now - share_polled_ >= std::chrono::milliseconds(500)) {
     share_polled_ = now;
