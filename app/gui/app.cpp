@@ -62,7 +62,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   if (options_.split) settings_.split_view = true;
   if (options_.fullscreen) {
     settings_.show_panels = false;
-    toggle_fullscreen();
+    booth_.toggle(settings_, sources_.size());
   }
   add_slot({});
   std::snprintf(edits().replay_text, sizeof edits().replay_text, "%s", settings_.last_replay_file.c_str());
@@ -73,7 +73,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
 
 App::~App() {
   remove_key_callback();
-  if (fullscreen_) toggle_fullscreen();  // leave the monitor before the window goes away
+  if (booth_.on()) booth_.toggle(settings_, sources_.size());  // leave the monitor before the window goes away
   // Files get their summaries and the clients a closed server before the source goes.
   outputs_.stop_recording(sel());
   outputs_.stop_share(sel());
@@ -230,43 +230,6 @@ void App::start_clean() {
   view_->invalidate();
 }
 
-void App::follow_pointer() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) pointer_moved_s_ = model().now_s;
-  const bool hide = ui::cursor_hidden(model().now_s - pointer_moved_s_, fullscreen_);
-  if (hide == cursor_hidden_) return;
-  cursor_hidden_ = hide;
-  glfwSetInputMode(window_, GLFW_CURSOR, hide ? GLFW_CURSOR_HIDDEN : GLFW_CURSOR_NORMAL);
-}
-
-void App::toggle_fullscreen() {
-  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
-  if (!fullscreen_) {
-    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
-    if (!mode) return;
-    glfwGetWindowPos(window_, &windowed_[0], &windowed_[1]);
-    glfwGetWindowSize(window_, &windowed_[2], &windowed_[3]);
-    glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
-    fullscreen_ = true;
-    settings_.show_panels = false;
-    // The booth view shows who walks past: motion colours, back to the user's mode on leaving;
-    // several lidars keep their own colours, or they could not be told apart.
-    windowed_colour_mode_ = settings_.colours.mode;
-    if (sources_.size() < 2) settings_.colours.mode = ui::ColourMode::Motion;
-    windowed_persistence_ = settings_.persistence_laps;  // long enough for trails to read as motion
-    settings_.persistence_laps = ui::booth_persistence(settings_.persistence_laps);
-  } else {
-    glfwSetWindowMonitor(window_, nullptr, windowed_[0], windowed_[1], windowed_[2], windowed_[3], 0);
-    fullscreen_ = false;
-    settings_.show_panels = true;
-    if (windowed_colour_mode_ && settings_.colours.mode == ui::ColourMode::Motion)
-      settings_.colours.mode = *windowed_colour_mode_;
-    windowed_colour_mode_.reset();
-    if (windowed_persistence_) settings_.persistence_laps = *windowed_persistence_;
-    windowed_persistence_.reset();
-  }
-}
-
 void App::frame() {
   last_frame_ = std::chrono::steady_clock::now();
 
@@ -283,7 +246,8 @@ void App::frame() {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   handle_keys();
-  follow_pointer();
+  const ImGuiIO& io = ImGui::GetIO();
+  booth_.follow_pointer(model().now_s, io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f);
 
   int win_w = 0, win_h = 0, fb_w = 0, fb_h = 0;
   glfwGetWindowSize(window_, &win_w, &win_h);
@@ -302,7 +266,7 @@ void App::frame() {
   else
     lay_out_common_view(sidebar, view_w, static_cast<float>(win_h));
   ui::draw_view_header(model(), sidebar, view_w);
-  model().booth = fullscreen_;
+  model().booth = booth_.on();
   if (model().booth) {
     model().legend = ui::describe_legend(view_->colours_in_use(), settings_.persistence_laps);
     // By source, the legend in large type names each lidar and its state (only the app knows them).

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/gui/app_options.h"
+#include "app/gui/booth_window.h"
 #include "app/gui/lidar_source.h"
 #include "app/gui/source_outputs.h"
 #include "app/gui/source_slot.h"
@@ -54,7 +55,7 @@ class App {
   // the display's rate.
   bool animating() const {
     return fading_source() != nullptr ||
-           ui::banner_fading(model().now_s - model().banner_since_s, fullscreen_ && !model().banner.empty());
+           ui::banner_fading(model().now_s - model().banner_since_s, booth_.on() && !model().banner.empty());
   }
   const std::string& last_error() const { return model().status_message; }
   bool quit_requested() const { return quit_; }
@@ -136,12 +137,9 @@ class App {
   void export_shown_laps_mcap();
   // "lap 12" or "8 laps (5 to 12)", and " as frozen" while frozen: what an export of the shown laps holds.
   std::string shown_laps_words(std::size_t laps) const;
-  void toggle_fullscreen();
   double seconds_since_start(std::chrono::steady_clock::time_point t) const {
     return std::chrono::duration<double>(t - start_).count();
   }
-  // The booth view hides the pointer once it rests; any move brings it back.
-  void follow_pointer();
   // A new source or a Disconnect: everything measured from the old one goes.
   void start_clean();
   // Starts `request` (after start_clean) and puts the outcome where the user looks: the overlay,
@@ -159,6 +157,7 @@ class App {
   void sync_sectors();
 
   GLFWwindow* window_;
+  BoothWindow booth_{window_};  // F11: the full-screen booth view
   struct KeyPress {
     int key;
     int mods;
@@ -178,11 +177,7 @@ class App {
   std::vector<ui::SourceMark> marks_;
   std::vector<std::pair<Pose, bool>> drawn_layers_key_;  // pose and dimming the cloud was built with
   float shown_phase_ = 0.0f;                             // the phase the cloud was last drawn at (held while frozen)
-  std::optional<ui::ColourMode> windowed_colour_mode_;   // restored on leaving the booth view
-  std::optional<int> windowed_persistence_;              // likewise
   std::string shown_banner_;                             // the banner whose age model() holds
-  double pointer_moved_s_ = 0.0;                         // the booth view hides a resting pointer
-  bool cursor_hidden_ = false;
   std::unique_ptr<ui::PolarView> view_;
   std::vector<std::unique_ptr<ui::PolarView>> tiles_;  // the split view's, one per source shown
   std::chrono::steady_clock::time_point start_;
@@ -192,8 +187,6 @@ class App {
   std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
   bool window_damaged_ = true;         // the window system asks for the picture again
   bool quit_ = false;
-  bool fullscreen_ = false;
-  int windowed_[4] = {100, 100, 1280, 800};
 };
 
 }  // namespace ydscope::gui

@@ -38,7 +38,7 @@ void App::handle_keys() {
   for (const KeyPress& press : presses) {
     const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
     switch (press.key) {
-      case GLFW_KEY_F11: toggle_fullscreen(); break;
+      case GLFW_KEY_F11: booth_.toggle(settings_, sources_.size()); break;
       case GLFW_KEY_TAB: settings_.show_panels = !settings_.show_panels; break;
       case GLFW_KEY_R: model().requests.push_back(ui::ResetView{}); break;
       case GLFW_KEY_A: settings_.auto_range = true; break;

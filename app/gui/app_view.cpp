@@ -46,7 +46,7 @@ void App::lay_out_common_view(float left, float width, float height) {
   static const ui::LapHistory no_laps;
   view_->lay_out(several ? no_laps : history(), settings_);
   // Each source's state in its own line; the booth view's large legend says it there instead.
-  if (several && !(fullscreen_ && settings_.colours.mode == ui::ColourMode::Source))
+  if (several && !(booth_.on() && settings_.colours.mode == ui::ColourMode::Source))
     ui::draw_source_legend(model(), left, width);
   else
     ui::draw_view_overlay(model(), left, width, height);
