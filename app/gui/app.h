@@ -151,8 +151,6 @@ class App {
   // Shift+drag on the view, kept in settings.ini.
   void restore_sectors();
   void unwatch_sector(std::size_t index);
-  // Empty, or why `spec` is not watched (a mistake, a duplicate, too many).
-  std::string watch_sector(const std::string& spec);
   // settings.ini's list and the view's outlines follow model().sectors.
   void sync_sectors();
 

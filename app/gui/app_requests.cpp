@@ -95,7 +95,7 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         } else if constexpr (std::is_same_v<R, ui::ExportLapMcap>) {
           export_shown_laps_mcap();
         } else if constexpr (std::is_same_v<R, ui::WatchSector>) {
-          m.sector_error = watch_sector(r.spec);
+          m.sector_error = ui::watch_sector(m.sectors, r.spec);
           if (!m.sector_error.empty()) return;
           edits().sector_text[0] = '\0';
           sync_sectors();

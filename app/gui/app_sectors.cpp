@@ -8,23 +8,10 @@
 
 namespace ydscope::gui {
 
-std::string App::watch_sector(const std::string& spec) {
-  std::string error;
-  const std::optional<Sector> sector = parse_sector_spec(spec, error);
-  if (!sector) return error;
-  const std::string canonical = sector_spec(*sector);
-  for (const ui::SectorWatch& w : model().sectors)
-    if (w.spec() == canonical) return "sector " + canonical + " is watched already";
-  if (model().sectors.size() >= ui::kMaxWatchedSectors)
-    return "at most " + std::to_string(ui::kMaxWatchedSectors) + " sectors; remove one first";
-  model().sectors.emplace_back(*sector);
-  return {};
-}
-
 void App::restore_sectors() {
-  for (const std::string& spec : settings_.sectors) watch_sector(spec);  // checked when read
+  for (const std::string& spec : settings_.sectors) ui::watch_sector(model().sectors, spec);  // checked when read
   if (options_.sector) {
-    const std::string error = watch_sector(*options_.sector);
+    const std::string error = ui::watch_sector(model().sectors, *options_.sector);
     if (!error.empty() && error.find("already") == std::string::npos)
       std::fprintf(stderr, "ydscope: %s\n", error.c_str());
   }

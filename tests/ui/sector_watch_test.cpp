@@ -54,6 +54,19 @@ TEST(SectorWatch, ARangeBandLeavesOutTheWallBehindTheTarget) {
   EXPECT_EQ(w.spec(), "260:280 1000:1500");
 }
 
+TEST(SectorWatchList, ASectorIsWatchedOnceAndAtMostEightAtATime) {
+  std::vector<SectorWatch> sectors;
+  EXPECT_EQ(watch_sector(sectors, "260:280"), "");
+  EXPECT_EQ(watch_sector(sectors, "260:280"), "sector 260:280 is watched already");
+  EXPECT_NE(watch_sector(sectors, "260"), "");  // a mistake: its sentence comes from the parser
+  ASSERT_EQ(sectors.size(), 1u);
+  for (int from = 0; sectors.size() < kMaxWatchedSectors; from += 20)
+    EXPECT_EQ(watch_sector(sectors, std::to_string(from) + ":" + std::to_string(from + 10)), "");
+  EXPECT_EQ(watch_sector(sectors, "300:310"), "at most 8 sectors; remove one first");
+  EXPECT_EQ(sectors.size(), kMaxWatchedSectors);
+  EXPECT_EQ(sectors.front().spec(), "260:280");
+}
+
 TEST(SectorSettings, SectorsAreRememberedAndBadLinesSaySo) {
   ViewSettings s;
   s.sectors = {"260:280", "350:10 500:2500"};

@@ -23,4 +23,17 @@ void SectorWatch::clear() {
   valid_pct_.clear();
 }
 
+std::string watch_sector(std::vector<SectorWatch>& sectors, const std::string& spec) {
+  std::string error;
+  const std::optional<Sector> sector = parse_sector_spec(spec, error);
+  if (!sector) return error;
+  const std::string canonical = sector_spec(*sector);
+  for (const SectorWatch& w : sectors)
+    if (w.spec() == canonical) return "sector " + canonical + " is watched already";
+  if (sectors.size() >= kMaxWatchedSectors)
+    return "at most " + std::to_string(kMaxWatchedSectors) + " sectors; remove one first";
+  sectors.emplace_back(*sector);
+  return {};
+}
+
 }  // namespace ydscope::ui

@@ -43,4 +43,8 @@ class SectorWatch {
   std::vector<float> valid_pct_;
 };
 
+// Adds `spec` ("260:280", or with a range band "260:280 1500:2500") to the watched sectors.
+// Empty, or one sentence why not: a mistake in it, watched already, or too many.
+std::string watch_sector(std::vector<SectorWatch>& sectors, const std::string& spec);
+
 }  // namespace ydscope::ui
