@@ -18,6 +18,7 @@
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
 #include "ui/view/booth_calm.h"
+#include "ui/view/remembered_sources.h"
 #include "ui/view/health_names.h"
 
 namespace ydscope::gui {
@@ -78,7 +79,7 @@ App::~App() {
   outputs_.stop_recording(sel());
   outputs_.stop_share(sel());
   for (auto& slot : sources_) slot->source.stop();
-  remember_looks();
+  ui::remember_looks(settings_, looks());
   if (persist_ && !settings_path_.empty()) ui::save_settings(settings_path_, settings_);
   // ImGui keeps only a pointer to our path string: save now and let it forget the path.
   if (!imgui_ini_path_.empty()) ImGui::SaveIniSettingsToDisk(imgui_ini_path_.c_str());

@@ -94,10 +94,8 @@ class App {
   // `look` leaves it empty, the first palette colour no source has.
   SourceSlot& add_slot(ui::SourceLook look);
   ui::ConnectRequest connect_request_for(const SourceChoice& choice) const;
-  // settings.ini remembers each source's pose and colour by name: a source of a remembered name
-  // gets them back (its pose only when none was given).
-  void recall_look(ui::SourceLook& look, bool pose_given) const;
-  void remember_looks();
+  // Every source's look, in list order (for settings.ini's memory of them, remembered_sources.h).
+  std::vector<ui::SourceLook> looks() const;
   // --sim G1,G6,TG30 or several --port: every one started, at its pose. Empty, or the first failure.
   std::string start_several();
   // The panels show, and command, source `index` from now on.

@@ -9,6 +9,7 @@
 
 #include "app/gui/app.h"
 #include "ui/panels/panels.h"
+#include "ui/view/remembered_sources.h"
 
 namespace ydscope::gui {
 
@@ -27,31 +28,10 @@ SourceSlot& App::add_slot(ui::SourceLook look) {
   return *sources_.back();
 }
 
-void App::recall_look(ui::SourceLook& look, bool pose_given) const {
-  for (const ui::SourceLook& remembered : settings_.sources) {
-    if (remembered.name != look.name) continue;
-    if (!pose_given) look.pose = remembered.pose;
-    // Two sources never share a colour: a remembered one another source now has is left.
-    const bool colour_taken = std::any_of(sources_.begin(), sources_.end(), [&](const auto& slot) {
-      return slot->look.name != look.name && slot->look.colour == remembered.colour;
-    });
-    if (!colour_taken) look.colour = remembered.colour;
-  }
-}
-
-void App::remember_looks() {
-  settings_.last_sources.clear();
-  if (sources_.size() < 2) return;  // a lone lidar is drawn around itself: nothing to remember
-  for (const auto& slot : sources_) settings_.last_sources.push_back(slot->look.name);
-  constexpr std::size_t kRemembered = 32;
-  for (const auto& slot : sources_) {
-    ui::SourceLook look = slot->look;
-    look.hidden = look.paused = false;  // a new run shows everything live
-    auto& list = settings_.sources;
-    std::erase_if(list, [&](const ui::SourceLook& l) { return l.name == look.name; });
-    list.push_back(std::move(look));
-    if (list.size() > kRemembered) list.erase(list.begin());
-  }
+std::vector<ui::SourceLook> App::looks() const {
+  std::vector<ui::SourceLook> looks;
+  for (const auto& slot : sources_) looks.push_back(slot->look);
+  return looks;
 }
 
 ui::ConnectRequest App::connect_request_for(const SourceChoice& choice) const {
@@ -75,7 +55,7 @@ std::string App::start_several() {
     ui::SourceLook look;
     look.name = choice.name.empty() ? choice.model.value_or("lidar") : choice.name;
     look.pose = choice.pose.value_or(spread[i]);
-    recall_look(look, choice.pose.has_value());
+    ui::recall_look(settings_, looks(), look, choice.pose.has_value());
     if (i == 0) {
       look.colour = look.colour == ui::Rgba8{} ? sel().look.colour : look.colour;
       sel().look = look;
@@ -122,7 +102,7 @@ void App::change_sources(const ui::AddSource& request) {
   std::vector<Pose> taken;
   for (const auto& slot : sources_) taken.push_back(slot->look.pose);
   look.pose = ui::free_spread_pose(taken);
-  recall_look(look, false);
+  ui::recall_look(settings_, looks(), look, false);
   add_slot(std::move(look));
   const std::size_t previous = selected_;
   selected_ = sources_.size() - 1;
