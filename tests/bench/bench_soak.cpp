@@ -25,6 +25,7 @@
 #include "core/link/serial_link.h"
 #include "core/link/session.h"
 #include "core/sim/sim_server.h"
+#include "process_probe.h"
 
 using namespace ydscope;
 using namespace std::chrono_literals;
@@ -92,13 +93,6 @@ class StallProbe {
   std::atomic<std::int64_t> worst_us_{0};
   std::thread thread_;
 };
-
-long resident_kib() {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return resident * (sysconf(_SC_PAGESIZE) / 1024);
-}
 
 // The serial port, reporting the line as `scale` times its baud: the session sizes its read holds
 // by the line rate, and the virtual line really is that much faster.
@@ -199,7 +193,7 @@ int main(int argc, char** argv) {
     const auto now = std::chrono::steady_clock::now();
     s = session.snapshot();
     c = sim.counters();
-    const long rss = resident_kib();
+    const long rss = bench::resident_kib(::getpid());
     if (rss_first < 0) rss_first = rss;  // after the first interval: buffers are warm
     rss_max = std::max(rss_max, rss);
     rss_last = rss;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -54,6 +55,19 @@ SimServerOptions pty_options(Model model, const std::string& link) {
   options.transport = SimTransport::Pty;
   options.pty_link = link;
   return options;
+}
+
+// The server's counters once `done` holds them, or when `patience` runs out (a hang guard, not a
+// timing: the caller asserts on what it gets).
+SimServerCounters counters_once(const SimServer& server, const std::function<bool(const SimServerCounters&)>& done,
+                                std::chrono::milliseconds patience) {
+  const auto give_up = Clock::now() + patience;
+  SimServerCounters counters = server.counters().server;
+  while (!done(counters) && Clock::now() < give_up) {
+    std::this_thread::sleep_for(10ms);
+    counters = server.counters().server;
+  }
+  return counters;
 }
 
 bool is_device_info_reply(const std::vector<std::uint8_t>& bytes) {
@@ -109,9 +123,8 @@ TEST(SimServerPty, AHostCanCloseAndReopenThePort) {
     ASSERT_TRUE(host.send({0xA5, 0x60}));
     EXPECT_GT(host.read(2'000, 3s).size(), 1'000u);
   }  // closed while the device streams
-  const auto give_up = Clock::now() + 5s;
-  while (server.counters().server.bytes_unheard == 0 && Clock::now() < give_up) std::this_thread::sleep_for(10ms);
-  EXPECT_GT(server.counters().server.bytes_unheard, 0u);
+  const auto unheard = [](const SimServerCounters& c) { return c.bytes_unheard > 0; };
+  EXPECT_GT(counters_once(server, unheard, 5s).bytes_unheard, 0u);
   HostPort host;
   ASSERT_TRUE(host.open_device(link));
   ASSERT_TRUE(host.send({0xA5, 0x65}));
@@ -135,16 +148,13 @@ TEST(SimServerPty, BytesAHostDoesNotReadOverrunOneLap) {
   auto give_up = Clock::now() + 10s;
   while (counters().zero_packets_written < 2 && Clock::now() < give_up) (void)host.read(512, 100ms);
   ASSERT_GE(counters().zero_packets_written, 2u) << "the device never scanned";
-  give_up = Clock::now() + 10s;
-  while (counters().bytes_unheard == 0 && Clock::now() < give_up) std::this_thread::sleep_for(10ms);
-  const SimServerCounters full = counters();
+  const SimServerCounters full = counters_once(
+      server, [](const SimServerCounters& c) { return c.bytes_unheard > 0; }, 10s);
   ASSERT_GT(full.bytes_unheard, 0u) << "the pty never filled";
   EXPECT_EQ(full.laps_overrun, 1u);
   // Several laps' worth more bytes (a G1 lap is about 1.6 kB) fall into the same lap.
-  give_up = Clock::now() + 10s;
-  while (counters().bytes_unheard < full.bytes_unheard + 8'000 && Clock::now() < give_up)
-    std::this_thread::sleep_for(10ms);
-  const SimServerCounters later = counters();
+  const SimServerCounters later = counters_once(
+      server, [&](const SimServerCounters& c) { return c.bytes_unheard >= full.bytes_unheard + 8'000; }, 10s);
   ASSERT_GE(later.bytes_unheard, full.bytes_unheard + 8'000);
   EXPECT_EQ(later.zero_packets_written, full.zero_packets_written);
   EXPECT_EQ(later.laps_overrun, 1u);
