@@ -54,7 +54,7 @@ asio::awaitable<void> IntentRunner::run_next(const ModelProfile* profile) {
 }
 
 // The command and its read-back, with the scan already stopped.
-asio::awaitable<void> IntentRunner::run(SessionIntent intent, const ModelProfile& profile, CommandResult& result,
+asio::awaitable<void> IntentRunner::run(const SessionIntent& intent, const ModelProfile& profile, CommandResult& result,
                                         bool& lost) {
   const auto settle = [&](const auto& step, const std::string& success) {
     result.ok = step.ok();

@@ -52,7 +52,8 @@ class IntentRunner {
   bool power_down_wanted() const { return power_down_wanted_; }
 
  private:
-  boost::asio::awaitable<void> run(SessionIntent intent, const ModelProfile& profile, CommandResult& result,
+  // The command and its read-back. Its references are run_next's locals, which it awaits at once.
+  boost::asio::awaitable<void> run(const SessionIntent& intent, const ModelProfile& profile, CommandResult& result,
                                    bool& lost);
 
   Parts parts_;
