@@ -20,12 +20,6 @@ std::string hz_text(std::uint32_t centihz) {
   return text;
 }
 
-// Each fault kind draws from its own generator so enabling one never moves another.
-constexpr std::uint64_t kCorruptSalt = 0xC0AA;
-constexpr std::uint64_t kDropSalt = 0xD40F;
-constexpr std::uint64_t kLostSalt = 0x1057;
-constexpr std::uint64_t kJunkSalt = 0x3A4C;
-
 }  // namespace
 
 VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns)
@@ -33,11 +27,7 @@ VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns
       config_(config),
       distance_scale_(config.distance_scale.value_or(profile_->distance_scale)),
       scene_(make_scene(config.scene, config.seed)),
-      faults_(config.faults),
-      corrupt_random_(config.seed ^ kCorruptSalt),
-      drop_random_(config.seed ^ kDropSalt),
-      lost_random_(config.seed ^ kLostSalt),
-      junk_random_(config.seed ^ kJunkSalt),
+      line_(config.faults, config.seed),
       now_ns_(now_ns) {
   if (!scene_)
     throw std::invalid_argument("unknown scene '" + config.scene + "'; the scenes are " + std::string(scene_names()));
@@ -65,8 +55,7 @@ void VirtualLidar::reset_to_power_on() {
   direction_ = MotorDirection::Clockwise;
   constant_hz_ = true;
   saw_a5_ = false;
-  stall_from_ns_ = stall_until_ns_ = 0;
-  next_periodic_stall_ns_ = kNever;
+  line_.clear_stalls();
   pacer_->clear();
 }
 
@@ -95,8 +84,6 @@ void VirtualLidar::receive(std::span<const std::uint8_t> bytes, std::int64_t now
   }
 }
 
-bool VirtualLidar::in_stall(std::int64_t t_ns) { return t_ns >= stall_from_ns_ && t_ns < stall_until_ns_; }
-
 void VirtualLidar::start_scan(std::int64_t now_ns) {
   mode_ = DeviceMode::Scanning;
   ++counters_.scans_started;
@@ -105,18 +92,17 @@ void VirtualLidar::start_scan(std::int64_t now_ns) {
   // Units with a module board announce it after the header; YDLidar-SDK waits 1 s for it.
   if (sends_device_info_after_scan_header(config_.host_compat))
     answer(Command::DeviceInfo, encode_device_info(info_), now_ns);
-  stream_->set_health(faults_.health_bits);
-  stream_->set_motor_error(faults_.scan_hz_offset, faults_.scan_hz_wobble);
+  stream_->set_health(faults().health_bits);
+  stream_->set_motor_error(faults().scan_hz_offset, faults().scan_hz_wobble);
   stream_->start(now_ns, scan_centihz_, ranging_khz());
-  next_periodic_stall_ns_ =
-      faults_.stall_ms > 0 && faults_.stall_every_ms > 0 ? now_ns + faults_.stall_every_ms * 1'000'000 : kNever;
+  line_.arm_periodic_stalls(now_ns);
   log(now_ns, "scanning at " + hz_text(scan_centihz_) + ", " + std::to_string(ranging_khz()) + " kHz, " +
                   std::to_string(stream_->samples_per_lap()) + " points per lap");
 }
 
 void VirtualLidar::stop_scan(std::int64_t now_ns, std::string_view why) {
   mode_ = DeviceMode::Idle;
-  next_periodic_stall_ns_ = kNever;
+  line_.disarm_periodic_stalls();
   pacer_->drop_unstarted(now_ns);
   log(now_ns, "idle: " + std::string(why));
 }
@@ -126,9 +112,8 @@ void VirtualLidar::advance(std::int64_t now_ns) {
   while (mode_ == DeviceMode::Scanning) {
     const std::int64_t ready = stream_->next_ready_ns();
     const std::int64_t deadline = protection_ ? last_keepalive_ns_ + kPowerDownTimeoutNs : kNever;
-    if (next_periodic_stall_ns_ <= std::min(ready, now_ns_)) {
-      stall(next_periodic_stall_ns_, faults_.stall_ms * 1'000'000);
-      next_periodic_stall_ns_ += faults_.stall_every_ms * 1'000'000;
+    if (const auto stall_from = line_.take_due_stall(std::min(ready, now_ns_))) {
+      stall(*stall_from, faults().stall_ms * 1'000'000);
       continue;
     }
     if (deadline <= now_ns_ && deadline <= ready) {
@@ -150,32 +135,11 @@ void VirtualLidar::generate_packet() {
   if (sp.index == 0) ++counters_.zero_packets;
   counters_.points += sp.lsn;
 
-  if (in_stall(sp.ready_ns)) {
-    ++fault_counters_.stalled_packets;
-    fault_counters_.stalled_bytes += packet_.size();
-    truth.lost = true;
-  } else if (sp.index != 0 && lost_random_.chance(faults_.lost_packet_rate)) {
-    ++fault_counters_.lost_packets;
-    truth.lost = true;
-  } else {
-    std::uint8_t lane_flips[2] = {0, 0};  // the checksum XORs u16 words: low and high byte lanes
-    const std::uint64_t corrupted_before = fault_counters_.corrupted_bytes;
-    const std::size_t samples_at = sp.packet_offset + kPacketHeaderSize;
-    for (std::size_t i = samples_at; i < packet_.size(); ++i) {
-      if (!corrupt_random_.chance(faults_.corrupt_byte_rate)) continue;
-      const auto flip = static_cast<std::uint8_t>(1u << corrupt_random_.below(8));
-      packet_[i] ^= flip;
-      lane_flips[(i - samples_at) % 2] ^= flip;
-      ++fault_counters_.corrupted_bytes;
-    }
-    if (lane_flips[0] || lane_flips[1]) {
-      ++fault_counters_.corrupted_packets;
-      truth.corrupted = true;
-    } else {
-      truth.altered = fault_counters_.corrupted_bytes != corrupted_before;
-    }
-    pacer_->enqueue(sp.ready_ns, packet_, sp.index == 0 ? packet_.size() : LinePacer::kNoZeroEnd, true);
-  }
+  const PacketFate fate = line_.apply(packet_, sp.packet_offset + kPacketHeaderSize, sp.index == 0, sp.ready_ns);
+  truth.lost = fate.lost;
+  truth.corrupted = fate.corrupted;
+  truth.altered = fate.altered;
+  if (!fate.lost) pacer_->enqueue(sp.ready_ns, packet_, sp.index == 0 ? packet_.size() : LinePacer::kNoZeroEnd, true);
   if (truth_) {
     truth.lap = sp.lap;
     truth.index = sp.index;
@@ -191,21 +155,7 @@ void VirtualLidar::produce(std::int64_t now_ns, std::vector<std::uint8_t>& out,
   const std::size_t base = out.size();
   const std::size_t zero_base = zero_packet_ends ? zero_packet_ends->size() : 0;
   pacer_->drain(now_ns_, out, zero_packet_ends);
-  if (faults_.drop_byte_rate > 0.0) {
-    // Remove dropped bytes in place and pull the zero-packet offsets back by the bytes removed before them.
-    std::size_t write = base;
-    std::size_t next_zero = zero_base;
-    for (std::size_t read = base; read < out.size(); ++read) {
-      const bool drop = drop_random_.chance(faults_.drop_byte_rate);
-      if (!drop)
-        out[write++] = out[read];
-      else
-        ++fault_counters_.dropped_bytes;
-      while (zero_packet_ends && next_zero < zero_packet_ends->size() && (*zero_packet_ends)[next_zero] == read + 1)
-        (*zero_packet_ends)[next_zero++] = write;
-    }
-    out.resize(write);
-  }
+  line_.drop_bytes(out, base, zero_packet_ends, zero_base);
   counters_.bytes_out += out.size() - base;
   counters_.packets_sent = pacer_->packets_sent();
 }
@@ -215,7 +165,7 @@ std::int64_t VirtualLidar::next_event_ns() const {
   if (mode_ == DeviceMode::Scanning) {
     next = std::min(next, stream_->next_ready_ns());
     if (protection_) next = std::min(next, last_keepalive_ns_ + kPowerDownTimeoutNs);
-    next = std::min(next, next_periodic_stall_ns_);
+    next = std::min(next, line_.next_periodic_stall_ns());
   }
   return next;
 }
@@ -227,18 +177,13 @@ void VirtualLidar::power_cycle(std::int64_t now_ns) {
 }
 
 void VirtualLidar::set_faults(const FaultConfig& faults) {
-  faults_ = faults;
-  stream_->set_health(faults_.health_bits);
-  stream_->set_motor_error(faults_.scan_hz_offset, faults_.scan_hz_wobble);
-  next_periodic_stall_ns_ = mode_ == DeviceMode::Scanning && faults_.stall_ms > 0 && faults_.stall_every_ms > 0
-                                ? now_ns_ + faults_.stall_every_ms * 1'000'000
-                                : kNever;
+  line_.set_config(faults, mode_ == DeviceMode::Scanning ? std::optional(now_ns_) : std::nullopt);
+  stream_->set_health(faults.health_bits);
+  stream_->set_motor_error(faults.scan_hz_offset, faults.scan_hz_wobble);
 }
 
 void VirtualLidar::stall(std::int64_t from_ns, std::int64_t duration_ns) {
-  stall_from_ns_ = from_ns;
-  stall_until_ns_ = from_ns + duration_ns;
-  ++fault_counters_.stalls;
+  line_.stall(from_ns, duration_ns);
   log(from_ns, "stalling for " + std::to_string(duration_ns / 1'000'000) + " ms");
 }
 

@@ -41,6 +41,7 @@
 #include "core/protocol/reply.h"
 #include "core/sim/faults.h"
 #include "core/sim/host_compat.h"
+#include "core/sim/line_faults.h"
 
 namespace ydscope {
 
@@ -106,7 +107,7 @@ class VirtualLidar {
  public:
   using LogFn = std::function<void(std::int64_t t_ns, std::string_view line)>;
   using TruthFn = std::function<void(const TruthPacket&)>;
-  static constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
+  static constexpr std::int64_t kNever = LineFaults::kNever;
   static constexpr std::int64_t kPowerDownTimeoutNs = 3'000'000'000;
 
   // Throws std::invalid_argument for an unknown scene name.
@@ -127,7 +128,7 @@ class VirtualLidar {
   // Power lost and back (unplug/replug): power-on state, queued bytes gone. Counters are kept.
   void power_cycle(std::int64_t now_ns);
   void set_faults(const FaultConfig& faults);
-  const FaultConfig& faults() const { return faults_; }
+  const FaultConfig& faults() const { return line_.config(); }
   HostCompat host_compat() const { return config_.host_compat; }
   // Sends nothing from from_ns for duration_ns (packets and replies due then are discarded).
   void stall(std::int64_t from_ns, std::int64_t duration_ns);
@@ -145,7 +146,7 @@ class VirtualLidar {
   double distance_scale() const { return distance_scale_; }
   const Scene& scene() const { return *scene_; }
   const DeviceCounters& counters() const { return counters_; }
-  const FaultCounters& fault_counters() const { return fault_counters_; }
+  const FaultCounters& fault_counters() const { return line_.counters(); }
 
   // Human-readable events (commands received, mode changes) for --verbose.
   void set_log(LogFn log) { log_ = std::move(log); }
@@ -163,7 +164,6 @@ class VirtualLidar {
   HealthReply health_reply() const;
   void start_scan(std::int64_t now_ns);
   void stop_scan(std::int64_t now_ns, std::string_view why);
-  bool in_stall(std::int64_t t_ns);
   void log(std::int64_t t_ns, const std::string& line) const;
 
   const ModelProfile* profile_;
@@ -172,11 +172,7 @@ class VirtualLidar {
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<ScanStream> stream_;
   std::unique_ptr<LinePacer> pacer_;
-  FaultConfig faults_;
-  FaultRandom corrupt_random_;
-  FaultRandom drop_random_;
-  FaultRandom lost_random_;
-  FaultRandom junk_random_;
+  LineFaults line_;  // what of the packets and replies reaches the line
   DeviceInfo info_;
 
   DeviceMode mode_ = DeviceMode::Idle;
@@ -188,16 +184,13 @@ class VirtualLidar {
   bool constant_hz_ = true;
   std::int64_t now_ns_ = 0;
   std::int64_t last_keepalive_ns_ = 0;
-  std::int64_t stall_from_ns_ = 0;
-  std::int64_t stall_until_ns_ = 0;
-  std::int64_t next_periodic_stall_ns_ = kNever;
   bool saw_a5_ = false;
 
   DeviceCounters counters_;
-  FaultCounters fault_counters_;
   LogFn log_;
   TruthFn truth_;
-  std::vector<std::uint8_t> packet_;  // scratch for one packet
+  std::vector<std::uint8_t> packet_;       // scratch for one packet
+  std::vector<std::uint8_t> reply_bytes_;  // scratch for one reply
 };
 
 }  // namespace ydscope

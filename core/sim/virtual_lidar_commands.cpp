@@ -130,10 +130,10 @@ void VirtualLidar::handle_command(std::uint8_t code, std::int64_t now_ns) {
 HealthReply VirtualLidar::health_reply() const {
   HealthReply health;
   if (profile_->health_command == Command::HealthStatusBits) {
-    health.status = faults_.health_bits;
+    health.status = faults().health_bits;
   } else {
-    health.status = faults_.health_bits ? static_cast<std::uint8_t>(DeviceStatus::Error) : 0;
-    health.error_code = faults_.health_bits;
+    health.status = faults().health_bits ? static_cast<std::uint8_t>(DeviceStatus::Error) : 0;
+    health.error_code = faults().health_bits;
   }
   return health;
 }
@@ -153,22 +153,10 @@ void VirtualLidar::answer(Command command, std::span<const std::uint8_t> payload
 }
 
 void VirtualLidar::send_reply(std::span<const std::uint8_t> reply, std::int64_t now_ns) {
-  std::vector<std::uint8_t> bytes;
-  for (std::uint32_t i = 0; i < faults_.junk_before_reply; ++i) {
-    std::uint8_t junk = 0;
-    do {
-      junk = static_cast<std::uint8_t>(junk_random_.below(256));
-    } while (junk == kCommandStart || junk == kPacketHeader0);
-    bytes.push_back(junk);
-  }
-  bytes.insert(bytes.end(), reply.begin(), reply.end());
-  if (in_stall(now_ns)) {
-    fault_counters_.stalled_bytes += bytes.size();
-    return;
-  }
-  fault_counters_.junk_bytes += faults_.junk_before_reply;
+  reply_bytes_.clear();
+  if (!line_.frame_reply(reply, now_ns, reply_bytes_)) return;  // a stall discarded it
   ++counters_.replies;
-  pacer_->enqueue(now_ns, bytes);
+  pacer_->enqueue(now_ns, reply_bytes_);
 }
 
 }  // namespace ydscope
