@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "app/gui/lidar_source.h"
@@ -37,6 +38,35 @@ struct SourceSlot {
     return std::chrono::duration<double>(now - *last_lap_at).count();
   }
 
+  // (source_slot.cpp) Starts `request` and puts the outcome where the user looks: the overlay,
+  // the status line and the Connection panel; the source's warnings also go to stderr in the
+  // words ydscope-cli uses. Empty, or the sentence of why it did not start.
+  std::string start(const ui::ConnectRequest& request);
+  // A new source or a Disconnect: everything measured from the old one goes.
+  void clear();
+  // The laps since the last frame: every one measured, in order, from a ring of its own (unless
+  // the view is frozen), so a slow frame skips pictures but never a lap in the statistics; the
+  // newest into the view's history. True when the view has a new lap to draw. `now_s`: the
+  // app's clock, which paces the fading persistence.
+  bool take_laps(double now_s);
+
+  // (source_slot_model.cpp) The panels' model from model.snap at model.now_s: the health
+  // timeline, the plots, the alerts, and what the view must say about the picture.
+  void refresh_model();
+  // The replay's position for its panel, while a replay is the source.
+  void follow_replay();
+
+  // (source_slot_requests.cpp) What the panels ask of this source's device, replay or virtual
+  // lidar; a device command's outcome is shown beside the control that asked.
+  void carry_out(const ui::ControlReplay& request);
+  void carry_out(const ui::SetSimFaults& request);
+  void carry_out(const ui::UnplugSim& request);
+  void carry_out(const ui::ReplugSim& request);
+  void carry_out(const ui::SetScanHz& request);
+  void carry_out(const ui::SetRangingKhz& request);
+  void carry_out(const ui::RefreshHealth& request);
+  void carry_out(const ui::SetDistanceScale& request);
+
   ui::SourceLook look;
   ui::UiModel model;
   ui::PanelEdits edits;  // what its panels hold while the user types or picks
@@ -53,6 +83,10 @@ struct SourceSlot {
   std::optional<std::chrono::steady_clock::time_point> last_lap_at;  // newest lap of this source
   bool has_source = false;
   std::int64_t pending_latency_rx_ns = 0;  // newest lap drawn this frame, measured after present
+
+ private:
+  void measure(const Lap& lap);
+  void describe_view();
 };
 
 }  // namespace ydscope::gui

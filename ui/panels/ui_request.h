@@ -115,5 +115,11 @@ using UiRequest = std::variant<ConnectRequest, Disconnect, RefreshPorts, Control
 template <class R>
 inline constexpr bool is_source_list_request = std::is_same_v<R, SelectSource> || std::is_same_v<R, SetSourceLook> ||
                                                std::is_same_v<R, AddSource> || std::is_same_v<R, RemoveSource>;
+// The requests one source carries out alone: its device's commands, its replay, its virtual lidar.
+template <class R>
+inline constexpr bool is_device_request =
+    std::is_same_v<R, ControlReplay> || std::is_same_v<R, SetSimFaults> || std::is_same_v<R, UnplugSim> ||
+    std::is_same_v<R, ReplugSim> || std::is_same_v<R, SetScanHz> || std::is_same_v<R, SetRangingKhz> ||
+    std::is_same_v<R, RefreshHealth> || std::is_same_v<R, SetDistanceScale>;
 
 }  // namespace ydscope::ui

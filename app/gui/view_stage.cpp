@@ -1,0 +1,121 @@
+#include "app/gui/view_stage.h"
+
+#include <cstdio>
+
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "ui/panels/panels.h"
+#include "ui/render/draw_signature.h"
+#include "ui/render/gl.h"
+#include "ui/render/theme.h"
+
+namespace ydscope::gui {
+
+void ViewStage::lay_out(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame) {
+  split_ = settings.split_view && sources.several();
+  if (split_)
+    lay_out_split(sources, settings, frame);
+  else
+    lay_out_common(sources, settings, frame);
+}
+
+void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame) {
+  SourceSlot& selected = sources.selected();
+  ui::UiModel& model = selected.model;
+  view_->set_viewport({frame.left, 0.0f}, {frame.width, frame.height});
+  view_->set_status_band(ui::status_band_height());
+  view_->enable_pose_drag(sources.several());
+  view_->handle_input(settings, frame.hovered, frame.now_s);
+  if (const auto drag = view_->take_pose_drag()) {  // Alt/Ctrl+drag: the selected source's pose
+    ui::SourceLook look = selected.look;
+    look.pose = ui::dragged_pose(look.pose, *drag);
+    look.paused = model.paused_view;
+    model.requests.push_back(ui::SetSourceLook{sources.selected_index(), look});
+  }
+  if (const auto swept = view_->take_swept_sector()) {  // Shift+drag on the view
+    char spec[48];
+    std::snprintf(spec, sizeof spec, "%.0f:%.0f", static_cast<double>(swept->first),
+                  static_cast<double>(swept->second));
+    model.requests.push_back(ui::WatchSector{spec});
+  }
+  // One lidar is drawn as always; several (or one in its source colour) go through the layers.
+  const bool several = sources.several();
+  const bool layered = several || settings.colours.mode == ui::ColourMode::Source;
+  const auto layers = layered ? layers_of(sources) : std::span<const ui::SourceLayer>();
+  view_->set_source_marks(marks_);
+  if (layered)
+    view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
+  else
+    view_->auto_range(selected.history, settings);
+  model.cloud = layered ? view_->update_cloud(layers, settings, frame.phase)
+                        : view_->update_cloud(selected.history, settings, &selected.motion, frame.phase);
+  model.laps_on_screen = selected.history.size();
+  model.points_drawn_total = view_->vertex_count();
+
+  // The hover box reads one lidar's own frame, which several do not share.
+  static const ui::LapHistory no_laps;
+  view_->lay_out(several ? no_laps : selected.history, settings);
+  // Each source's state in its own line; the booth view's large legend says it there instead.
+  if (several && !frame.legend_in_booth)
+    ui::draw_source_legend(model, frame.left, frame.width);
+  else
+    ui::draw_view_overlay(model, frame.left, frame.width, frame.height);
+}
+
+std::span<const ui::SourceLayer> ViewStage::layers_of(const SourceList& sources) {
+  const bool several = sources.several();
+  layers_.clear();
+  marks_.clear();
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    const SourceSlot& slot = sources[i];
+    if (slot.look.hidden) continue;
+    ui::SourceLayer layer;
+    layer.history = &slot.history;
+    layer.pose = several ? slot.look.pose : Pose{};  // a lone lidar is drawn around itself
+    layer.colour = slot.look.colour;
+    layer.dim = several && slot.model.view_state.dim;  // a lone one says so over the whole view
+    layer.motion = &slot.motion;
+    layers_.push_back(layer);
+    if (several) marks_.push_back({slot.look.pose, slot.look.colour, i == sources.selected_index()});
+  }
+  // Moving, hiding or dimming a source changes the picture without a new lap.
+  std::vector<std::pair<Pose, bool>> key;
+  for (const ui::SourceLayer& layer : layers_) key.emplace_back(layer.pose, layer.dim);
+  if (key != drawn_layers_key_) {
+    drawn_layers_key_ = std::move(key);
+    view_->invalidate();
+  }
+  return layers_;
+}
+
+std::uint64_t ViewStage::gl_generation() const {
+  if (!split_) return view_->gl_generation();
+  std::uint64_t generation = tiles_.size();
+  for (const auto& tile : tiles_) generation = generation * 1'000'003u + tile->gl_generation();
+  return generation;
+}
+
+bool ViewStage::render_if_changed(const ui::ViewSettings& settings, float fb_scale, int fb_w, int fb_h,
+                                  bool must_draw) {
+  std::uint64_t signature = ui::draw_signature(*ImGui::GetDrawData());
+  for (const std::uint64_t part :
+       {gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
+        static_cast<std::uint64_t>(settings.show_grid), static_cast<std::uint64_t>(settings.point_size_px * 1000.0f)})
+    signature = ui::mix_signature(signature, part);
+  if (signature == drawn_signature_ && !must_draw) return false;
+  drawn_signature_ = signature;
+  glViewport(0, 0, fb_w, fb_h);
+  glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
+  glClear(GL_COLOR_BUFFER_BIT);
+  if (split_) {
+    for (const auto& tile : tiles_) tile->draw_gl(settings, fb_scale, fb_h);
+  } else {
+    view_->draw_gl(settings, fb_scale, fb_h);
+  }
+  glViewport(0, 0, fb_w, fb_h);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return true;
+}
+
+}  // namespace ydscope::gui

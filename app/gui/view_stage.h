@@ -1,0 +1,63 @@
+#pragma once
+// The polar view of a frame. One lidar is drawn around itself as always; several in the common
+// frame, each at its pose (source_cloud); or, with View > split, two to four side by side, each in
+// a view of its own. Laid out every frame; drawn with GL only when the picture would change.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "app/gui/source_list.h"
+#include "ui/render/polar_view.h"
+#include "ui/view/settings.h"
+
+namespace ydscope::gui {
+
+// What a frame's layout needs besides the sources and the settings.
+struct ViewFrame {
+  float left = 0.0f;  // the view's part of the window (window pixels): right of the sidebar
+  float width = 0.0f;
+  float height = 0.0f;
+  bool hovered = false;  // the pointer is over the window (the window system's word)
+  double now_s = 0.0;    // the app's steady clock
+  float phase = 0.0f;    // how far the fading persistence is between two laps
+  bool legend_in_booth = false;  // the booth view names the sources in its own large legend
+};
+
+class ViewStage {
+ public:
+  // `interactive`: hovering shows the nearest point (off for screenshot runs).
+  explicit ViewStage(bool interactive)
+      : interactive_(interactive), view_(std::make_unique<ui::PolarView>(interactive)) {}
+
+  // The common view: its ruler, sector outlines, colours, and the rebuild a change asks for.
+  ui::PolarView& view() { return *view_; }
+  const ui::PolarView& view() const { return *view_; }
+  // Lays out the frame's view and fills the selected source's model with what it shows. Alt/Ctrl+
+  // drag and Shift+drag on the common view become requests in the selected source's model.
+  void lay_out(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
+  // Renders the GL layer and ImGui's draw data, unless the frame would look exactly like the last
+  // and nothing asks for it (`must_draw`: a screenshot, or a window the system lost). True if drawn.
+  bool render_if_changed(const ui::ViewSettings& settings, float framebuffer_scale, int framebuffer_width,
+                         int framebuffer_height, bool must_draw);
+
+ private:
+  void lay_out_common(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
+  void lay_out_split(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
+  // Each shown source's laps at its pose, and its mark; a change of pose or dimming rebuilds the cloud.
+  std::span<const ui::SourceLayer> layers_of(const SourceList& sources);
+  // Changes whenever the GL layer of the view (or of the split view's tiles) would draw otherwise.
+  std::uint64_t gl_generation() const;
+
+  bool interactive_;
+  std::unique_ptr<ui::PolarView> view_;
+  std::vector<std::unique_ptr<ui::PolarView>> tiles_;  // the split view's, one per source shown
+  bool split_ = false;                                 // this frame is laid out as the split view
+  std::vector<ui::SourceLayer> layers_;                // this frame's, reused
+  std::vector<ui::SourceMark> marks_;
+  std::vector<std::pair<Pose, bool>> drawn_layers_key_;  // pose and dimming the cloud was built with
+  std::uint64_t drawn_signature_ = 0;                    // draw_signature of the last frame rendered
+};
+
+}  // namespace ydscope::gui
