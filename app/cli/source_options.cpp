@@ -21,7 +21,7 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
     if (address->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(address->path, ec))
       throw UsageError("there is no port " + address->path + "; `ydscope-cli ports` lists the ones attached");
     spec.name = std::move(text.name);
-    spec.pose = text.pose;
+    spec.pose = text.pose.value_or(Pose{});  // no --pose: the common frame's origin
     specs.push_back(std::move(spec));
   }
   return specs;

@@ -115,6 +115,30 @@ TEST_F(AppSources, TheSplitViewPutsEachSourceInItsOwnHalf) {
   EXPECT_LT(in(middle, image.width, first), 50) << "the first source spills into the second's half";
 }
 
+// Two ports given no --pose sit where two virtual lidars would, not both on the origin, so their
+// clouds are told apart from the first frame (each can be dragged to where it really is).
+TEST_F(AppSources, TwoPortsWithoutPosesAreSpreadLikeVirtualLidars) {
+  const std::filesystem::path& dir = this->dir();
+  std::vector<pid_t> sims;
+  for (const char* link : {"a", "b"})
+    sims.push_back(spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty",
+                                  (dir / link).string()}));
+  const bool ready =
+      wait_for_path(dir / "a", std::chrono::seconds(15)) && wait_for_path(dir / "b", std::chrono::seconds(15));
+  const Image image = ready ? screenshot_run({"--port", (dir / "a").string(), "--port", (dir / "b").string()}) : Image{};
+  for (const pid_t sim : sims) stop_process(sim, SIGTERM);
+  ASSERT_TRUE(ready) << "the virtual lidars' ports never appeared";
+  ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
+  const std::vector<Pose> poses = ui::spread_poses(2);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const SourcePixels pixels = source_pixels(image, ui::source_colour(i), poses[i]);
+    EXPECT_GT(pixels.total, 1000) << "source " << i << "'s colour is hardly on the view";
+    EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
+        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total
+        << " of its points lie towards where it was put";
+  }
+}
+
 // Amber legend words (255, 190, 80): the legend line of a source whose data stopped; the orange
 // of the first source (255, 150, 40) is not amber.
 bool is_amber(const unsigned char* p) { return p[0] > 220 && p[1] > 170 && p[1] < 210 && p[2] > 40 && p[2] < 120; }
