@@ -16,7 +16,7 @@ namespace ydscope {
 
 struct SourceText {
   std::string port;
-  std::string name;  // letters, digits and _, starting with a letter: a ROS namespace and a CSV field as is
+  std::string name;          // letters, digits and _, starting with a letter: a ROS namespace and a CSV field as is
   std::optional<Pose> pose;  // empty: no --pose (a recording puts it at the origin; the app spreads them)
   std::optional<std::string> model;  // as typed: "auto", "G6", ...; checked by the caller
   std::optional<std::string> baud;   // as typed: a number or "auto"; parse_baud_text checks a number

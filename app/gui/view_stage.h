@@ -19,9 +19,9 @@ struct ViewFrame {
   float left = 0.0f;  // the view's part of the window (window pixels): right of the sidebar
   float width = 0.0f;
   float height = 0.0f;
-  bool hovered = false;  // the pointer is over the window (the window system's word)
-  double now_s = 0.0;    // the app's steady clock
-  float phase = 0.0f;    // how far the fading persistence is between two laps
+  bool hovered = false;          // the pointer is over the window (the window system's word)
+  double now_s = 0.0;            // the app's steady clock
+  float phase = 0.0f;            // how far the fading persistence is between two laps
   bool legend_in_booth = false;  // the booth view names the sources in its own large legend
 };
 

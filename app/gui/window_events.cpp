@@ -12,12 +12,11 @@ WindowEvents& events_of(GLFWwindow* window) { return *static_cast<WindowEvents*>
 
 WindowEvents::WindowEvents(GLFWwindow* window) : window_(window) {
   glfwSetWindowUserPointer(window_, this);
-  imgui_key_callback_ =
-      glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
-        WindowEvents& events = events_of(w);
-        if (events.imgui_key_callback_) events.imgui_key_callback_(w, key, scancode, action, mods);
-        if (action == GLFW_PRESS) events.presses_.push_back({key, mods});
-      });
+  imgui_key_callback_ = glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int scancode, int action, int mods) {
+    WindowEvents& events = events_of(w);
+    if (events.imgui_key_callback_) events.imgui_key_callback_(w, key, scancode, action, mods);
+    if (action == GLFW_PRESS) events.presses_.push_back({key, mods});
+  });
   glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { events_of(w).damaged_ = true; });
 }
 

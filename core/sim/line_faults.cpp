@@ -79,8 +79,7 @@ void LineFaults::drop_bytes(std::vector<std::uint8_t>& out, std::size_t base, st
   out.resize(write);
 }
 
-bool LineFaults::frame_reply(std::span<const std::uint8_t> reply, std::int64_t now_ns,
-                             std::vector<std::uint8_t>& out) {
+bool LineFaults::frame_reply(std::span<const std::uint8_t> reply, std::int64_t now_ns, std::vector<std::uint8_t>& out) {
   const std::size_t base = out.size();
   for (std::uint32_t i = 0; i < config_.junk_before_reply; ++i) {
     std::uint8_t junk = 0;
@@ -106,9 +105,8 @@ void LineFaults::stall(std::int64_t from_ns, std::int64_t duration_ns) {
 }
 
 void LineFaults::arm_periodic_stalls(std::int64_t scan_start_ns) {
-  next_periodic_stall_ns_ = config_.stall_ms > 0 && config_.stall_every_ms > 0
-                                ? scan_start_ns + config_.stall_every_ms * kNsPerMs
-                                : kNever;
+  next_periodic_stall_ns_ =
+      config_.stall_ms > 0 && config_.stall_every_ms > 0 ? scan_start_ns + config_.stall_every_ms * kNsPerMs : kNever;
 }
 
 std::optional<std::int64_t> LineFaults::take_due_stall(std::int64_t t_ns) {

@@ -56,7 +56,6 @@ class LineFaults {
   // Power-on: no stall in progress or scheduled.
   void clear_stalls();
 
-
  private:
   bool in_stall(std::int64_t t_ns) const { return t_ns >= stall_from_ns_ && t_ns < stall_until_ns_; }
 

@@ -111,8 +111,8 @@ TEST(LineFaults, DroppedBytesPullTheZeroPacketEndsBack) {
   EXPECT_EQ(out[0], 0xEE);
   EXPECT_EQ(out[1], 0xEE);
   EXPECT_TRUE(std::is_sorted(out.begin() + 2, out.end()));  // what is left keeps its order
-  EXPECT_EQ(zero_ends[0], 999u);                             // before zero_base: untouched
-  EXPECT_EQ(zero_ends[2], out.size());                       // the last byte's end is the end
+  EXPECT_EQ(zero_ends[0], 999u);                            // before zero_base: untouched
+  EXPECT_EQ(zero_ends[2], out.size());                      // the last byte's end is the end
   // The first end sits just past the kept bytes numbered up to 100.
   const auto kept_to_100 = std::count_if(out.begin() + 2, out.end(), [](std::uint8_t b) { return b <= 100; });
   EXPECT_EQ(zero_ends[1], 2u + static_cast<std::size_t>(kept_to_100));

@@ -121,11 +121,12 @@ TEST_F(AppSources, TwoPortsWithoutPosesAreSpreadLikeVirtualLidars) {
   const std::filesystem::path& dir = this->dir();
   std::vector<pid_t> sims;
   for (const char* link : {"a", "b"})
-    sims.push_back(spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty",
-                                  (dir / link).string()}));
+    sims.push_back(
+        spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--scene", "demo", "--pty", (dir / link).string()}));
   const bool ready =
       wait_for_path(dir / "a", std::chrono::seconds(15)) && wait_for_path(dir / "b", std::chrono::seconds(15));
-  const Image image = ready ? screenshot_run({"--port", (dir / "a").string(), "--port", (dir / "b").string()}) : Image{};
+  const Image image =
+      ready ? screenshot_run({"--port", (dir / "a").string(), "--port", (dir / "b").string()}) : Image{};
   for (const pid_t sim : sims) stop_process(sim, SIGTERM);
   ASSERT_TRUE(ready) << "the virtual lidars' ports never appeared";
   ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
