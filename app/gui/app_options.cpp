@@ -3,6 +3,8 @@
 #include "app/gui/app_help.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <system_error>
 
 #include "app/common/source_list_options.h"
 #include "core/analysis/sector.h"
@@ -94,6 +96,14 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if (options.replay_once && !replay) throw UsageError("--once goes with --replay FILE.");
   options.fullscreen = args.has("fullscreen");
   options.screenshot_path = args.value("screenshot").value_or("");
+  if (!options.screenshot_path.empty()) {
+    // Said before the window opens, not after the frames it was asked to wait for.
+    const std::filesystem::path folder = std::filesystem::path(options.screenshot_path).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+      throw UsageError("--screenshot: there is no folder " + folder.string() + " to save " + options.screenshot_path +
+                       " in.");
+  }
   if (const auto frames = args.integer("frames", 1, 1'000'000)) {
     if (options.screenshot_path.empty()) throw UsageError("--frames goes with --screenshot PNG.");
     options.frames = static_cast<int>(*frames);

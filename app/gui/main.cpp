@@ -175,9 +175,10 @@ int run(const ydscope::gui::AppOptions& options) {
             glfwGetFramebufferSize(window, &w, &h);
             const std::string error = save_framebuffer_png(options.screenshot_path, w, h);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-            std::printf("ydscope: wrote %s after %d frames and %llu laps in %.2f s (%.1f ms per frame)\n",
-                        options.screenshot_path.c_str(), frames, static_cast<unsigned long long>(app->laps_shown()),
-                        seconds, 1e3 * seconds / frames);
+            if (error.empty())
+              std::printf("ydscope: wrote %s after %d frames and %llu laps in %.2f s (%.1f ms per frame)\n",
+                          options.screenshot_path.c_str(), frames, static_cast<unsigned long long>(app->laps_shown()),
+                          seconds, 1e3 * seconds / frames);
             if (!error.empty()) {
               std::fprintf(stderr, "ydscope: %s\n", error.c_str());
               exit_code = 1;

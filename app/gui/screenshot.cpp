@@ -9,6 +9,7 @@
 #include <stb_image_write.h>
 
 #include "ui/render/gl.h"
+#include "ui/view/whole_file.h"
 
 namespace ydscope::gui {
 
@@ -25,19 +26,19 @@ std::string save_framebuffer_png(const std::string& path, int width, int height)
   for (std::size_t row = 0; row < h; ++row) {
     std::memcpy(&flipped[row * w * 3], &pixels[(h - 1 - row) * w * 3], w * 3);
   }
-  if (!stbi_write_png(path.c_str(), width, height, 3, flipped.data(), width * 3)) {
-    return "could not write " + path + ": " + std::strerror(errno) + "; is the folder writable?";
-  }
-  return {};
+  std::string error;
+  if (!stbi_write_png(ui::part_name(path).c_str(), width, height, 3, flipped.data(), width * 3))
+    error = "could not write " + path + ": " + std::strerror(errno) + "; is the folder writable?";
+  return ui::finish_whole_file(path, error);
 }
 
 std::string save_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
+  std::ofstream out(ui::part_name(path));
   if (!out) return "could not create " + path + ": " + std::strerror(errno) + ".";
   out << text;
   out.close();
-  if (!out) return "writing " + path + " failed: " + std::strerror(errno) + ".";
-  return {};
+  return ui::finish_whole_file(path,
+                               out ? std::string() : "writing " + path + " failed: " + std::strerror(errno) + ".");
 }
 
 }  // namespace ydscope::gui

@@ -131,6 +131,12 @@ TEST(CommandLine, TheAppFollowsTheSameRules) {
   EXPECT_EQ(app("-p /dev/ttyUSB0").err, "ydscope: unknown option -p; did you mean --port?\n");
   EXPECT_EQ(app("--sim=G9").status, 2);
   EXPECT_EQ(app("--sim G1 --replay x.ydrec").status, 2);
+  // A screenshot with nowhere to go is said before the window opens, not after its frames.
+  const auto nowhere = app("--sim G6 --screenshot /nonexistent-folder/shot.png");
+  EXPECT_EQ(nowhere.status, 2);
+  EXPECT_EQ(nowhere.err,
+            "ydscope: --screenshot: there is no folder /nonexistent-folder to save /nonexistent-folder/shot.png in.\n");
+  EXPECT_EQ(nowhere.out, "");
 }
 
 // Share and record from the command line: a mistake is one sentence and exit 2, before any window.

@@ -17,7 +17,8 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-// Taps E until the app writes a CSV not in `seen`; its text, or empty after `timeout`.
+// Taps E until the app writes a CSV not in `seen` (whole once it has its name: ui/view/whole_file.h);
+// its text, or empty after `timeout`.
 std::string export_csv(X11Hands& hands, const std::filesystem::path& dir, std::set<std::string>& seen,
                        std::chrono::seconds timeout = std::chrono::seconds(15)) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -30,7 +31,6 @@ std::string export_csv(X11Hands& hands, const std::filesystem::path& dir, std::s
       for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
         if (entry.path().extension() != ".csv" || seen.count(name)) continue;
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));  // written in one go; let it close
         seen.insert(name);
         std::ifstream in(entry.path());
         std::stringstream text;

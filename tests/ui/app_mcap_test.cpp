@@ -26,8 +26,9 @@ std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A file with `extension` in `dir` that is not in `seen` (then added), or empty after `timeout`;
-// `poke` runs before each look (a key tap that asks for the file).
+// A file with `extension` in `dir` that is not in `seen` (then added), or empty after `timeout`; it
+// is whole once it has its name (ui/view/whole_file.h). `poke` runs before each look (a key tap
+// that asks for the file).
 template <class Poke>
 std::filesystem::path new_file(const std::filesystem::path& dir, const std::string& extension,
                                std::set<std::string>& seen, std::chrono::seconds timeout, Poke poke) {
@@ -38,7 +39,6 @@ std::filesystem::path new_file(const std::filesystem::path& dir, const std::stri
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
       for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         if (entry.path().extension() != extension || seen.count(entry.path().filename().string())) continue;
-        std::this_thread::sleep_for(std::chrono::milliseconds(300));  // written in one go; let it close
         seen.insert(entry.path().filename().string());
         return entry.path();
       }

@@ -2,6 +2,7 @@
 // first, each as one /scan and one /points message stamped with its close time on the wall clock,
 // every point exactly; and the Record tab's names for .ydrec, .mcap or both.
 #include "ui/view/lap_mcap.h"
+#include "ui/view/whole_file.h"
 
 #include <gtest/gtest.h>
 
@@ -40,6 +41,7 @@ TEST(LapMcap, WritesEveryShownLapOldestFirstWithEveryPoint) {
   const std::int64_t to_wall = 1'800'000'000'000'000'000;
   const ShownLapsMcap saved = save_shown_laps_mcap(history, 10, Model::G6, metadata, to_wall, path);
   ASSERT_TRUE(saved.error.empty()) << saved.error;
+  EXPECT_FALSE(std::filesystem::exists(part_name(path))) << "the part it was written as is left behind";
   EXPECT_EQ(saved.laps, 4u) << "all the view holds, not more";
   EXPECT_EQ(saved.messages, 8u);
 
@@ -79,6 +81,7 @@ TEST(LapMcap, AFileThatCannotBeCreatedIsOneSentence) {
   history.push(lap_of(1, 1'000'000'000, 3));
   const ShownLapsMcap saved = save_shown_laps_mcap(history, 2, Model::G1, {}, 0, "/nonexistent-dir/x.mcap");
   EXPECT_NE(saved.error.find("/nonexistent-dir/x.mcap"), std::string::npos) << saved.error;
+  EXPECT_EQ(saved.error.find(".part"), std::string::npos) << "names a file the user never asked for: " << saved.error;
   EXPECT_EQ(saved.error.find('\n'), std::string::npos);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/export/mcap_recording_export.h"
+#include "ui/view/whole_file.h"
 
 namespace ydscope::ui {
 
@@ -10,8 +11,11 @@ ShownLapsMcap save_shown_laps_mcap(const LapHistory& history, std::size_t laps, 
                                    const RecordingMetadata& metadata, std::int64_t rx_to_wall_ns,
                                    const std::string& path) {
   ShownLapsMcap result;
-  auto file = McapRecordingExport::create(path, {}, result.error);
-  if (!file) return result;
+  auto file = McapRecordingExport::create(part_name(path), {}, result.error);
+  if (!file) {
+    result.error = finish_whole_file(path, result.error);  // nothing half-made is left
+    return result;
+  }
   file->metadata(metadata, 0);
   result.laps = std::min(laps, history.size());
   Lap lap;
@@ -29,6 +33,8 @@ ShownLapsMcap save_shown_laps_mcap(const LapHistory& history, std::size_t laps, 
   }
   if (!file->finish()) result.error = "writing " + path + " failed: " + file->error();
   result.messages = file->statistics().message_count;
+  file.reset();  // closed before it takes its name
+  result.error = finish_whole_file(path, result.error);
   return result;
 }
 
