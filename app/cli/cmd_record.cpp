@@ -16,6 +16,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
+#include "app/cli/line_quality.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/record_sources.h"
@@ -83,6 +84,8 @@ When the lidar reported a health warning or error, the first line ends with the 
 
 health: a warning or an error the lidar reports (its A5 91/92 answer, or G1's CT health bits) is
 one line on stderr when it first shows and again whenever it changes, back to ok included.
+A bad line (more than one packet in twenty, and at least ten, failing the checksum) is one line
+on stderr at the end: check the cable, the power supply and that no other program has the port.
 
 exit status: 0 recorded (a health warning does not change this); 3 recorded, but the lidar
 reported a health error; 1 the device or the file failed (one sentence on stderr; what was
@@ -255,9 +258,11 @@ int run_record(std::span<const std::string> raw) {
   file_closing.wait();
   if (!live_written) throw std::runtime_error(live->error());
   session.disconnect();
-  session.wait_until(
+  const SessionSnapshot end = session.wait_until(
       [](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
       std::chrono::seconds(3));
+  std::fputs(checksum_warning("ydscope-cli record", end.counters.packets, end.counters.checksum_errors).c_str(),
+             stderr);
 
   if (out_option) {
     std::string error;

@@ -12,6 +12,7 @@
 #include "app/cli/lap_bell.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/lap_output.h"
+#include "app/cli/line_quality.h"
 #include "app/cli/session_cli.h"
 #include "core/link/session_io.h"
 #include "core/record/recording_metadata.h"
@@ -46,6 +47,8 @@ bytes count everything the lidar sent, replies included), with the health the se
 
 health: a warning or an error the lidar reports (its A5 91/92 answer, or G1's CT health bits) is
 one line on stderr when it first shows and again whenever it changes, back to ok included.
+A bad line (more than one packet in twenty, and at least ten, failing the checksum) is one line
+on stderr at the end: check the cable, the power supply and that no other program has the port.
 
 exit status: 0 N laps were printed (a health warning does not change this); 3 N laps were printed
 but the lidar reported a health error; 1 the device failed or stopped sending (one sentence on
@@ -122,6 +125,7 @@ int run_scan(std::span<const std::string> raw) {
   }
   out.flush();
   std::fflush(stdout);
+  std::fputs(checksum_warning("ydscope-cli scan", summary.packets, summary.checksum_errors).c_str(), stderr);
   if (!failure.empty()) throw std::runtime_error(failure);
   return health.worst() == HealthLevel::Error ? kExitLidarFault : kExitOk;
 }

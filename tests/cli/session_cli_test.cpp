@@ -46,6 +46,25 @@ TEST(SessionCli, ScanPrintsNLapsAndTheSummary) {
   EXPECT_EQ(mode, DeviceMode::Idle) << "scan leaves the lidar stopped";
 }
 
+// A bad line (here one packet in six or so broken) is said on stderr, where a user piping CSV or
+// recording to a file looks; the laps still come out. The fault matrix checks that a lightly
+// corrupted run says nothing.
+TEST(SessionCli, ScanAndRecordSayWhenManyPacketsFailTheirChecksum) {
+  SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.faults.corrupt_byte_rate = 2e-3; });
+  const CliResult scan = run_cli_apart("scan --port " + sim.port() + " --laps 8 --format csv");
+  ASSERT_EQ(scan.status, 0) << scan.err;
+  EXPECT_EQ(scan.out.rfind("lap,", 0), 0u) << "the CSV is still CSV: " << scan.out.substr(0, 200);
+  EXPECT_EQ(scan.err.rfind("ydscope-cli scan: warning: ", 0), 0u) << scan.err;
+  EXPECT_NE(scan.err.find("failed their checksum and were dropped; check the cable"), std::string::npos) << scan.err;
+  EXPECT_EQ(count(scan.err, "\n"), 1u) << "one sentence: " << scan.err;
+
+  const std::string out = sim.port() + "-run.ydrec";
+  const CliResult record = run_cli_apart("record --port " + sim.port() + " --out " + out + " --seconds 2");
+  ASSERT_EQ(record.status, 0) << record.err;
+  EXPECT_EQ(record.err.rfind("ydscope-cli record: warning: ", 0), 0u) << record.err;
+  EXPECT_NE(record.err.find("failed their checksum"), std::string::npos) << record.err;
+}
+
 TEST(SessionCli, SetReachesTheTargetAndPrintsTheReadBack) {
   SimOnPty sim(Model::G6);
   const CliResult hz = run_cli("set --port " + sim.port() + " --scan-hz 9.4");
