@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -43,7 +44,7 @@ TEST(LineFaults, CorruptionFlipsOnlySampleBytesAndCountsThem) {
   EXPECT_TRUE(std::equal(packet.begin(), packet.begin() + 10, original.begin()));  // the header keeps its framing
   for (std::size_t i = 10; i < packet.size(); ++i) {
     const auto flipped = static_cast<std::uint8_t>(packet[i] ^ original[i]);
-    EXPECT_EQ(__builtin_popcount(flipped), 1) << "byte " << i;
+    EXPECT_EQ(std::popcount(flipped), 1) << "byte " << i;
   }
   EXPECT_EQ(line.counters().corrupted_bytes, 40u);
   // Whether 40 flips cancel in the XOR checksum decides corrupted against altered, never both.

@@ -55,6 +55,19 @@ SourcePixels source_pixels(const Image& image, ui::Rgba8 colour, const Pose& pos
   return counted;
 }
 
+// `count` sources started together: each in the next colour of the palette, its cloud lying
+// towards the pose spread_poses gives it round the origin.
+void expect_spread_round_the_origin(const Image& image, std::size_t count) {
+  const std::vector<Pose> poses = ui::spread_poses(count);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const SourcePixels pixels = source_pixels(image, ui::source_colour(i), poses[i]);
+    EXPECT_GT(pixels.total, 1000) << "source " << i << "'s colour is hardly on the view";
+    EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
+        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total
+        << " of its points lie towards its pose";
+  }
+}
+
 // Each test on an Xvfb of its own, in a folder of its own (kept when it fails, to look at).
 class AppSources : public testing::Test {
  protected:
@@ -89,14 +102,7 @@ TEST_F(AppSources, ThreeVirtualLidarsDrawInTheirColoursWhereTheirPosesPutThem) {
   const Image image = screenshot_run({"--sim", "G1,G6,TG30"});
   ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
   // Started together, the three sit round the origin, each in the next colour of the palette.
-  const std::vector<Pose> poses = ui::spread_poses(3);
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    const SourcePixels pixels = source_pixels(image, ui::source_colour(i), poses[i]);
-    EXPECT_GT(pixels.total, 1000) << "source " << i << "'s colour is hardly on the view";
-    EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
-        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total
-        << " of its points lie towards its pose";
-  }
+  expect_spread_round_the_origin(image, 3);
 }
 
 // View > split: two sources side by side, each drawn around itself in its own half.
@@ -130,14 +136,7 @@ TEST_F(AppSources, TwoPortsWithoutPosesAreSpreadLikeVirtualLidars) {
   for (const pid_t sim : sims) stop_process(sim, SIGTERM);
   ASSERT_TRUE(ready) << "the virtual lidars' ports never appeared";
   ASSERT_TRUE(image) << "the app did not exit 0 with a picture";
-  const std::vector<Pose> poses = ui::spread_poses(2);
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    const SourcePixels pixels = source_pixels(image, ui::source_colour(i), poses[i]);
-    EXPECT_GT(pixels.total, 1000) << "source " << i << "'s colour is hardly on the view";
-    EXPECT_GT(pixels.towards_pose * 10, pixels.total * 6)
-        << "source " << i << ": only " << pixels.towards_pose << " of " << pixels.total
-        << " of its points lie towards where it was put";
-  }
+  expect_spread_round_the_origin(image, 2);
 }
 
 // Amber legend words (255, 190, 80): the legend line of a source whose data stopped; the orange
