@@ -29,6 +29,8 @@ void print_check_text(std::FILE* out, const CheckRecord& record) {
                s.device ? s.device->serial.c_str() : "?", record.measured_seconds,
                static_cast<unsigned long long>(record.observations.timing.laps),
                record.interrupted ? " (interrupted)" : "");
+  if (const UnitConventions* c = record.observations.conventions)
+    std::fprintf(out, "read with the %s conventions: %s\n", std::string(c->id).c_str(), std::string(c->label).c_str());
   std::size_t width = 0;
   for (const CriterionResult& r : record.results) width = std::max(width, r.title.size());
   for (const CriterionResult& r : record.results)

@@ -64,6 +64,9 @@ std::string identity_block(const CheckRecord& record) {
                                         static_cast<unsigned long long>(record.observations.timing.laps)));
   if (record.observations.ranging_khz)
     html += field("ranging frequency", std::to_string(record.observations.ranging_khz) + " kHz");
+  if (const UnitConventions* c = record.observations.conventions)
+    html += field("conventions", std::string(c->id) + " — " + std::string(c->label) +
+                                     format_text(", %g mm per count", s.distance_scale));
   if (record.observations.sector_name) html += field("sector", *record.observations.sector_name + " degrees");
   if (record.observations.target_mm) html += field("target", format_text("%.0f mm", *record.observations.target_mm));
   return html + "</dl>";

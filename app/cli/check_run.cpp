@@ -155,6 +155,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
                 s0.device->serial};
   if (s0.health) o.health.push_back(health_reading(*s0.health, "before the run"));
   o.ranging_khz = before.ranging_khz.value_or(0);
+  o.conventions = before.conventions;
   o.sector_name = plan.sector ? std::optional(plan.sector->name) : std::nullopt;
   o.target_mm = plan.target_mm;
 

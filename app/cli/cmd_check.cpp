@@ -61,6 +61,9 @@ options:
                          time, the sector's histogram, the last lap from above) to archive with
                          the unit; written even when the run fails or is interrupted
   --distance-scale MM    mm per distance count, overriding the model's (see `decode --help`)
+  --conventions C        field (default): read the unit as real units of its model and firmware write
+                         (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
+                         docs/conventions.md lists every value and its source
 
 limit options (defaults in brackets):
   --scan-tolerance-pct P         scan rate within P % of the target [2]

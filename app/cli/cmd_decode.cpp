@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/session_cli.h"
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
@@ -53,6 +54,8 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
                        model's value (G1 1, G6 0.25, TG 0.5). Some vendor-SDK firmware uses other
                        scales (G6 0.5; TG firmware above 1.2 uses 1). From 0.000001 to 1000000;
                        a recording's scale outside that range is ignored with a warning.
+  --conventions C      field (default for raw bytes) or manual; a recording is read with the
+                       conventions it was made with unless this is given (docs/conventions.md)
   --mcap OUT.mcap      also write the laps as an MCAP file (the topics of `ydscope-cli export
                        --help`; --filter does not apply to it). Raw bytes carry no times: each
                        byte is timed as if it arrived at the model's baud rate from t=0 (Unix
@@ -178,6 +181,8 @@ void write_mcap(const Arguments& args, const std::string& path, bool recording, 
   McapExportOptions options = mcap_options_from(args);
   options.ros.model = profile.model;
   options.ros.distance_scale = scale;
+  // Raw bytes are a real unit's: the field's reading unless told otherwise.
+  options.ros.reading = recording ? reading_option(args) : reading_option(args).value_or(Reading::Field);
   std::string error;
   auto exporter = McapRecordingExport::create(out, options, error);
   if (!exporter) throw std::runtime_error(error);
@@ -199,16 +204,17 @@ void write_mcap(const Arguments& args, const std::string& path, bool recording, 
 }
 
 int run_decode(std::span<const std::string> raw) {
-  const Arguments args(raw, with_mcap_value_options({"model", "format", "filter", "distance-scale", "mcap"}),
+  const Arguments args(raw,
+                       with_mcap_value_options({"model", "format", "filter", "distance-scale", "mcap", "conventions"}),
                        with_mcap_flags({"force"}), /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (or - for standard input)");
   const InputFile input = open_input(path);
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
-  const auto recording =
-      path != "-" && is_recording_file(path)
-          ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"), scale_option))
-          : std::nullopt;
+  const auto recording = path != "-" && is_recording_file(path)
+                             ? std::optional(recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"),
+                                                                     scale_option, reading_option(args)))
+                             : std::nullopt;
   const std::string model = recording ? "" : args.required("model");
   const ModelProfile* profile = recording ? recording->profile : find_profile(model);
   if (!profile) throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
@@ -232,7 +238,11 @@ int run_decode(std::span<const std::string> raw) {
       recording ? recording_distance_scale(scale_option, args.value("model").has_value(), recording->summary.metadata)
                 : scale_option;
 
-  ScanDecoder decoder(*profile, scale);
+  // Raw bytes are a real unit's: read them as the field does unless told otherwise.
+  const UnitConventions& conventions =
+      recording ? *recording->conventions
+                : conventions_for(*profile, std::nullopt, reading_option(args).value_or(Reading::Field));
+  ScanDecoder decoder(*profile, conventions, scale);
   JsonOut out(stdout);
   LapPrinter printer(out, format, profile->ct_carries_info);
   Lap filtered;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/session_cli.h"
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/mcap_output.h"
@@ -48,6 +49,8 @@ options:
   --mcap OUT.mcap    the file to write; an existing file is refused unless --force is given
   --model MODEL      decode as this model instead of the recording's
   --distance-scale X mm per raw distance unit, instead of the recording's
+  --conventions C    field or manual, instead of the conventions the recording was made with
+                     (recordings without them were read as the manuals say)
 )" YDSCOPE_MCAP_OPTIONS_HELP R"(  --force            overwrite OUT.mcap
 
 On a terminal, progress is shown on stderr. Output: one line on stdout,
@@ -64,7 +67,8 @@ examples:
 using Clock = std::chrono::steady_clock;
 
 int run_export(std::span<const std::string> raw) {
-  const Arguments args(raw, with_mcap_value_options({"mcap", "model", "distance-scale"}), with_mcap_flags({"force"}),
+  const Arguments args(raw, with_mcap_value_options({"mcap", "model", "distance-scale", "conventions"}),
+                       with_mcap_flags({"force"}),
                        /*max_positionals=*/1);
   const std::string path = args.single_positional("REC.ydrec");
   const std::string out = args.required("mcap");
@@ -80,6 +84,7 @@ int run_export(std::span<const std::string> raw) {
   const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Decode, args.value("model"));
   options.ros.model = plan.profile->model;
   options.ros.distance_scale = args.number("distance-scale", 1e-6, 1e6);
+  options.ros.reading = reading_option(args);
 
   std::string error;
   auto reader = RecordingReader::open(path, error);

@@ -20,12 +20,16 @@ options:
   --model MODEL   auto (default: detected from the device-info model code), G1, G6, TG15, TG30, TG50
   --baud B        line rate; default the model's (G1 230400, G6/TG 512000; both tried when the
                   model is auto); auto tries 230400, 512000, 128000 and 115200
+  --conventions C field (default): read the unit as real units of its model and firmware write
+                  (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
+                  docs/conventions.md lists every value and its source
 
 output:
   {"model":"G6","model_code":13,"firmware":"1.2","hardware":1,"serial":"...",
    "health":{"command":"A5 91","status":0,"error_code":0,"summary":"ok"}|null,
    "scan_hz":8|null,"ranging_khz":9|null,"port":"/dev/ttyUSB0 at 512000 baud","baud":512000,
-   "distance_scale":0.25}
+   "distance_scale":0.5,
+   "conventions":{"id":"g6-field","reading":"field","label":"field (vendor SDK): S/2 mm, ..."}}
   health, scan_hz and ranging_khz are null when the device did not answer that question.
 
 exit status: 0 the device answered; 1 it could not be opened or did not answer (one sentence on

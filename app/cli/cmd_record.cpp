@@ -68,6 +68,9 @@ options:
   --model MODEL    auto (default: detect from the device info), G1, G6, TG15, TG30, TG50; with
                    several --port, once for all or once per --port
   --baud B         line rate, or auto to probe (default: the model's, 230400 when auto); like --model
+  --conventions C  field (default): read the unit as real units of its model and firmware write
+                   (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
+                   docs/conventions.md lists every value and its source
   --seconds S      stop after S seconds of scanning (default: until Ctrl-C)
   --force          overwrite FILE and OUT.mcap
 )" YDSCOPE_MCAP_OPTIONS_HELP R"(

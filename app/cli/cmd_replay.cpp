@@ -12,6 +12,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 
+#include "app/cli/session_cli.h"
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
@@ -40,6 +41,8 @@ with their original timing, and decodes them into laps exactly as `ydscope-cli d
                        the same lines, and the same as decode of FILE.
   --model MODEL        decode as this model instead of the one the recording names
   --distance-scale X   mm per raw distance unit, instead of the one used while recording
+  --conventions C      field or manual, instead of the conventions the recording was made with
+                       (recordings without them were read as the manuals say)
 
 Ctrl-C stops early; the summary of what was played is still printed. A recording cut off by a
 killed recorder plays up to its last complete record, with a warning on stderr. A record time
@@ -60,7 +63,7 @@ std::atomic<bool> interrupted{false};
 extern "C" void replay_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
 
 int run_replay(std::span<const std::string> raw) {
-  const Arguments args(raw, {"speed", "format", "model", "distance-scale"}, {}, /*max_positionals=*/1);
+  const Arguments args(raw, {"speed", "format", "model", "distance-scale", "conventions"}, {}, /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (a .ydrec recording)");
   require_existing_file(path, "recording");
   const double speed = args.number("speed", 0, kMaxReplaySpeed).value_or(1.0);
@@ -70,7 +73,8 @@ int run_replay(std::span<const std::string> raw) {
   const LapFormat format = parse_lap_format(args.value("format"), LapFormat::Jsonl);
 
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
-  const RecordingPlan plan = recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"), scale_option);
+  const RecordingPlan plan =
+      recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"), scale_option, reading_option(args));
   print_recording_warnings("ydscope-cli replay", plan.warnings());
   if (plan.several_sources()) {
     std::signal(SIGINT, replay_on_signal);
@@ -86,7 +90,7 @@ int run_replay(std::span<const std::string> raw) {
   auto link = ReplayLink::open(io, path, {.speed = speed}, error);
   if (!link) throw std::runtime_error(error);  // the file changed since the plan read it
 
-  ScanDecoder decoder(profile, scale);
+  ScanDecoder decoder(profile, *plan.conventions, scale);
   JsonOut out(stdout);
   LapPrinter printer(out, format, profile.ct_carries_info);
   const auto on_lap = [&](const Lap& lap) {

@@ -34,6 +34,9 @@ options:
   --format FORMAT       jsonl (default): one JSON object per lap, then the summary; csv: a header,
                         then one row per point (see `decode --help`); summary: only the summary
   --distance-scale MM   mm per distance count, overriding the model's (see `decode --help`)
+  --conventions C       field (default): read the unit as real units of its model and firmware write
+                        (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
+                        docs/conventions.md lists every value and its source
 
 output: the schema of `ydscope-cli decode --help` (lap objects, then one summary object, whose
 bytes count everything the lidar sent, replies included), with the health the session knows:

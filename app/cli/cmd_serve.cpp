@@ -58,6 +58,9 @@ options:
   --mcap FILE        also record everything to this MCAP file (chunks flushed every second)
   --model MODEL      auto (default: detect from the device info), G1, G6, TG15, TG30, TG50
   --baud B           line rate, or auto to probe (default: the model's, 230400 when auto)
+  --conventions C    field (default): read the unit as real units of its model and firmware write
+                     (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
+                     docs/conventions.md lists every value and its source
   --queue N          messages queued per client before its oldest are dropped (default 64)
   --seconds S        stop after S seconds (default: until Ctrl-C or SIGTERM)
 )" YDSCOPE_MCAP_OPTIONS_HELP R"(  --force            overwrite FILE

@@ -24,6 +24,9 @@ options:
   --port PATH        serial port or tcp://host:port
   --model MODEL      auto (default), G1, G6, TG15, TG30, TG50
   --baud B           line rate, or auto to probe (see `ydscope-cli info --help`)
+  --conventions C    field (default): read the unit as real units of its model and firmware write
+                     (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
+                     docs/conventions.md lists every value and its source
   --scan-hz F        target scan frequency in Hz (the models' range is 5 to 12 Hz)
   --ranging-khz K    target ranging frequency in kHz (G6/TG: 4, 8 or 9)
 

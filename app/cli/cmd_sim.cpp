@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/cli/session_cli.h"
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "core/protocol/model_profile.h"
@@ -43,6 +44,9 @@ G6/TG 512000), and can inject faults. It serves until SIGINT or SIGTERM, then ex
                          decision (default 1). The same seed gives the same bytes.
   --distance-scale X     encode ranges with X mm per raw unit instead of the manual's (G1 1,
                          G6 0.25, TG 0.5), like vendor firmware variants.
+  --conventions C        field (default): emit what a real unit of the model and firmware emits
+                         (G6 S/2 mm at 18 k samples/s, TG S mm at 20 k, TG's byte before the zero
+                         packet); manual: the manual's literal reading
   --health-quirk         answer only the other health command (A5 91 <-> A5 92), as some units do.
   --host-compat NAME     manual (default): answer exactly what the model's manual lists.
                          ydlidar-sdk: also answer what YDLIDAR's SDK (1.2.19, and its ROS 2 driver)
@@ -129,6 +133,7 @@ int run_sim(std::span<const std::string> raw) {
                         "scene",
                         "seed",
                         "distance-scale",
+                        "conventions",
                         "zero-log",
                         "corrupt",
                         "drop",
@@ -158,6 +163,7 @@ int run_sim(std::span<const std::string> raw) {
     throw UsageError("unknown scene '" + options.device.scene + "'; the scenes are " + std::string(scene_names()));
   options.device.seed = static_cast<std::uint64_t>(args.integer("seed", 0, INT64_MAX).value_or(1));
   options.device.distance_scale = args.number("distance-scale", 0.001, 1000.0);
+  options.device.reading = reading_option(args).value_or(Reading::Field);
   options.device.health_quirk = args.has("health-quirk");
   if (const auto compat = args.value("host-compat")) {
     const auto parsed = host_compat_from_name(*compat);

@@ -18,6 +18,7 @@
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/source_options.h"
+#include "core/record/recorded_conventions.h"
 #include "core/bridge/live_topics.h"
 #include "core/link/sources_recording.h"
 #include "core/record/recording_reader.h"
@@ -91,8 +92,9 @@ std::vector<std::uint64_t> laps_per_source(const std::string& path, const Record
   std::vector<SourcePlan> plans;
   for (std::size_t id = 0; id < summary.sources.size(); ++id) {
     const RecordingMetadata& metadata = summary.sources[id].metadata;
-    plans.push_back({source_label(metadata, id), metadata.model ? find_profile(*metadata.model) : nullptr,
-                     metadata.distance_scale});
+    const ModelProfile* profile = metadata.model ? find_profile(*metadata.model) : nullptr;
+    plans.push_back({source_label(metadata, id), profile, metadata.distance_scale,
+                     profile ? &recorded_conventions(metadata, *profile, std::nullopt) : nullptr});
   }
   SourceDecoders decoders(plans);
   std::string error;

@@ -9,8 +9,9 @@ namespace ydscope::cli {
 
 RecordingPlan recording_plan_or_throw(const std::string& path, RecordingUse use,
                                       const std::optional<std::string>& model_option,
-                                      const std::optional<double>& scale_option) {
-  RecordingPlan plan = plan_recording(path, use, model_option, scale_option);
+                                      const std::optional<double>& scale_option,
+                                      std::optional<Reading> reading_option) {
+  RecordingPlan plan = plan_recording(path, use, model_option, scale_option, reading_option);
   switch (plan.refusal) {
     case RecordingRefusal::None: return plan;
     case RecordingRefusal::Unsupported:

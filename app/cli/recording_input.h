@@ -17,7 +17,8 @@ namespace ydscope::cli {
 // read or that needs --model, std::runtime_error (exit 1) otherwise.
 RecordingPlan recording_plan_or_throw(const std::string& path, RecordingUse use,
                                       const std::optional<std::string>& model_option,
-                                      const std::optional<double>& scale_option = std::nullopt);
+                                      const std::optional<double>& scale_option = std::nullopt,
+                                      std::optional<Reading> reading_option = std::nullopt);
 
 // Each of `warnings` on stderr: "PROGRAM: warning: SENTENCE".
 void print_recording_warnings(const char* program, const std::vector<std::string>& warnings);

@@ -15,12 +15,24 @@ constexpr std::chrono::seconds kConnectPatience{60};
 }  // namespace
 
 std::set<std::string> session_value_options(std::set<std::string> more) {
-  more.insert({"port", "model", "baud"});
+  more.insert({"port", "model", "baud", "conventions"});
   return more;
 }
 
+std::optional<Reading> reading_option(const Arguments& args) {
+  const auto text = args.value("conventions");
+  if (!text) return std::nullopt;
+  const auto reading = parse_reading(*text);
+  if (!reading)
+    throw UsageError("unknown --conventions '" + *text +
+                     "'; use field (as real units write) or manual (as the manual says)");
+  return reading;
+}
+
 SessionConfig session_config_from(const Arguments& args, bool scan) {
-  return session_config_for(args.required("port"), args.value("model"), args.value("baud"), scan);
+  SessionConfig config = session_config_for(args.required("port"), args.value("model"), args.value("baud"), scan);
+  config.reading = reading_option(args);
+  return config;
 }
 
 SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model_option,
@@ -103,6 +115,18 @@ void write_device_fields(JsonOut& out, const SessionSnapshot& s) {
   out.integer(s.baud);
   out.raw(R"(,"distance_scale":)");
   out.fixed(s.distance_scale, 6);
+  out.raw(R"(,"conventions":)");
+  if (s.conventions) {
+    out.raw(R"({"id":)");
+    out.string(s.conventions->id);
+    out.raw(R"(,"reading":)");
+    out.string(reading_name(s.conventions->reading));
+    out.raw(R"(,"label":)");
+    out.string(s.conventions->label);
+    out.raw("}");
+  } else {
+    out.raw("null");
+  }
 }
 
 }  // namespace ydscope::cli

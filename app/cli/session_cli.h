@@ -14,7 +14,11 @@ namespace ydscope::cli {
 // The options every device subcommand takes (value options).
 std::set<std::string> session_value_options(std::set<std::string> more);
 
-// --port PATH|tcp://host:port (required), --model auto|MODEL, --baud B|auto. UsageError on mistakes.
+// --conventions field|manual: how a unit's bytes are read (unit_conventions.h); empty when not given.
+std::optional<Reading> reading_option(const Arguments& args);
+
+// --port PATH|tcp://host:port (required), --model auto|MODEL, --baud B|auto, --conventions.
+// UsageError on mistakes.
 SessionConfig session_config_from(const Arguments& args, bool scan);
 // The same from the texts of one port's options (several lidars: source_options.h).
 SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model,

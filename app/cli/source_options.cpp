@@ -14,6 +14,7 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
   for (SourceText& text : source_texts_from(args)) {
     SourceSpec spec;
     spec.config = session_config_for(text.port, text.model, text.baud, scan);
+    spec.config.reading = reading_option(args);
     std::string error;
     const auto address = parse_link_address(text.port, error);
     if (!seen_ports.insert(address->text()).second) throw UsageError("--port " + text.port + " is given twice");

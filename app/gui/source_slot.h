@@ -66,6 +66,7 @@ struct SourceSlot {
   void carry_out(const ui::SetRangingKhz& request);
   void carry_out(const ui::RefreshHealth& request);
   void carry_out(const ui::SetDistanceScale& request);
+  void carry_out(const ui::SetReading& request);
 
   ui::SourceLook look;
   ui::UiModel model;

@@ -38,5 +38,6 @@ void SourceSlot::carry_out(const ui::RefreshHealth&) {
 }
 
 void SourceSlot::carry_out(const ui::SetDistanceScale& request) { session.set_distance_scale(request.mm_per_count); }
+void SourceSlot::carry_out(const ui::SetReading& request) { session.set_reading(request.reading); }
 
 }  // namespace ydscope::gui

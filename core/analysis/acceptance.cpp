@@ -88,15 +88,23 @@ CriterionResult scan_jitter(const CheckObservations& o, const AcceptanceLimits& 
   return r;
 }
 
+// What the unit should emit at its ranging code: the conventions' table, else the code's name.
+double expected_samples_per_s(const CheckObservations& o) {
+  if (o.conventions && o.profile)
+    if (const auto rate = o.conventions->samples_per_s(*o.profile, o.ranging_khz)) return *rate;
+  return o.ranging_khz * 1000.0;
+}
+
 CriterionResult sample_rate(const CheckObservations& o, const AcceptanceLimits& l) {
-  const double expected = o.ranging_khz * 1000.0;
-  CriterionResult r{
-      "sample_rate",
-      "sample rate",
-      "",
-      format_text("%u kHz ± %.1f %% (the ranging frequency in use)", o.ranging_khz, l.sample_rate_tolerance_pct),
-      Verdict::Fail,
-      std::nullopt};
+  const double expected = expected_samples_per_s(o);
+  CriterionResult r{"sample_rate",
+                    "sample rate",
+                    "",
+                    format_text("%.0f samples/s ± %.1f %% (ranging code %u kHz, %s conventions)", expected,
+                                l.sample_rate_tolerance_pct, o.ranging_khz,
+                                o.conventions ? std::string(o.conventions->id).c_str() : "the manual's"),
+                    Verdict::Fail,
+                    std::nullopt};
   if (o.ranging_khz == 0) r.limit = "the ranging frequency in use (not read)";
   if (o.timing.normal_laps == 0) {
     r.measured = "no complete lap";

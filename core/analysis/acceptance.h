@@ -11,6 +11,7 @@
 #include "core/analysis/lap_timing.h"
 #include "core/analysis/sector_statistics.h"
 #include "core/protocol/model_profile.h"
+#include "core/protocol/unit_conventions.h"
 
 namespace ydscope {
 
@@ -41,7 +42,9 @@ struct CheckObservations {
   IdentityObservation identity;
   std::vector<HealthObservation> health;
   LapTimingStatistics timing;
-  std::uint16_t ranging_khz = 0;  // in use (A5 D1 read-back)
+  std::uint16_t ranging_khz = 0;  // in use (A5 D1 read-back): the ranging code's name
+  // How the unit's bytes were read: what it should emit per ranging code (unit_conventions.h).
+  const UnitConventions* conventions = nullptr;
   LinkObservation link;
   std::uint64_t points = 0;  // all points received while measuring
   std::uint64_t valid_points = 0;

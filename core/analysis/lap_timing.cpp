@@ -45,7 +45,8 @@ void LapTimingAccumulator::add(const Lap& lap) {
   previous_close_ns_ = lap.last_rx_ns;
   raw_angles_.clear();
   for (const LapPoint& p : lap.points)
-    raw_angles_.push_back(p.range_mm > 0.0f ? p.angle_deg - angle_correction_deg(p.range_mm) : p.angle_deg);
+    raw_angles_.push_back(lap.angles_corrected && p.range_mm > 0.0f ? p.angle_deg - angle_correction_deg(p.range_mm)
+                                                                    : p.angle_deg);
   steps_.clear();
   double covered = 0;
   for (std::size_t i = 1; i < raw_angles_.size(); ++i) {

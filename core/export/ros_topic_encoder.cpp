@@ -1,5 +1,7 @@
 #include "core/export/ros_topic_encoder.h"
 
+#include "core/record/recorded_conventions.h"
+
 #include <charconv>
 #include <cstdio>
 #include <ctime>
@@ -68,10 +70,19 @@ std::optional<std::uint64_t> parse_iso8601_utc_ns(std::string_view text) {
 }
 
 RosTopicEncoder::RosTopicEncoder(RosExportOptions options) : options_(std::move(options)) {
-  if (options_.model) {
-    profile_ = &profile_for(*options_.model);
-    decoder_ = std::make_unique<ScanDecoder>(*profile_, options_.distance_scale);
-  }
+  if (options_.model) profile_ = &profile_for(*options_.model);
+}
+
+void RosTopicEncoder::make_decoder() {
+  if (decoder_) return;
+  if (!profile_ && metadata_.model) profile_ = find_profile(*metadata_.model);
+  if (!profile_) return;
+  // The recorded scale belonged to the recorded model: a forced model takes only a forced scale.
+  const std::optional<double> scale = options_.distance_scale ? options_.distance_scale
+                                      : options_.model        ? std::nullopt
+                                                              : metadata_.distance_scale;
+  decoder_ =
+      std::make_unique<ScanDecoder>(*profile_, recorded_conventions(metadata_, *profile_, options_.reading), scale);
 }
 
 void RosTopicEncoder::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns,
@@ -88,11 +99,6 @@ void RosTopicEncoder::metadata(const RecordingMetadata& changes) {
   metadata_.merge(changes);
   if (changes.start_wall_time)
     if (const auto ns = parse_iso8601_utc_ns(*changes.start_wall_time)) wall_start_ns_ = *ns;
-  if (profile_ || !metadata_.model) return;
-  profile_ = find_profile(*metadata_.model);
-  if (profile_)
-    decoder_ = std::make_unique<ScanDecoder>(
-        *profile_, options_.distance_scale ? options_.distance_scale : metadata_.distance_scale);
 }
 
 std::uint64_t RosTopicEncoder::log_time(std::int64_t t_ns) const {
@@ -109,6 +115,7 @@ void RosTopicEncoder::device_bytes(std::span<const std::uint8_t> bytes, std::int
     encode_link_bytes(bytes, message_);
     emit(RosTopic::DeviceBytes, log_time(t_ns), message_);
   }
+  make_decoder();
   if (decoder_) decoder_->feed(bytes, t_ns, [&](const Lap& lap) { on_lap(lap, emit); });
   maybe_diagnostics(t_ns, emit);
 }
@@ -207,7 +214,10 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
   if (reported_scan_hz_) v.emplace_back("scan_hz_reported", fixed(*reported_scan_hz_, 1));
   v.emplace_back("ranging_khz", extra("ranging_khz").value_or("unknown"));
   if (const auto pdp = extra("power_down_protection")) v.emplace_back("power_down_protection", *pdp);
-  if (decoder_) v.emplace_back("distance_scale_mm", fixed(decoder_->distance_scale(), 4));
+  if (decoder_) {
+    v.emplace_back("distance_scale_mm", fixed(decoder_->distance_scale(), 4));
+    v.emplace_back("conventions", std::string(decoder_->conventions().id));
+  }
   v.emplace_back("laps", std::to_string(laps_));
   if (c) {
     v.emplace_back("packets", std::to_string(c->packets));

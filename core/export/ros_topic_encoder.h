@@ -42,9 +42,11 @@ std::span<const RosTopicInfo> ros_topics();
 struct RosExportOptions {
   RosFrameOptions frame;
   std::optional<Model> model;            // forced; otherwise the recording's model
-  std::optional<double> distance_scale;  // forced; otherwise the recording's, else the model's
-  InterferenceFilter filter;             // applied to /scan and /points only
-  bool link_bytes = true;                // publish /ydscope/device_bytes and /ydscope/host_bytes
+  std::optional<double> distance_scale;  // forced; otherwise the recording's, else the conventions'
+  // Forced; otherwise the conventions the recording was made with (recorded_conventions.h).
+  std::optional<Reading> reading;
+  InterferenceFilter filter;  // applied to /scan and /points only
+  bool link_bytes = true;     // publish /ydscope/device_bytes and /ydscope/host_bytes
 };
 
 // ns since the Unix epoch of "2026-11-22T02:20:00.123Z" (fraction optional); empty if malformed.
@@ -82,6 +84,9 @@ class RosTopicEncoder {
 
  private:
   void on_lap(const Lap& lap, MessageFn emit);
+  // The decoder, once the model is known: the metadata written at the start names the
+  // conventions, so it is made with the first device bytes.
+  void make_decoder();
   void maybe_diagnostics(std::int64_t t_ns, MessageFn emit);
   std::uint64_t log_time(std::int64_t t_ns) const;
 

@@ -6,6 +6,7 @@
 #include "core/link/device_probe.h"
 #include "core/link/link_address.h"
 #include "core/link/recorded_device.h"
+#include "core/record/recorded_conventions.h"
 
 namespace ydscope {
 
@@ -51,8 +52,10 @@ StartupOutcome start_replay(const StartupParts& parts, const SessionConfig& conf
   outcome.profile = &profile_for(config.model.value_or(Model::G6));
   DeviceDetails device;
   device.profile = outcome.profile;
-  if (const RecordingMetadata* recorded = parts.link.link()->recording_metadata())
-    device = recorded_device(*recorded, *outcome.profile);
+  const RecordingMetadata* recorded = parts.link.link()->recording_metadata();
+  if (recorded) device = recorded_device(*recorded, *outcome.profile);
+  outcome.conventions =
+      &recorded_conventions(recorded ? *recorded : RecordingMetadata{}, *outcome.profile, config.reading);
   parts.board.publish([&device](SessionSnapshot& s) { s.device = device; });
   return outcome;
 }
@@ -116,6 +119,9 @@ boost::asio::awaitable<StartupOutcome> start_device(const StartupParts& parts, c
     co_return outcome;
   }
   const DeviceDetails details = make_device_details(*info, *outcome.profile);
+  outcome.sdk_firmware = firmware_as_sdk_reads(info->firmware_major, info->firmware_minor);
+  outcome.conventions =
+      &conventions_for(*outcome.profile, outcome.sdk_firmware, config.reading.value_or(Reading::Field));
   parts.board.publish([&](SessionSnapshot& s) {
     s.device = details;
     s.baud = baud;

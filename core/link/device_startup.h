@@ -26,7 +26,9 @@ struct StartupOutcome {
   std::string error;  // when not ok: one sentence saying what failed and what to try
   std::string note;   // when ok: what the user should know (the model guessed, health unreadable)
   const ModelProfile* profile = nullptr;
-  bool accepts_commands = true;  // false for a replay: it is decoded, never commanded
+  const UnitConventions* conventions = nullptr;  // how its bytes are read
+  std::optional<FirmwareVersion> sdk_firmware;   // as the vendor SDK reads A5 90's bytes
+  bool accepts_commands = true;                  // false for a replay: it is decoded, never commanded
   std::optional<bool> power_down_protection;
 };
 

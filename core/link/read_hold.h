@@ -19,8 +19,9 @@ struct ReadHoldInputs {
 // Zero when reading should go on at once: no line limit, or a hold too short to pay for itself.
 // Otherwise until the lap is due to close (less its slack), or the least time the forecast bytes
 // need if that is longer: all but one packet (which may come as one burst) at line rate, or at the
-// stream's average rate with a margin. Never longer than the line needs to fill a safe part of the
-// kernel's tty buffer, so nothing can be lost while holding.
+// stream's average rate with a margin. Never so long that, at full line rate, what piles up (a
+// packet already waiting, the hold, a timer firing late) reaches the point where n_tty throttles
+// the driver, with a margin: a USB bridge would lose bytes from there on.
 std::chrono::nanoseconds read_hold(const ReadHoldInputs& in);
 
 }  // namespace ydscope

@@ -72,6 +72,7 @@ RecordingMetadata recording_metadata_of(const SessionSnapshot& s, const std::opt
   metadata.port = port;
   if (s.baud) metadata.baud = s.baud;
   metadata.distance_scale = distance_scale;
+  if (s.conventions) metadata.conventions = std::string(s.conventions->id);
   if (s.device && s.device->profile) {
     metadata.model = std::string(s.device->profile->name);
     if (s.device->model_code) {

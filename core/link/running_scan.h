@@ -8,10 +8,12 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "core/protocol/lap_end_forecast.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/scan_decoder.h"
+#include "core/protocol/stream_diagnosis.h"
 
 namespace ydscope {
 
@@ -24,7 +26,7 @@ class RunningScan {
 
   // A fresh decoder for `profile`, with the user's scale when one is set: a new device, or the
   // lap a stop cut short, which is no lap. Returns the scale in use (mm per count).
-  double restart(const ModelProfile& profile);
+  double restart(const ModelProfile& profile, const UnitConventions& conventions);
   // The user's scale (empty: the model's). Applies from the next restart.
   void set_scale_override(std::optional<double> mm_per_count) { scale_override_ = mm_per_count; }
   std::optional<double> distance_scale() const;
@@ -38,11 +40,15 @@ class RunningScan {
   bool keepalive_due(std::int64_t now_ns);
   // How long no byte came while scanning, when that is longer than `timeout`.
   std::optional<std::int64_t> stalled_for(std::int64_t now_ns, std::chrono::milliseconds timeout) const;
+  // Why the bytes since the last restart make no packets, in one sentence (StreamDiagnosis); empty
+  // once a packet has verified or while too few bytes have come.
+  std::optional<std::string> diagnosis(const ModelProfile& expected, std::uint32_t baud) const;
 
  private:
   LapStream& laps_;
   SessionCounters& counters_;
   std::unique_ptr<ScanDecoder> decoder_;
+  StreamDiagnosis diagnosis_;  // fed only until the decoder's first packet: a healthy stream skips it
   std::optional<double> scale_override_;
   std::int64_t scan_started_ns_ = 0;
   std::int64_t last_keepalive_ns_ = 0;

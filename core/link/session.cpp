@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 
@@ -54,6 +55,7 @@ void Session::stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
   impl_->post_stop_tap(std::move(tap), std::move(done));
 }
 void Session::set_distance_scale(std::optional<double> mm_per_count) { impl_->post_distance_scale(mm_per_count); }
+void Session::set_reading(Reading reading) { impl_->post_reading(reading); }
 SessionSnapshot Session::snapshot() const { return impl_->snapshot(); }
 SessionSnapshot Session::wait_until(const std::function<bool(const SessionSnapshot&)>& done,
                                     std::chrono::milliseconds timeout) const {
@@ -205,6 +207,16 @@ void Session::Impl::post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallbac
   });
 }
 
+void Session::Impl::post_reading(Reading reading) {
+  asio::post(io_, [this, reading] {
+    reading_override_ = reading;  // kept across reconnects
+    if (!profile_) return;
+    conventions_ = &conventions_for(*profile_, sdk_firmware_, reading);
+    new_decoder();
+    record_metadata();
+  });
+}
+
 void Session::Impl::post_distance_scale(std::optional<double> scale) {
   asio::post(io_, [this, scale] {
     scan_.set_scale_override(scale);
@@ -231,8 +243,11 @@ SessionSnapshot Session::Impl::wait_until(const std::function<bool(const Session
 // ---- the byte path --------------------------------------------------------------------------
 
 void Session::Impl::new_decoder() {
-  const double scale = scan_.restart(*profile_);
-  board_.publish([scale](SessionSnapshot& s) { s.distance_scale = scale; });
+  const double scale = scan_.restart(*profile_, *conventions_);
+  board_.publish([scale, conventions = conventions_](SessionSnapshot& s) {
+    s.distance_scale = scale;
+    s.conventions = conventions;
+  });
 }
 
 // ---- the tick: rates, stall watchdog, power-down keepalive ----------------------------------
@@ -272,6 +287,13 @@ void Session::Impl::on_tick() {
                             " while scanning: is the lidar powered and its cable seated?";
     board_.set_state(LinkState::Stalled, why);
     link_.fail(why);
+  } else if (ByteLink* link = link_.link(); link && profile_) {
+    // Bytes flow but no packet verifies: say why (wrong baud, another layout) rather than wait.
+    const auto baud = static_cast<std::uint32_t>(std::lround(link->line_bytes_per_s() * 10));
+    if (const std::optional<std::string> why = scan_.diagnosis(*profile_, baud)) {
+      board_.set_state(LinkState::Stalled, *why);
+      link_.fail(*why);
+    }
   }
 }
 

@@ -50,7 +50,10 @@ struct SessionConfig {
                                                  // back (see PortWatch) ends the wait at once
   std::chrono::milliseconds first_backoff{250};  // doubling after each failed reopen ...
   std::chrono::milliseconds max_backoff{4000};   // ... up to this (a TCP bridge: at most 750 ms)
-  std::optional<double> distance_scale;          // overrides the profile's mm per count
+  std::optional<double> distance_scale;          // overrides the conventions' mm per count
+  // How the unit's bytes are read (unit_conventions.h). Empty: as real units of its model and
+  // firmware write them, or for a replay, as the recording was read when it was made.
+  std::optional<Reading> reading;
   std::chrono::milliseconds reply_timeout{1000};
   int command_attempts = 2;                       // sends per command before it is reported failed
   std::chrono::milliseconds stall_timeout{2000};  // no byte for this long while scanning = stalled
@@ -87,6 +90,8 @@ class Session {
   void stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done = {});
   // Empty: back to the model profile's scale. Applies from the next decoded byte.
   void set_distance_scale(std::optional<double> mm_per_count);
+  // Reads the unit's bytes the field's way or the manual's way from the next byte on.
+  void set_reading(Reading reading);
 
   // Any thread; a copy under a mutex plus relaxed counter loads: cheap enough for every frame.
   SessionSnapshot snapshot() const;

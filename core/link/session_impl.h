@@ -40,6 +40,7 @@ class Session::Impl {
   void post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
   void post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
   void post_distance_scale(std::optional<double> scale);
+  void post_reading(Reading reading);
   SessionSnapshot snapshot() const;
   SessionSnapshot wait_until(const std::function<bool(const SessionSnapshot&)>& done,
                              std::chrono::milliseconds timeout) const;
@@ -84,7 +85,10 @@ class Session::Impl {
   std::optional<SessionConfig> pending_config_;
   std::optional<SessionConfig> config_;
   const ModelProfile* profile_ = nullptr;
-  RunningScan scan_{stream_, counters_};  // decoding, publishing, stall and keep-alive watch
+  const UnitConventions* conventions_ = nullptr;  // with profile_: how the bytes are read
+  std::optional<FirmwareVersion> sdk_firmware_;   // the unit's, in the SDK's byte order
+  std::optional<Reading> reading_override_;       // set_reading's, over the config's
+  RunningScan scan_{stream_, counters_};          // decoding, publishing, stall and keep-alive watch
   IntentRunner intents_{{link_, sequencer_, board_, scan_, [this] { new_decoder(); }, [this] { record_metadata(); }}};
   std::int64_t last_rate_tick_ns_ = 0;
   RecordingControl recording_{link_};

@@ -12,6 +12,7 @@
 #include "core/link/session_counters.h"
 #include "core/protocol/commands.h"
 #include "core/protocol/model_profile.h"
+#include "core/protocol/unit_conventions.h"
 #include "core/stream/lap_stream.h"
 
 namespace ydscope {
@@ -50,11 +51,12 @@ struct SessionSnapshot {
   std::uint32_t baud = 0;
   std::optional<DeviceDetails> device;
   std::optional<HealthReport> health;
-  std::optional<double> scan_hz;              // set value (A5 0D), not the measured rate
-  std::optional<std::uint16_t> ranging_khz;   // A5 D1
-  std::optional<bool> power_down_protection;  // known after toggling it
-  double distance_scale = 0;                  // mm per count in use
-  bool busy = false;                          // a command is running
+  std::optional<double> scan_hz;                 // set value (A5 0D), not the measured rate
+  std::optional<std::uint16_t> ranging_khz;      // A5 D1
+  std::optional<bool> power_down_protection;     // known after toggling it
+  double distance_scale = 0;                     // mm per count in use
+  const UnitConventions* conventions = nullptr;  // how the bytes are read (with the scale above)
+  bool busy = false;                             // a command is running
   std::string busy_what;
   std::optional<CommandResult> last_result;
   bool recording = false;

@@ -36,6 +36,7 @@ void Session::Impl::spawn_supervisor() {
     s.ranging_khz = fresh.ranging_khz;
     s.power_down_protection = fresh.power_down_protection;
     s.distance_scale = fresh.distance_scale;
+    s.conventions = fresh.conventions;
     s.last_result = fresh.last_result;
   });
   asio::co_spawn(io_, supervise(std::move(config)), [this](std::exception_ptr error) {
@@ -127,6 +128,9 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
     co_return false;
   }
   profile_ = outcome.profile;
+  sdk_firmware_ = outcome.sdk_firmware;
+  conventions_ =
+      reading_override_ ? &conventions_for(*profile_, sdk_firmware_, *reading_override_) : outcome.conventions;
   new_decoder();
   if (!outcome.accepts_commands) {  // a replay: decode what comes
     link_.listen_stream();

@@ -19,7 +19,8 @@ double normalize_degrees(double degrees) {
   return wrapped;
 }
 
-AngleCorrectionTable::AngleCorrectionTable(double distance_scale) : table_(65536) {
+AngleCorrectionTable::AngleCorrectionTable(double distance_scale, bool enabled) : table_(65536, 0.0f) {
+  if (!enabled) return;
   for (std::size_t raw = 0; raw < table_.size(); ++raw)
     table_[raw] = static_cast<float>(angle_correction_deg(static_cast<double>(raw) * distance_scale));
 }

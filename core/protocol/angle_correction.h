@@ -15,7 +15,8 @@ double normalize_degrees(double degrees);
 // Correction per raw distance value r (range = r * distance_scale), for r in [0, 65535].
 class AngleCorrectionTable {
  public:
-  explicit AngleCorrectionTable(double distance_scale);
+  // enabled false: all zero (a time-of-flight unit, read as the field reads it, needs none).
+  AngleCorrectionTable(double distance_scale, bool enabled);
   float operator[](std::uint16_t raw_distance) const { return table_[raw_distance]; }
 
  private:

@@ -43,6 +43,9 @@ struct Lap {
   std::uint32_t cut_points = 0;       // samples beyond kMaxPoints, dropped (only a damaged stream)
   std::int64_t first_rx_ns = 0;       // steady-clock receive time of the lap's first byte
   std::int64_t last_rx_ns = 0;        // receive time of the byte that closed the lap
+  // The triangulation correction was added to the angles (not on a time-of-flight TG read as the
+  // field reads it): analysis that needs the first-level angles takes it off only then.
+  bool angles_corrected = true;
 
   Lap() { points.reserve(kMaxPoints); }
   // CT information is trusted only when the CRC8 did not fail.

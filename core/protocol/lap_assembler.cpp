@@ -24,8 +24,12 @@ float wrap_degrees(double degrees) {
 
 }  // namespace
 
-LapAssembler::LapAssembler(const ModelProfile& profile, double distance_scale)
-    : profile_(&profile), distance_scale_(distance_scale), corrections_(distance_scale) {}
+LapAssembler::LapAssembler(const ModelProfile& profile, const UnitConventions& conventions, double distance_scale)
+    : profile_(&profile),
+      conventions_(&conventions),
+      lap_crc8_(conventions.byte_before_zero == ByteBeforeZero::LapCrc8),
+      distance_scale_(distance_scale),
+      corrections_(distance_scale, conventions.angle_correction) {}
 
 void LapAssembler::reset() {
   building_.points.clear();
@@ -47,6 +51,7 @@ void LapAssembler::start_lap(const PacketView& zero) {
   building_.packets = 0;
   building_.checksum_errors = 0;
   building_.cut_points = 0;
+  building_.angles_corrected = conventions_->angle_correction;
   building_.first_rx_ns = zero.first_rx_ns;
   building_.last_rx_ns = zero.rx_ns;
   packet_index_ = 0;
@@ -58,7 +63,7 @@ bool LapAssembler::add_packet(const PacketView& packet) {
   bool closed = false;
   if (packet.lap_start()) {
     if (in_lap_) {
-      if (profile_->last_crc_before_zero) {
+      if (lap_crc8_) {
         // Without a LastCRC byte there is nothing to compare with: the verdict is unknown, not
         // a failure (the README's schema: null where absent).
         if (!packet.last_crc) {
@@ -80,8 +85,11 @@ bool LapAssembler::add_packet(const PacketView& packet) {
     ++counters_.discarded_packets;
     return false;
   }
-  if (profile_->ct_carries_info) take_ct_info(packet);
-  if (profile_->last_crc_before_zero) crc_ = ct_crc8_update(crc_, packet.ct);
+  if (profile_->ct_carries_info)
+    take_ct_info(packet);
+  else if (packet_index_ == 0)
+    take_zero_packet_scan_rate(packet.ct);
+  if (lap_crc8_) crc_ = ct_crc8_update(crc_, packet.ct);
   add_points(packet);
   ++building_.packets;
   ++packet_index_;
@@ -102,6 +110,11 @@ void LapAssembler::take_ct_info(const PacketView& packet) {
     case kG1CtHealthIndex: building_.health_bits = g1_ct_health(packet.ct); break;
     default: break;
   }
+}
+
+void LapAssembler::take_zero_packet_scan_rate(std::uint8_t ct) {
+  const ZeroPacketScanRate& rate = conventions_->zero_packet_scan_rate;
+  if (rate.present && (ct >> 1) != 0) building_.scan_hz = g1_ct_scan_hz(ct) + rate.offset_hz;
 }
 
 void LapAssembler::add_points(const PacketView& packet) {

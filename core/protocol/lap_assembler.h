@@ -4,9 +4,11 @@
 // - Angles: first level (FSA>>1)/64 and (LSA>>1)/64, interpolated over LSN-1 steps along the
 //   clockwise difference (LSA < FSA crosses 360); second level adds the distance-only correction
 //   (angle_correction.h); results are normalised to [0, 360).
-// - Ranges: (S >> flag_bits) * distance_scale mm; G1's flag is S & 3.
+// - Ranges: (S >> flag_bits) * distance_scale mm; G1's flag is S & 3. The scale, whether the
+//   correction applies and where a scan rate sits come from the unit's conventions.
 // - G1: CT information by packet index (scan frequency, version, health) and the CRC8 verdict from
-//   the LastCRC of the zero packet that closes the lap.
+//   the LastCRC of the zero packet that closes the lap. G6/TG read as the field reads them: the
+//   zero packet's CT[7:1] is the scan rate.
 // - A lap runs from a zero packet (inclusive) to the next (exclusive). Packets before the first
 //   zero packet form a partial lap that is discarded. A lap is published when the next zero packet
 //   arrives; it stays readable through lap() until the following add_packet call.
@@ -17,6 +19,7 @@
 #include "core/protocol/lap.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/packet_decoder.h"
+#include "core/protocol/unit_conventions.h"
 
 namespace ydscope {
 
@@ -31,8 +34,8 @@ struct LapCounters {
 
 class LapAssembler {
  public:
-  // distance_scale: mm per raw unit after the flag bits (profile.distance_scale unless overridden).
-  LapAssembler(const ModelProfile& profile, double distance_scale);
+  // distance_scale: mm per raw unit after the flag bits (the conventions' unless overridden).
+  LapAssembler(const ModelProfile& profile, const UnitConventions& conventions, double distance_scale);
 
   // Returns true when this packet (a zero packet) closed a complete lap, now in lap().
   bool add_packet(const PacketView& packet);
@@ -48,8 +51,11 @@ class LapAssembler {
   void start_lap(const PacketView& zero);
   void add_points(const PacketView& packet);
   void take_ct_info(const PacketView& packet);
+  void take_zero_packet_scan_rate(std::uint8_t ct);
 
   const ModelProfile* profile_;
+  const UnitConventions* conventions_;
+  bool lap_crc8_;  // G1's LastCRC is checked
   double distance_scale_;
   AngleCorrectionTable corrections_;
   Lap building_;

@@ -61,30 +61,15 @@ constexpr std::array kTgCommands{
 
 // Scan-frequency limits and defaults are not in the manuals; they are the datasheets' 5-12 Hz range.
 constexpr ModelProfile tg(Model model, std::string_view name, std::uint8_t code) {
-  return {model,
-          name,
-          code,
-          512000,
-          0,
-          0.5,
-          false,
-          false,
-          Command::HealthStatusCode,
-          Command::RestartG6TG,
-          kG6TgRangingKhz,
-          9,
-          true,
-          5.0,
-          12.0,
-          10.0,
-          kTgCommands};
+  return {model,           name, code, 512000, 0,    false, false,      Command::HealthStatusCode, Command::RestartG6TG,
+          kG6TgRangingKhz, 9,    true, 5.0,    12.0, 10.0,  kTgCommands};
 }
 
 constexpr std::array<ModelProfile, 5> kProfiles{{
-    {Model::G1, "G1", 19, 230400, 2, 1.0, true, true, Command::HealthStatusBits, Command::RestartG1, kG1RangingKhz, 9,
-     false, 5.0, 12.0, 9.0, kG1Commands},
-    {Model::G6, "G6", 13, 512000, 0, 0.25, false, false, Command::HealthStatusCode, Command::RestartG6TG,
-     kG6TgRangingKhz, 9, true, 5.0, 12.0, 8.0, kG6Commands},
+    {Model::G1, "G1", 19, 230400, 2, true, true, Command::HealthStatusBits, Command::RestartG1, kG1RangingKhz, 9, false,
+     5.0, 12.0, 9.0, kG1Commands},
+    {Model::G6, "G6", 13, 512000, 0, false, false, Command::HealthStatusCode, Command::RestartG6TG, kG6TgRangingKhz, 9,
+     true, 5.0, 12.0, 8.0, kG6Commands},
     tg(Model::TG15, "TG15", 100),
     tg(Model::TG30, "TG30", 101),
     tg(Model::TG50, "TG50", 102),

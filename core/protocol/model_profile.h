@@ -27,10 +27,9 @@ struct ModelProfile {
   std::string_view name;    // "G1", "G6", "TG15", ...
   std::uint8_t model_code;  // device-info model byte seen in the field
   std::uint32_t default_baud;
-  // Range in mm = (S >> flag_bits) * distance_scale. The manuals: G1 S>>2 (flags in S&3),
-  // G6 S/4, TG S/2. Some vendor-SDK firmware differs, so sessions may override the scale.
+  // Range in mm = (S >> flag_bits) * a scale that depends on the unit's firmware and on how it
+  // is read (unit_conventions.h). G1 keeps its interference flag in S & 3.
   unsigned flag_bits;
-  double distance_scale;
   bool ct_carries_info;       // G1: CT[7:1] holds scan frequency, version, health by packet index
   bool last_crc_before_zero;  // G1: one CRC8 byte precedes every zero packet
   Command health_command;     // the manual's health command (the other one is the fallback)

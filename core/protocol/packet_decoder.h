@@ -56,13 +56,14 @@ struct PacketCounters {
   std::uint64_t packet_bytes = 0;     // bytes of those packets
   std::uint64_t checksum_errors = 0;  // well-formed headers whose checksum did not match
   std::uint64_t resync_bytes = 0;     // bytes skipped while hunting: junk, reply headers, failed starts
-  std::uint64_t last_crc_bytes = 0;   // G1 LastCRC bytes taken in front of zero packets
+  std::uint64_t last_crc_bytes = 0;   // bytes taken in front of zero packets (G1's LastCRC, TG's byte)
   std::uint64_t pending_bytes = 0;    // bytes held for a packet that is not complete yet
 };
 
 class PacketDecoder {
  public:
-  // last_crc_before_zero: G1 sends one LastCRC byte before each zero packet (ModelProfile).
+  // last_crc_before_zero: one byte precedes each zero packet (G1's LastCRC; a real TG's byte, see
+  // unit_conventions.h).
   explicit PacketDecoder(bool last_crc_before_zero = false);
 
   // Consumes all of `bytes`; calls the sink for every packet completed or found bad.

@@ -24,10 +24,15 @@ class AssemblingSink final : public PacketSink {
 
 }  // namespace
 
-ScanDecoder::ScanDecoder(const ModelProfile& profile, std::optional<double> distance_scale)
+ScanDecoder::ScanDecoder(const ModelProfile& profile, const UnitConventions& conventions,
+                         std::optional<double> distance_scale)
     : profile_(&profile),
-      packets_(profile.last_crc_before_zero),
-      assembler_(profile, distance_scale.value_or(profile.distance_scale)) {}
+      conventions_(&conventions),
+      packets_(conventions.byte_before_zero != ByteBeforeZero::None),
+      assembler_(profile, conventions, distance_scale.value_or(conventions.distance_scale)) {}
+
+ScanDecoder::ScanDecoder(const ModelProfile& profile, std::optional<double> distance_scale)
+    : ScanDecoder(profile, conventions_for(profile, std::nullopt, Reading::Manual), distance_scale) {}
 
 void ScanDecoder::feed(std::span<const std::uint8_t> bytes, std::int64_t rx_ns, LapCallback on_lap) {
   AssemblingSink sink(assembler_, forecast_, on_lap);

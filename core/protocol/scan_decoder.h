@@ -11,6 +11,7 @@
 #include "core/protocol/lap_end_forecast.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/packet_decoder.h"
+#include "core/protocol/unit_conventions.h"
 
 namespace ydscope {
 
@@ -33,7 +34,11 @@ using LapCallback = FunctionRef<void(const Lap&)>;
 
 class ScanDecoder {
  public:
-  // distance_scale overrides profile.distance_scale (mm per raw unit after the flag bits).
+  // Reads the unit as `conventions` say; distance_scale overrides their scale (mm per raw unit
+  // after the flag bits).
+  ScanDecoder(const ModelProfile& profile, const UnitConventions& conventions,
+              std::optional<double> distance_scale = std::nullopt);
+  // The manual's reading, as the tests that hold the decoder to the manuals want.
   explicit ScanDecoder(const ModelProfile& profile, std::optional<double> distance_scale = std::nullopt);
 
   // Consumes all of `bytes` received at rx_ns; calls on_lap for every lap completed. The Lap is
@@ -49,12 +54,14 @@ class ScanDecoder {
 
   DecoderCounters counters() const;
   const ModelProfile& profile() const { return *profile_; }
+  const UnitConventions& conventions() const { return *conventions_; }
   double distance_scale() const { return assembler_.distance_scale(); }
   // Back to a fresh decoder (buffers, lap state and counters).
   void reset();
 
  private:
   const ModelProfile* profile_;
+  const UnitConventions* conventions_;
   PacketDecoder packets_;
   LapAssembler assembler_;
   LapEndForecast forecast_;

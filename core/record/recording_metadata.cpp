@@ -81,6 +81,7 @@ std::string RecordingMetadata::encode() const {
   if (hardware) line("hardware", std::to_string(*hardware));
   if (serial) line("serial", *serial);
   if (software) line("software", *software);
+  if (conventions) line("conventions", *conventions);
   if (name) line("name", *name);
   if (pose) line("pose", format_pose(*pose));
   for (const auto& [key, value] : extra) line(key, value);
@@ -137,6 +138,8 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
       metadata.serial = value;
     } else if (key == "software") {
       metadata.software = value;
+    } else if (key == "conventions") {
+      metadata.conventions = value;
     } else if (key == "name") {
       metadata.name = value;
     } else if (key == "pose") {
@@ -163,6 +166,7 @@ void RecordingMetadata::merge(const RecordingMetadata& later) {
   take(hardware, later.hardware);
   take(serial, later.serial);
   take(software, later.software);
+  take(conventions, later.conventions);
   take(name, later.name);
   take(pose, later.pose);
   for (const auto& [key, value] : later.extra) extra[key] = value;

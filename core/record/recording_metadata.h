@@ -25,6 +25,9 @@ struct RecordingMetadata {
   std::optional<std::uint32_t> hardware;
   std::optional<std::string> serial;
   std::optional<std::string> software;
+  // How the bytes were read when recorded (a UnitConventions id). Older recordings lack it:
+  // ydscope then read every unit as its manual says.
+  std::optional<std::string> conventions;
   // Version 2, per source: what the user called it and where it sits in the common frame.
   std::optional<std::string> name;
   std::optional<Pose> pose;

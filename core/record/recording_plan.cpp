@@ -1,5 +1,7 @@
 #include "core/record/recording_plan.h"
 
+#include "core/record/recorded_conventions.h"
+
 namespace ydscope {
 namespace {
 
@@ -46,7 +48,7 @@ std::string nothing_to_replay(const RecordingSummary& summary, const std::string
 }
 
 RecordingPlan plan_recording(const std::string& path, RecordingUse use, const std::optional<std::string>& model_option,
-                             const std::optional<double>& scale_option) {
+                             const std::optional<double>& scale_option, std::optional<Reading> reading_option) {
   RecordingPlan plan;
   auto failure = RecordingOpenFailure::Unreadable;
   auto summary = summarize_recording(path, plan.refusal_text, &failure);
@@ -74,10 +76,12 @@ RecordingPlan plan_recording(const std::string& path, RecordingUse use, const st
       return plan;
     }
     source.distance_scale = recording_distance_scale(scale_option, model_option.has_value(), metadata);
+    source.conventions = &recorded_conventions(metadata, *source.profile, reading_option);
     plan.sources.push_back(std::move(source));
   }
   plan.profile = plan.sources.front().profile;
   plan.distance_scale = plan.sources.front().distance_scale;
+  plan.conventions = plan.sources.front().conventions;
   return plan;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/protocol/model_profile.h"
+#include "core/protocol/unit_conventions.h"
 #include "core/record/recording_metadata.h"
 #include "core/record/recording_reader.h"
 
@@ -34,7 +35,8 @@ enum class RecordingRefusal : std::uint8_t {
 struct SourcePlan {
   std::string name;  // source_label(): what its laps are tagged with
   const ModelProfile* profile = nullptr;
-  std::optional<double> distance_scale;  // empty: the profile's own
+  std::optional<double> distance_scale;          // empty: the conventions' own
+  const UnitConventions* conventions = nullptr;  // how its bytes are read (recorded_conventions)
 };
 
 struct RecordingPlan {
@@ -42,8 +44,9 @@ struct RecordingPlan {
   std::string refusal_text;               // one sentence; empty when usable
   RecordingSummary summary;               // when the file opened
   const ModelProfile* profile = nullptr;  // the model to decode with, when usable
-  std::optional<double> distance_scale;   // empty: the profile's own
-  // Every source, by id; sources[0] is profile and distance_scale above. Set when usable.
+  std::optional<double> distance_scale;   // empty: the conventions' own
+  const UnitConventions* conventions = nullptr;
+  // Every source, by id; sources[0] is profile, distance_scale and conventions above. Set when usable.
   std::vector<SourcePlan> sources;
   // A version-2 recording of several lidars: its laps are tagged with their source.
   bool several_sources() const { return summary.version >= kMultiSourceVersion; }
@@ -53,9 +56,11 @@ struct RecordingPlan {
 };
 
 // One pass over the file. model_option: a model name the user chose instead of the recording's;
-// scale_option: a distance scale (mm per count) the user chose.
+// scale_option: a distance scale (mm per count) the user chose; reading_option: field or manual
+// conventions instead of those the recording was made with.
 RecordingPlan plan_recording(const std::string& path, RecordingUse use, const std::optional<std::string>& model_option,
-                             const std::optional<double>& scale_option);
+                             const std::optional<double>& scale_option,
+                             std::optional<Reading> reading_option = std::nullopt);
 
 // The model to decode with: model_option when given, else the recording's. Null plus one sentence
 // in `error` when model_option is unknown, or the recording names no model or an unknown one.

@@ -4,8 +4,9 @@ namespace ydscope {
 
 SourceDecoders::SourceDecoders(const std::vector<SourcePlan>& sources) {
   for (const SourcePlan& source : sources)
-    decoders_.push_back(source.profile ? std::make_unique<ScanDecoder>(*source.profile, source.distance_scale)
-                                       : nullptr);
+    decoders_.push_back(source.profile && source.conventions
+                            ? std::make_unique<ScanDecoder>(*source.profile, *source.conventions, source.distance_scale)
+                            : nullptr);
 }
 
 void SourceDecoders::feed(const RecordView& record, SourceLapCallback on_lap) {

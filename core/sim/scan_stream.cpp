@@ -20,10 +20,11 @@ constexpr int kBisectionSteps = 14;
 constexpr double kConvergedDeg = 0.01;
 }  // namespace
 
-ScanStream::ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene,
-                       std::int64_t scene_epoch_ns, std::uint8_t version_major, std::uint8_t version_minor,
-                       std::uint64_t seed)
+ScanStream::ScanStream(const ModelProfile& profile, const UnitConventions& conventions, double distance_scale,
+                       const Scene& scene, std::int64_t scene_epoch_ns, std::uint8_t version_major,
+                       std::uint8_t version_minor, std::uint64_t seed)
     : profile_(&profile),
+      conventions_(&conventions),
       distance_scale_(distance_scale),
       max_range_mm_(static_cast<double>(0xFFFFu >> profile.flag_bits) * distance_scale),
       scene_(&scene),
@@ -36,7 +37,7 @@ ScanStream::ScanStream(const ModelProfile& profile, double distance_scale, const
 
 void ScanStream::start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz) {
   scan_hz_ = scan_centihz / 100.0;
-  ranging_hz_ = ranging_khz * 1000.0;
+  ranging_hz_ = conventions_->samples_per_s(*profile_, ranging_khz).value_or(ranging_khz * 1000.0);
   scan_start_ns_ = t_ns;
   lap_start_ns_ = t_ns;
   begin_lap_at_motor_rate();
@@ -67,7 +68,7 @@ std::int64_t ScanStream::next_ready_ns() const {
 }
 
 std::uint8_t ScanStream::packet_ct(std::uint32_t index) const {
-  if (!profile_->ct_carries_info) return index == 0 ? kCtLapStart : 0;
+  if (!profile_->ct_carries_info) return index == 0 ? zero_packet_ct() : 0;
   switch (index) {
     case kG1CtScanHzIndex: return g1_zero_packet_ct(motor_hz_);
     case kG1CtVersionIndex: return g1_version_ct(version_major_, version_minor_);
@@ -75,6 +76,14 @@ std::uint8_t ScanStream::packet_ct(std::uint32_t index) const {
     default:  // production debugging information: any value with the lap-start bit clear
       return static_cast<std::uint8_t>(((index * 29u + debug_salt_) & 0x7Fu) << 1);
   }
+}
+
+std::uint8_t ScanStream::zero_packet_ct() const {
+  const ZeroPacketScanRate& rate = conventions_->zero_packet_scan_rate;
+  if (!rate.present) return kCtLapStart;
+  // CT[7:1] in 0.1 Hz from the offset, as real G6 and TG units send it.
+  const long tenths = std::clamp(std::lround((motor_hz_ - rate.offset_hz) * 10.0), 1L, 127L);
+  return static_cast<std::uint8_t>(tenths << 1 | kCtLapStart);
 }
 
 StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth,
@@ -92,12 +101,13 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
 
   if (zero) {
     if (!first_zero_) ++lap_;
-    if (profile_->last_crc_before_zero) bytes.push_back(first_zero_ ? 0 : crc_);
+    // G1's LastCRC; TG's byte of no documented meaning carries the same CRC8 here.
+    if (conventions_->byte_before_zero != ByteBeforeZero::None) bytes.push_back(first_zero_ ? 0 : crc_);
     first_zero_ = false;
     crc_ = 0;
   }
   packet.lap = lap_;
-  if (profile_->ct_carries_info) crc_ = ct_crc8_update(crc_, packet.ct);
+  crc_ = ct_crc8_update(crc_, packet.ct);
 
   // First-level angles: evenly spaced raw angles, quantised to the protocol's 1/64 degree at the
   // ends; the host interpolates between the quantised ends, so this does too.
@@ -128,7 +138,7 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
       flag = flags && range > 0.0 ? ret.flag : PointFlag::None;
       word = encode_sample(range, flag, profile_->flag_bits, distance_scale_);
       range = static_cast<double>(word >> profile_->flag_bits) * distance_scale_;
-      return theta - (level1 + angle_correction_deg(range));
+      return theta - (level1 + (conventions_->angle_correction ? angle_correction_deg(range) : 0.0));
     };
     // Fixed-point steps settle almost every sample; steep surfaces (where the range changes fast
     // with the direction) fall back to bisection over the correction's span.

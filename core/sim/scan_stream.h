@@ -14,6 +14,7 @@
 
 #include "core/protocol/lap.h"
 #include "core/protocol/model_profile.h"
+#include "core/protocol/unit_conventions.h"
 
 namespace ydscope {
 
@@ -33,9 +34,12 @@ class ScanStream {
   static constexpr std::size_t kSamplesPerPacket = 40;
 
   // scene_epoch_ns: the device time the scene's clock counts from.
-  ScanStream(const ModelProfile& profile, double distance_scale, const Scene& scene, std::int64_t scene_epoch_ns,
-             std::uint8_t version_major, std::uint8_t version_minor, std::uint64_t seed);
+  // conventions: how a real unit of this model and firmware writes its stream (the scale may be
+  // another: distance_scale).
+  ScanStream(const ModelProfile& profile, const UnitConventions& conventions, double distance_scale, const Scene& scene,
+             std::int64_t scene_epoch_ns, std::uint8_t version_major, std::uint8_t version_minor, std::uint64_t seed);
 
+  // ranging_khz names the ranging code (A5 D1); the conventions say how many samples it gives.
   void start(std::int64_t t_ns, std::uint32_t scan_centihz, std::uint16_t ranging_khz);
   void set_health(std::uint8_t bits) { health_ = bits; }
   // The motor's error against the set rate (FaultConfig::scan_hz_offset / scan_hz_wobble); takes
@@ -54,10 +58,12 @@ class ScanStream {
  private:
   std::int64_t sample_time_ns(std::uint32_t sample) const;
   std::uint8_t packet_ct(std::uint32_t index) const;
+  std::uint8_t zero_packet_ct() const;
   // The motor's rate for the lap starting at lap_start_ns_: sets its period and sample count.
   void begin_lap_at_motor_rate();
 
   const ModelProfile* profile_;
+  const UnitConventions* conventions_;
   double distance_scale_;
   double max_range_mm_;
   const Scene* scene_;

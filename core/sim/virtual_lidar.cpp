@@ -25,15 +25,17 @@ std::string hz_text(std::uint32_t centihz) {
 VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns)
     : profile_(&profile_for(config.model)),
       config_(config),
-      distance_scale_(config.distance_scale.value_or(profile_->distance_scale)),
+      conventions_(&conventions_for(*profile_, firmware_as_sdk_reads(config.firmware_major, config.firmware_minor),
+                                    config.reading)),
+      distance_scale_(config.distance_scale.value_or(conventions_->distance_scale)),
       scene_(make_scene(config.scene, config.seed)),
       line_(config.faults, config.seed),
       now_ns_(now_ns) {
   if (!scene_)
     throw std::invalid_argument("unknown scene '" + config.scene + "'; the scenes are " + std::string(scene_names()));
   if (!(distance_scale_ > 0.0)) throw std::invalid_argument("the distance scale must be positive");
-  stream_ = std::make_unique<ScanStream>(*profile_, distance_scale_, *scene_, now_ns, config.firmware_major,
-                                         config.firmware_minor, config.seed);
+  stream_ = std::make_unique<ScanStream>(*profile_, *conventions_, distance_scale_, *scene_, now_ns,
+                                         config.firmware_major, config.firmware_minor, config.seed);
   pacer_ = std::make_unique<LinePacer>(profile_->default_baud);
   info_.model_code = profile_->model_code;
   info_.firmware_major = config.firmware_major;

@@ -39,6 +39,7 @@
 #include "core/protocol/lap.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/reply.h"
+#include "core/protocol/unit_conventions.h"
 #include "core/sim/faults.h"
 #include "core/sim/host_compat.h"
 #include "core/sim/line_faults.h"
@@ -56,7 +57,10 @@ struct VirtualLidarConfig {
   std::string scene = "demo";  // "room", "demo" or "booth" (scene_names())
   std::uint64_t seed = 1;      // scene noise, moving objects, serial number, fault decisions
   FaultConfig faults;
-  // Encode ranges with another scale than the manual's (emulates vendor firmware variants).
+  // Field: what a real unit of this model and firmware emits (rates, scale, TG's byte before the
+  // zero packet); Manual: the manual's literal reading (unit_conventions.h).
+  Reading reading = Reading::Field;
+  // Encode ranges with yet another scale (emulates other firmware variants).
   std::optional<double> distance_scale;
   // Some units answer only the other health command (A5 91 <-> A5 92); this emulates them.
   bool health_quirk = false;
@@ -144,6 +148,7 @@ class VirtualLidar {
   bool constant_frequency() const { return constant_hz_; }
   DeviceInfo device_info() const { return info_; }
   double distance_scale() const { return distance_scale_; }
+  const UnitConventions& conventions() const { return *conventions_; }
   const Scene& scene() const { return *scene_; }
   const DeviceCounters& counters() const { return counters_; }
   const FaultCounters& fault_counters() const { return line_.counters(); }
@@ -168,6 +173,7 @@ class VirtualLidar {
 
   const ModelProfile* profile_;
   VirtualLidarConfig config_;
+  const UnitConventions* conventions_;
   double distance_scale_;
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<ScanStream> stream_;

@@ -5,6 +5,7 @@
 
 #include "analysis/virtual_laps.h"
 #include "core/analysis/lap_timing.h"
+#include "support/field_decoder.h"
 
 namespace ydscope {
 namespace {
@@ -43,7 +44,9 @@ TEST_P(CleanStream, RateIsTheSetOneAndSamplesAreTheRangingFrequency) {
   EXPECT_NEAR(t.mean_hz, profile.default_scan_hz, 0.001 * profile.default_scan_hz);
   EXPECT_EQ(t.jitter_pct, 0.0);  // every lap holds the same samples
   EXPECT_NEAR(t.min_hz, t.max_hz, 1e-9);
-  EXPECT_NEAR(t.sample_rate_hz, profile.default_ranging_khz * 1000.0, 0.002 * profile.default_ranging_khz * 1000.0);
+  // What a real unit sends at its default ranging code (the conventions' table).
+  const double samples_per_s = field_samples_per_s(GetParam());
+  EXPECT_NEAR(t.sample_rate_hz, samples_per_s, 0.002 * samples_per_s);
   EXPECT_EQ(t.lost_samples, 0u);
   EXPECT_EQ(t.series.size(), t.normal_laps);
   std::uint64_t points = 0;
@@ -62,7 +65,8 @@ TEST(LapTiming, LostPacketsAreCountedSampleForSample) {
   const LapTimingStatistics t = timing_of(run.laps);
   EXPECT_EQ(t.lost_samples, truly_missing(run));
   EXPECT_EQ(t.interruptions, 0u) << "zero packets are never lost by this fault";
-  EXPECT_NEAR(t.sample_rate_hz, 9000.0, 0.002 * 9000.0) << "lost samples still belong to the device's rate";
+  const double g6_rate = field_samples_per_s(Model::G6);  // 18 k at code 2, as real G6 units
+  EXPECT_NEAR(t.sample_rate_hz, g6_rate, 0.002 * g6_rate) << "lost samples still belong to the device's rate";
 }
 
 TEST(LapTiming, PacketsDroppedForABadChecksumAreLostSamplesToo) {
@@ -101,7 +105,8 @@ TEST(LapTiming, AMotorOffItsSetRateShowsInTheMeanNotInTheJitter) {
   const LapTimingStatistics t = timing_of(scan_virtual_lidar(Model::G6, 3.0, faults).laps);
   EXPECT_NEAR(t.mean_hz, 8.5, 0.01);
   EXPECT_LT(t.jitter_pct, 0.1);
-  EXPECT_NEAR(t.sample_rate_hz, 9000.0, 0.005 * 9000.0) << "the ranging clock does not care about the motor";
+  const double g6_rate = field_samples_per_s(Model::G6);
+  EXPECT_NEAR(t.sample_rate_hz, g6_rate, 0.005 * g6_rate) << "the ranging clock does not care about the motor";
   EXPECT_EQ(t.lost_samples, 0u);
 }
 

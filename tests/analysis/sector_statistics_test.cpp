@@ -38,7 +38,7 @@ TEST_P(WallOnEveryModel, MeanAndSpreadMatchTheScene) {
   EXPECT_DOUBLE_EQ(s.valid_share, 1.0);
 
   // The flat distance is the wall's for every point; the raw range grows to 2400 / cos(10 deg).
-  const double resolution = profile_for(model).distance_scale;  // mm per count (G1 1, G6 0.25, TG 0.5)
+  const double resolution = run.distance_scale;  // mm per count (G1 1, G6 0.5, TG 1 as real units write)
   const double sigma = scene_sigma_mm(kWallMm);
   const double n = static_cast<double>(s.valid);
   EXPECT_NEAR(s.flat_distance_mm.mean, kWallMm, 4.0 * sigma / std::sqrt(n) + resolution);

@@ -17,6 +17,7 @@ struct VirtualRun {
   std::vector<TruthPacket> truth;  // every packet generated, in order
   DecoderCounters decoder;
   FaultCounters faults;
+  double distance_scale = 0;  // mm per count the lidar wrote with
 };
 
 // Starts the scan at t = 0 and collects `seconds` of laps, reading the line every millisecond.
@@ -34,7 +35,8 @@ inline VirtualRun scan_virtual_lidar(Model model, double seconds, const FaultCon
   if (before_scan) before_scan(lidar, now);
   const std::uint8_t scan[] = {0xA5, 0x60};
   lidar.receive(scan, now);
-  ScanDecoder decoder(lidar.profile());
+  ScanDecoder decoder(lidar.profile(), lidar.conventions(), lidar.distance_scale());
+  run.distance_scale = lidar.distance_scale();
   std::vector<std::uint8_t> bytes;
   const auto end = now + static_cast<std::int64_t>(seconds * 1e9);
   while (now < end) {

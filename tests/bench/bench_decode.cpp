@@ -18,6 +18,7 @@
 #include "core/protocol/model_profile.h"
 #include "core/protocol/packet_decoder.h"
 #include "core/protocol/scan_decoder.h"
+#include "core/protocol/unit_conventions.h"
 #include "core/protocol/scan_packet.h"
 
 namespace {
@@ -30,7 +31,8 @@ constexpr int kPacketsPerLap = 23;  // 22.5 in reality; the last one overlaps a 
 // One lap: zero packet + kPacketsPerLap packets; `seed` varies the scene between laps.
 void append_lap(std::vector<std::uint8_t>& out, unsigned seed) {
   const ModelProfile& g6 = profile_for(Model::G6);
-  const std::uint16_t zero_sample[] = {encode_sample(1500.0, PointFlag::None, g6.flag_bits, g6.distance_scale)};
+  const double scale = conventions_for(g6, std::nullopt, Reading::Manual).distance_scale;
+  const std::uint16_t zero_sample[] = {encode_sample(1500.0, PointFlag::None, g6.flag_bits, scale)};
   append_scan_packet({kCtLapStart, encode_raw_angle(0.0), encode_raw_angle(0.0), zero_sample}, out);
   const double span = 360.0 / kPacketsPerLap;
   std::vector<std::uint16_t> samples(kSamplesPerPacket);
@@ -41,8 +43,7 @@ void append_lap(std::vector<std::uint8_t>& out, unsigned seed) {
       const double range = 1000.0 + 7000.0 * std::fabs(std::sin((angle + seed * 7.0) * 0.017)) +
                            ((seed * 131u + static_cast<unsigned>(i) * 17u) % 50u);
       const bool no_return = ((static_cast<unsigned>(p * kSamplesPerPacket + i) + seed) % 37u) == 0;
-      samples[static_cast<std::size_t>(i)] =
-          no_return ? 0 : encode_sample(range, PointFlag::None, g6.flag_bits, g6.distance_scale);
+      samples[static_cast<std::size_t>(i)] = no_return ? 0 : encode_sample(range, PointFlag::None, g6.flag_bits, scale);
     }
     const double first = p * span + 0.1;
     append_scan_packet({0x00, encode_raw_angle(first), encode_raw_angle(first + span - 0.3), samples}, out);

@@ -53,19 +53,59 @@ INSTANTIATE_TEST_SUITE_P(Models, CheckEveryModel,
                          ::testing::Values(Model::G1, Model::G6, Model::TG15, Model::TG30, Model::TG50),
                          [](const auto& model) { return std::string(profile_for(model.param).name); });
 
+// Real units win (docs/conventions.md): a unit is judged against what a real unit of its model
+// and firmware emits, and the conventions used are named in the verdict.
+class CheckRealUnit : public ::testing::TestWithParam<Model> {};
+
+TEST_P(CheckRealUnit, AUnitEmittingTheFieldsRatesPassesUnderTheFieldsConventions) {
+  SimOnPty sim(GetParam());  // the virtual lidar imitates real units by default
+  const CliResult run = check(sim);
+  EXPECT_EQ(run.status, 0) << run.out;
+  const ModelProfile& profile = profile_for(GetParam());
+  const UnitConventions& field = conventions_for(profile, std::nullopt, Reading::Field);
+  EXPECT_NE(run.out.find("\"conventions\":{\"id\":\"" + std::string(field.id) + "\""), std::string::npos) << run.out;
+  const double rate = *field.samples_per_s(profile, profile.default_ranging_khz);
+  EXPECT_NE(run.out.find(std::to_string(static_cast<int>(rate)) + " samples/s"), std::string::npos)
+      << "the limit names the rate: " << run.out;
+}
+
+TEST_P(CheckRealUnit, AUnitEmittingTheManualsRatesFailsTheSampleRateOnly) {
+  // Half the samples a real unit sends: what a unit built to the manual's table would emit.
+  SimOnPty sim(GetParam(), [](SimServerOptions& o) { o.device.reading = Reading::Manual; });
+  const double manual_scale = conventions_for(profile_for(GetParam()), std::nullopt, Reading::Manual).distance_scale;
+  const CliResult run = check(sim, " --distance-scale " + std::to_string(manual_scale));
+  EXPECT_EQ(run.status, 3) << run.out;
+  EXPECT_EQ(failed_ids(run.out), "sample_rate") << run.out;
+}
+
+TEST_P(CheckRealUnit, TheManualsReadingOfAManualUnitPasses) {
+  SimOnPty sim(GetParam(), [](SimServerOptions& o) { o.device.reading = Reading::Manual; });
+  const CliResult run = check(sim, " --conventions manual");
+  EXPECT_EQ(run.status, 0) << run.out;
+  EXPECT_EQ(failed_ids(run.out), "") << run.out;
+  EXPECT_NE(run.out.find("\"reading\":\"manual\""), std::string::npos) << run.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, CheckRealUnit, ::testing::Values(Model::G6, Model::TG30),
+                         [](const auto& model) { return std::string(profile_for(model.param).name); });
+
 struct FaultCase {
   const char* name;
   Model model;
   std::function<void(FaultConfig&)> inject;
   const char* fails;  // the one criterion id it must fail
+  Reading reading = Reading::Field;
 };
 
 class CheckFault : public ::testing::TestWithParam<FaultCase> {};
 
 TEST_P(CheckFault, FailsExactlyTheCriterionItBreaks) {
   const FaultCase& c = GetParam();
-  SimOnPty sim(c.model, [&](SimServerOptions& o) { c.inject(o.device.faults); });
-  const CliResult run = check(sim);
+  SimOnPty sim(c.model, [&](SimServerOptions& o) {
+    c.inject(o.device.faults);
+    o.device.reading = c.reading;
+  });
+  const CliResult run = check(sim, c.reading == Reading::Manual ? " --conventions manual" : "");
   EXPECT_EQ(run.status, 3) << run.out << run.err;
   EXPECT_EQ(failed_ids(run.out), c.fails) << run.out << run.err;
 }
@@ -79,7 +119,10 @@ const FaultCase kFaults[] = {
     // A stall is covered by LapTiming.AStallIsAnInterruptionNotJitter on the simulated clock; on
     // a pty under heavy load it also moved the scan rate now and then, so it is not here yet.
     {"ScanRateOffItsSetValue", Model::G6, [](FaultConfig& f) { f.scan_hz_offset = 0.5; }, "scan_rate"},
-    {"ScanRateWandering", Model::TG15, [](FaultConfig& f) { f.scan_hz_wobble = 0.4; }, "scan_jitter"},
+    // At a real TG's 20 k samples/s (88 % of the line) the virtual lidar on a pty delivers laps in
+    // bunches while the motor wanders, which biases the measured mean rate by 3-4 %: open, see
+    // issue 25's note. At the manual's 9 k the wobble shows as jitter alone.
+    {"ScanRateWandering", Model::TG15, [](FaultConfig& f) { f.scan_hz_wobble = 0.4; }, "scan_jitter", Reading::Manual},
 };
 
 INSTANTIATE_TEST_SUITE_P(Faults, CheckFault, ::testing::ValuesIn(kFaults),

@@ -181,12 +181,21 @@ TEST(CliDecode, DistanceScaleOverride) {
   append(stream, test::packet(0, 100.0, 100.0, {0x6FE5}));
   append(stream, test::packet(kCtLapStart, 0.0, 0.0, {0}));
   const std::string path = write_temp("scale.bin", stream);
+  // Raw bytes are read as real units write them: a TG on current firmware in mm, a G6 at S/2.
   auto run = run_cli_apart("decode --model TG30 '" + path + "'");
-  EXPECT_NE(run.out.find(",14322.5,0]"), std::string::npos) << run.out;
-  run = run_cli_apart("decode --model G6 '" + path + "'");
-  EXPECT_NE(run.out.find(",7161.25,0]"), std::string::npos) << run.out;
-  run = run_cli_apart("decode --model TG30 --distance-scale 1 '" + path + "'");
   EXPECT_NE(run.out.find(",28645,0]"), std::string::npos) << run.out;
+  run = run_cli_apart("decode --model G6 '" + path + "'");
+  EXPECT_NE(run.out.find(",14322.5,0]"), std::string::npos) << run.out;
+  // The manuals' reading: the TG manual's worked example, 0x6FE5 -> 14322.50 mm.
+  run = run_cli_apart("decode --model TG30 --conventions manual '" + path + "'");
+  EXPECT_NE(run.out.find(",14322.5,0]"), std::string::npos) << run.out;
+  run = run_cli_apart("decode --model G6 --conventions manual '" + path + "'");
+  EXPECT_NE(run.out.find(",7161.25,0]"), std::string::npos) << run.out;
+  run = run_cli_apart("decode --model TG30 --distance-scale 0.5 '" + path + "'");
+  EXPECT_NE(run.out.find(",14322.5,0]"), std::string::npos) << run.out;
+  run = run_cli_apart("decode --model TG30 --conventions paper '" + path + "'");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("unknown --conventions 'paper'"), std::string::npos) << run.err;
 }
 
 TEST(CliDecode, UsageErrorsExitTwoWithOneSentence) {

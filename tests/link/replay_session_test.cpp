@@ -15,6 +15,7 @@
 #include "core/link/session.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
+#include "core/record/recorded_conventions.h"
 #include "test_data.h"
 #include "support/temp_dir.h"
 
@@ -97,7 +98,10 @@ void record_and_replay(Model model) {
   const ModelProfile* profile = find_profile(*link->metadata().model);
   ASSERT_NE(profile, nullptr);
   EXPECT_EQ(profile->model, model);
-  ScanDecoder decoder(*profile, link->metadata().distance_scale);
+  // Read back as it was read live: the recording names its conventions.
+  ASSERT_TRUE(link->metadata().conventions.has_value());
+  ScanDecoder decoder(*profile, recorded_conventions(link->metadata(), *profile, std::nullopt),
+                      link->metadata().distance_scale);
   std::vector<Lap> replayed;
   std::array<std::uint8_t, 512> buffer{};
   std::function<void()> read_more = [&] {

@@ -9,6 +9,7 @@
 #include "core/record/recording_writer.h"
 #include "support/session_test_support.h"
 #include "support/temp_dir.h"
+#include "support/field_decoder.h"
 
 namespace ydscope {
 namespace {
@@ -40,7 +41,7 @@ TEST(SessionRecording, RecordsBothDirectionsAndTheDeviceMetadata) {
   auto reader = RecordingReader::open(path, error);
   ASSERT_TRUE(reader) << error;
   std::string sent;
-  ScanDecoder decoder(profile_for(Model::G6));
+  ScanDecoder decoder = test::field_decoder(Model::G6);
   std::uint64_t decoded_laps = 0;
   RecordView record;
   while (reader->next(record)) {

@@ -121,10 +121,11 @@ TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
   session.connect(config_for(sim.port(), Model::TG15));
   std::vector<Lap> before;
   ASSERT_EQ(take_laps(session, 2, &before), 2u);
-  session.set_distance_scale(1.0);  // the vendor SDK's TG scale for newer firmware: twice the manual's
+  ASSERT_EQ(session.snapshot().distance_scale, 1.0) << "a real TG's scale on current firmware";
+  session.set_distance_scale(0.5);  // what older TG firmware needs: half
   ASSERT_TRUE(
-      session.wait_until([](const SessionSnapshot& s) { return s.distance_scale == 1.0; }, kPatience).distance_scale ==
-      1.0);
+      session.wait_until([](const SessionSnapshot& s) { return s.distance_scale == 0.5; }, kPatience).distance_scale ==
+      0.5);
   Lap lap;
   while (session.laps().try_pop(lap)) {
   }
@@ -136,7 +137,7 @@ TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
     for (const auto& p : l.points) m = std::max(m, p.range_mm);
     return m;
   };
-  EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 2.0, 0.2);
+  EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 0.5, 0.05);
 }
 
 // A serial link that removes the A5 5A 05 00 00 40 81 header after A5 60, as a device in

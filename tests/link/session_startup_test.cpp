@@ -32,15 +32,20 @@ TEST_P(StartupEveryModel, DetectsTheModelAndReadsItsSettings) {
   EXPECT_EQ(s.health->command, profile.health_command);
   std::uint32_t sim_centihz = 0;
   std::uint16_t sim_khz = 0;
+  double sim_scale = 0;
   sim.server().with_device([&](VirtualLidar& d) {
     sim_centihz = d.scan_centihz();
     sim_khz = d.ranging_khz();
+    sim_scale = d.distance_scale();
   });
   ASSERT_TRUE(s.scan_hz.has_value());
   EXPECT_DOUBLE_EQ(*s.scan_hz, sim_centihz / 100.0);
   ASSERT_TRUE(s.ranging_khz.has_value());
   EXPECT_EQ(*s.ranging_khz, sim_khz);
-  EXPECT_DOUBLE_EQ(s.distance_scale, profile.distance_scale);
+  // The unit is read as real units of its model and firmware write (the virtual one imitates them).
+  EXPECT_DOUBLE_EQ(s.distance_scale, sim_scale);
+  ASSERT_NE(s.conventions, nullptr);
+  EXPECT_EQ(s.conventions->reading, Reading::Field);
   EXPECT_EQ(sim.counters().device.ignored_during_scan, 0u);
 }
 

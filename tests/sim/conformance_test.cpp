@@ -203,8 +203,10 @@ TEST_P(Conformance, ScanStartsWithTheContinuousHeaderThenPackets) {
   const auto out = exchange(lidar, {0xA5, 0x60}, now, 200 * kMs);
   ASSERT_GT(out.size(), 100u);
   EXPECT_EQ(std::vector<std::uint8_t>(out.begin(), out.begin() + 7), kScanHeader);
-  const std::size_t first = is_g1(GetParam()) ? 8 : 7;  // G1: LastCRC byte (0 before the first lap)
-  if (is_g1(GetParam())) {
+  // G1's LastCRC byte and a real TG's byte before the zero packet (0 before the first lap).
+  const bool byte_before_zero = lidar.conventions().byte_before_zero != ByteBeforeZero::None;
+  const std::size_t first = byte_before_zero ? 8 : 7;
+  if (byte_before_zero) {
     EXPECT_EQ(out[7], 0x00);
   }
   EXPECT_EQ(out[first], 0xAA);

@@ -11,6 +11,7 @@
 #include "core/sim/delivery.h"
 #include "core/sim/virtual_lidar.h"
 #include "sim/sim_test_support.h"
+#include "support/field_decoder.h"
 
 namespace ydscope {
 namespace {
@@ -95,7 +96,7 @@ struct Decoded {
 
 // The project's decoder fed one write at a time, as a host's reads would see them at best.
 Decoded decode(Model model, const std::vector<Write>& writes) {
-  ScanDecoder decoder(profile_for(model));
+  ScanDecoder decoder = test::field_decoder(model);
   Decoded result;
   for (const Write& w : writes) decoder.feed(w.bytes, w.at_ns, [&](const Lap& lap) { result.laps.push_back(lap); });
   result.counters = decoder.counters();

@@ -8,6 +8,7 @@
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/virtual_lidar.h"
 #include "sim/sim_test_support.h"
+#include "support/field_decoder.h"
 
 namespace ydscope {
 namespace {
@@ -28,7 +29,7 @@ ScanRun scan(const VirtualLidarConfig& config, std::int64_t duration) {
   ScanRun run;
   VirtualLidar lidar(config);
   lidar.set_truth([&](const TruthPacket& packet) { run.packets.push_back(packet); });
-  ScanDecoder decoder(profile_for(config.model), config.distance_scale);
+  ScanDecoder decoder(lidar.profile(), lidar.conventions(), lidar.distance_scale());
   std::int64_t now = 0;
   lidar.receive(test::bytes({0xA5, 0x60}), now);
   std::vector<std::uint8_t> out;
@@ -132,6 +133,23 @@ TEST_P(RoundTrip, PointsLieOnTheSceneAfterTheHostsAngleCorrection) {
   EXPECT_LT(static_cast<double>(no_return), 0.15 * static_cast<double>(points));
 }
 
+// The virtual lidar imitates real units by default (G6 S/2 mm at 18 k samples/s, TG S mm with no
+// correction, TG's byte before the zero packet); the manual's literal reading stays a mode, and
+// the decoder reading it the manual's way gives back the same points as before.
+TEST_P(RoundTrip, TheManualsReadingStillGivesBackTheScenesPoints) {
+  VirtualLidarConfig c = config();
+  c.reading = Reading::Manual;
+  const ScanRun run = scan(c, 1'000 * kMs);
+  expect_laps_match_truth(run);
+  EXPECT_EQ(run.decoder.checksum_errors, 0u);
+  EXPECT_EQ(run.decoder.resync_bytes, 7u) << "only the scan reply header";
+}
+
+TEST_P(RoundTrip, TheFieldsReadingLosesNoByteToResync) {
+  const ScanRun run = scan(config(), 1'000 * kMs);
+  EXPECT_EQ(run.decoder.resync_bytes, 7u) << "TG's byte before the zero packet is understood, not noise";
+}
+
 TEST_P(RoundTrip, LapsComeAtTheSetScanFrequencyWithinTheLineRate) {
   const VirtualLidarConfig c = config();
   const ScanRun run = scan(c, 3'000 * kMs);
@@ -142,7 +160,8 @@ TEST_P(RoundTrip, LapsComeAtTheSetScanFrequencyWithinTheLineRate) {
   EXPECT_NEAR(1e9 / period_ns, profile.default_scan_hz, 0.1);
   EXPECT_LE(static_cast<double>(run.bytes), 3.0 * profile.default_baud / 10.0);
   const double per_lap = static_cast<double>(run.laps[3].points.size());
-  EXPECT_NEAR(per_lap, profile.default_ranging_khz * 1000.0 / profile.default_scan_hz, 1.0);
+  // As a real unit: the conventions' samples per second at the default ranging code.
+  EXPECT_NEAR(per_lap, test::field_samples_per_s(c.model) / profile.default_scan_hz, 1.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(ModelsAndScenes, RoundTrip,

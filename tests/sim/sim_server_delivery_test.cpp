@@ -14,6 +14,7 @@
 #include "core/sim/sim_server.h"
 #include "sim/host_port.h"
 #include "support/temp_dir.h"
+#include "support/field_decoder.h"
 
 namespace ydscope {
 namespace {
@@ -45,11 +46,11 @@ TEST_P(SimServerDelivery, HostDecodesTheStreamAndZeroPacketsAreStamped) {
   ASSERT_TRUE(host.send({0xA5, 0x90}));
   EXPECT_EQ(host.read(27, 3s).size(), 27u) << "a reply shorter than a burst still arrives (the latency timer)";
   ASSERT_TRUE(host.send({0xA5, 0x60}));
-  const auto stream = host.read(15'000, 5s);  // about 0.7 s of G6 stream
+  const auto stream = host.read(30'000, 5s);  // about 0.7 s of a real G6's 40.8 kB/s
   server.stop();
-  ASSERT_GE(stream.size(), 15'000u);
+  ASSERT_GE(stream.size(), 30'000u);
 
-  ScanDecoder decoder(profile_for(Model::G6));
+  ScanDecoder decoder = test::field_decoder(Model::G6);
   std::size_t laps = 0;
   decoder.feed(stream, 0, [&](const Lap&) { ++laps; });
   EXPECT_GE(laps, 4u);

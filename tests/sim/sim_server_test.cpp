@@ -13,6 +13,7 @@
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
 #include "sim/host_port.h"
+#include "support/field_decoder.h"
 
 namespace ydscope {
 namespace {
@@ -90,7 +91,7 @@ TEST(SimServerPty, HostTalksScansAndTheStreamStopsWithin100msOfStop) {
   const auto stream = host.read(20'000, 5s);
   ASSERT_GT(stream.size(), 7u);
   EXPECT_EQ(std::vector<std::uint8_t>(stream.begin(), stream.begin() + 7), kScanHeader);
-  ScanDecoder decoder(profile_for(Model::G6));
+  ScanDecoder decoder = test::field_decoder(Model::G6);
   std::size_t laps = 0;
   decoder.feed(stream, 0, [&](const Lap&) { ++laps; });
   EXPECT_GE(laps, 2u);
@@ -231,7 +232,7 @@ TEST(SimServerPty, ZeroPacketsAreTimeStampedAsTheyAreWritten) {
   HostPort host;
   ASSERT_TRUE(host.open_device(link));
   ASSERT_TRUE(host.send({0xA5, 0x60}));
-  host.read(15'000, 3s);  // about 0.7 s of G6 stream: 5 or more laps
+  host.read(30'000, 3s);  // about 0.7 s of a real G6's 40.8 kB/s: 5 or more laps
   const std::int64_t read_done = monotonic_ns();
   server.stop();
   std::lock_guard lock(mu);

@@ -113,8 +113,8 @@ TEST_P(VendorSdkStartup, EveryRequestIsAnsweredAsTheSdkChecksIt) {
   EXPECT_EQ(Bytes(stream.begin() + 7, stream.begin() + 15), single(0x14, 0x04, {profile().model_code}))
       << "the device-info frame the SDK waits up to 1 s for";
   EXPECT_EQ(Bytes(stream.begin() + 15, stream.begin() + 34), Bytes(info.begin() + 8, info.end()));
-  // Then the stream: G1 puts its LastCRC byte before the first zero packet.
-  const std::size_t packet_at = model == Model::G1 ? 35 : 34;
+  // Then the stream: G1 puts its LastCRC byte before the first zero packet, a real TG its byte.
+  const std::size_t packet_at = lidar.conventions().byte_before_zero != ByteBeforeZero::None ? 35 : 34;
   EXPECT_EQ(stream[packet_at], kPacketHeader0);
   EXPECT_EQ(stream[packet_at + 1], kPacketHeader1);
   EXPECT_EQ(lidar.mode(), DeviceMode::Scanning);
@@ -163,7 +163,9 @@ TEST_P(VendorSdkStartup, ManualModeAnswersNoneOfTheExtras) {
   const Bytes start = exchange(lidar, {0xA5, 0x60}, now, 200 * kMs);
   ASSERT_GT(start.size(), 9u);
   EXPECT_EQ(Bytes(start.begin(), start.begin() + 7), kScanHeader);
-  EXPECT_EQ(start[GetParam() == Model::G1 ? 8 : 7], kPacketHeader0) << "packets follow the header at once";
+  // G1's LastCRC and a real TG's byte come before the first zero packet.
+  EXPECT_EQ(start[lidar.conventions().byte_before_zero != ByteBeforeZero::None ? 8 : 7], kPacketHeader0)
+      << "packets follow the header at once";
 }
 
 TEST_P(VendorSdkStartup, ManualRepliesAreUnchangedByTheMode) {
@@ -187,7 +189,7 @@ TEST_P(VendorSdkStartup, OwnDecoderSkipsTheDeviceInfoFrameAndDecodesTheSameLaps)
   for (const HostCompat compat : {HostCompat::Manual, HostCompat::YdlidarSdk}) {
     const auto k = static_cast<std::size_t>(compat);
     VirtualLidar lidar(config(compat));
-    ScanDecoder decoder(profile());
+    ScanDecoder decoder(lidar.profile(), lidar.conventions());
     std::int64_t t = 0;
     lidar.receive(std::vector<std::uint8_t>{0xA5, 0x60}, t);
     std::vector<std::uint8_t> out;

@@ -15,6 +15,7 @@
 #include "export/point_cloud_reader.h"
 #include "private_display.h"
 #include "x11_input.h"
+#include "support/field_decoder.h"
 
 namespace ydscope::test {
 namespace {
@@ -83,7 +84,7 @@ TEST(AppMcap, RecordingBothFormatsGivesTheSameLapsInEach) {
   auto reader = RecordingReader::open(ydrec.string(), error);
   ASSERT_TRUE(reader) << error;
   std::vector<Lap> laps;
-  ScanDecoder decoder(profile_for(Model::G6));
+  ScanDecoder decoder = test::field_decoder(Model::G6);
   RecordView record;
   while (reader->next(record))
     if (record.type == RecordType::DeviceToHost)

@@ -96,7 +96,18 @@ void draw_device_panel(UiModel& m, PanelEdits& e) {
     row("serial", d.serial.c_str());
     std::snprintf(text, sizeof text, "%g mm per count", s.distance_scale);
     row("distance scale", text);
+    if (s.conventions) row("conventions", std::string(s.conventions->label).c_str());
     ImGui::EndTable();
+  }
+  // Where the manual and real units differ (G6, TG), the user picks whose word counts.
+  if (s.conventions && d.profile && d.profile->model != Model::G1) {
+    bool manual = s.conventions->reading == Reading::Manual;
+    if (ImGui::Checkbox("read as the manual says", &manual))
+      m.requests.push_back(SetReading{manual ? Reading::Manual : Reading::Field});
+    help_marker(
+        "Off (default): read the unit as real units of its model and firmware write, as the vendor SDK reads "
+        "them (G6 S/2 mm at 18 k samples/s; TG S mm without the triangulation correction). On: as its manual "
+        "says (G6 S/4, TG S/2). docs/conventions.md gives every value and its source.");
   }
   // Some firmware uses another scale than its manual; let the user correct it live.
   if (ImGui::Checkbox("override scale", &e.distance_scale_override)) {
@@ -108,8 +119,8 @@ void draw_device_panel(UiModel& m, PanelEdits& e) {
     }
   }
   help_marker(
-      "The manuals give G6 S/4 and TG S/2 mm per count; some vendor firmware uses S/2 (G6) or S (TG above 1.2). "
-      "If walls look twice too near or far, change the scale here.");
+      "The conventions above set the scale from the unit's model and firmware. If walls still look twice too "
+      "near or far, override it here.");
   if (e.distance_scale_override) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110.0f);

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "core/protocol/unit_conventions.h"
 #include "core/sim/delivery.h"
 #include "core/sim/faults.h"
 #include "core/sim/host_compat.h"
@@ -64,7 +65,10 @@ struct StartRecording {
 };
 struct StopRecording {};  // whichever run
 struct SetDistanceScale {
-  std::optional<double> mm_per_count;  // empty: back to the model's own
+  std::optional<double> mm_per_count;  // empty: back to the conventions' own
+};
+struct SetReading {
+  Reading reading = Reading::Field;  // read the unit as real units write, or as its manual says
 };
 
 // ---- out to Foxglove ----------------------------------------------------------------------------
@@ -106,10 +110,11 @@ struct UnwatchSector {
   std::size_t index = 0;
 };
 
-using UiRequest = std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim,
-                               ReplugSim, SetScanHz, SetRangingKhz, RefreshHealth, StartRecording, StopRecording,
-                               SetDistanceScale, SetShare, ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap,
-                               WatchSector, UnwatchSector, SelectSource, SetSourceLook, AddSource, RemoveSource>;
+using UiRequest =
+    std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim, ReplugSim, SetScanHz,
+                 SetRangingKhz, RefreshHealth, StartRecording, StopRecording, SetDistanceScale, SetReading, SetShare,
+                 ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap, WatchSector, UnwatchSector, SelectSource,
+                 SetSourceLook, AddSource, RemoveSource>;
 
 // The requests that change the source list rather than one source.
 template <class R>
@@ -120,6 +125,6 @@ template <class R>
 inline constexpr bool is_device_request =
     std::is_same_v<R, ControlReplay> || std::is_same_v<R, SetSimFaults> || std::is_same_v<R, UnplugSim> ||
     std::is_same_v<R, ReplugSim> || std::is_same_v<R, SetScanHz> || std::is_same_v<R, SetRangingKhz> ||
-    std::is_same_v<R, RefreshHealth> || std::is_same_v<R, SetDistanceScale>;
+    std::is_same_v<R, RefreshHealth> || std::is_same_v<R, SetDistanceScale> || std::is_same_v<R, SetReading>;
 
 }  // namespace ydscope::ui
