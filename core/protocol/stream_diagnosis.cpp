@@ -106,6 +106,7 @@ std::vector<const Family*> candidates(Layout layout, const Family* expected, std
 
 std::string family_list(const std::vector<const Family*>& families) {
   std::vector<std::string> names;
+  names.reserve(families.size());
   for (const Family* f : families) names.push_back(describe(*f));
   return join_or(names);
 }
