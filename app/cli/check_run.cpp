@@ -164,6 +164,8 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   if (plan.sector) sector.emplace(*plan.sector);
   record.sector_region = plan.sector;
   CtHealth ct_health;
+  double reported_hz_sum = 0;
+  std::uint64_t reported_laps = 0;
   const auto start = Clock::now();
   auto last_progress = start;
   while (seconds_since(start) < plan.seconds) {
@@ -177,6 +179,10 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
       timing.add(lap);
       if (sector) sector->add(lap);
       ct_health.add(lap);
+      if (lap.scan_hz && lap.ct_info_trusted()) {
+        reported_hz_sum += *lap.scan_hz;
+        ++reported_laps;
+      }
       for (const LapPoint& p : lap.points) o.valid_points += is_valid_return(p) ? 1 : 0;
       o.points += lap.points.size();
       record.last_lap = lap;
@@ -202,6 +208,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   const SessionSnapshot after = session.snapshot();
 
   o.timing = timing.statistics();
+  if (reported_laps > 0) o.reported_scan_hz = reported_hz_sum / static_cast<double>(reported_laps);
   o.link.checksum_errors = after.counters.checksum_errors - before.counters.checksum_errors;
   o.link.resync_bytes = after.counters.resync_bytes - before.counters.resync_bytes;
   o.link.crc8_failures = after.counters.crc8_failures - before.counters.crc8_failures;

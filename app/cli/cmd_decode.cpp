@@ -77,7 +77,9 @@ jsonl schema, one object per line:
                      with 4 decimals, range in mm with up to 2 decimals (0 = no return), flag S&3 on
                      G1 and 0 otherwise
     scan_hz, health  G1 CT information (scan frequency of the zero packet, health bits of packet 3);
-                     null on other models, when the packet was missing, or when crc_ok is false
+                     a G6/TG read with the field conventions reports scan_hz in its zero packet
+                     too (TG: + 3 Hz); null otherwise, when the packet was missing, or when
+                     crc_ok is false
     crc_ok           G1: whether the CRC8 of the lap's CT bytes matched the LastCRC byte; null on
                      other models and when no byte lay between the lap's last packet and the zero
                      packet that closes it (nothing to check: scan_hz and health are then kept,

@@ -59,7 +59,8 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::ui
   }
   const bool trusted = lap.ct_info_trusted();
   out.raw(R"(],"scan_hz":)");
-  out.fixed_or_null(g1_info && trusted ? lap.scan_hz : std::nullopt, 2);
+  // G1's CT channel, or the zero packet's CT of a G6/TG read as the field reads it.
+  out.fixed_or_null(trusted ? lap.scan_hz : std::nullopt, 2);
   out.raw(R"(,"health":)");
   out.integer_or_null(health);
   out.raw(R"(,"crc_ok":)");

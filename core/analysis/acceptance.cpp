@@ -68,6 +68,7 @@ CriterionResult scan_rate(const CheckObservations& o, const AcceptanceLimits& l)
   r.measured = format_text("%.3f Hz (%+.2f %%; mean of %llu laps, %.2f-%.2f Hz)", t.mean_hz,
                            100.0 * (t.mean_hz - l.scan_hz_target) / l.scan_hz_target,
                            static_cast<unsigned long long>(t.normal_laps), t.min_hz, t.max_hz);
+  if (o.reported_scan_hz) r.measured += format_text("; the unit reports %.2f Hz", *o.reported_scan_hz);
   r.verdict =
       within(deviation_pct(t.mean_hz, l.scan_hz_target), l.scan_hz_tolerance_pct) ? Verdict::Pass : Verdict::Fail;
   return r;

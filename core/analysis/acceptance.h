@@ -42,6 +42,9 @@ struct CheckObservations {
   IdentityObservation identity;
   std::vector<HealthObservation> health;
   LapTimingStatistics timing;
+  // The scan rate the unit reports in its CT bytes (G1's channel, a G6/TG zero packet read as the
+  // field reads it), averaged over the laps that carried it; shown beside the measured rate.
+  std::optional<double> reported_scan_hz;
   std::uint16_t ranging_khz = 0;  // in use (A5 D1 read-back): the ranging code's name
   // How the unit's bytes were read: what it should emit per ranging code (unit_conventions.h).
   const UnitConventions* conventions = nullptr;

@@ -67,6 +67,9 @@ TEST_P(CheckRealUnit, AUnitEmittingTheFieldsRatesPassesUnderTheFieldsConventions
   const double rate = *field.samples_per_s(profile, profile.default_ranging_khz);
   EXPECT_NE(run.out.find(std::to_string(static_cast<int>(rate)) + " samples/s"), std::string::npos)
       << "the limit names the rate: " << run.out;
+  // Its own report of the scan rate, read with the right formula (TG: CT[7:1] / 10 + 3 Hz).
+  const std::string reported = GetParam() == Model::G6 ? "8.00" : "10.00";
+  EXPECT_NE(run.out.find("the unit reports " + reported + " Hz"), std::string::npos) << run.out;
 }
 
 TEST_P(CheckRealUnit, AUnitEmittingTheManualsRatesFailsTheSampleRateOnly) {

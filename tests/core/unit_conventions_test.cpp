@@ -38,7 +38,8 @@ TEST_P(ConventionRow, HoldsItsValues) {
   EXPECT_DOUBLE_EQ(conventions.distance_scale, c.scale);
   EXPECT_EQ(conventions.angle_correction, c.correction);
   for (std::size_t code = 0; code < 3; ++code)
-    EXPECT_EQ(conventions.samples_per_s(profile, profile.ranging_khz[code]), c.samples_khz[code] * 1000.0) << "code " << code;
+    EXPECT_EQ(conventions.samples_per_s(profile, profile.ranging_khz[code]), c.samples_khz[code] * 1000.0)
+        << "code " << code;
   EXPECT_EQ(conventions.zero_packet_scan_rate.present, c.ct_rate);
   EXPECT_DOUBLE_EQ(conventions.zero_packet_scan_rate.offset_hz, c.ct_offset_hz);
   EXPECT_EQ(conventions.byte_before_zero, c.byte);

@@ -223,7 +223,12 @@ if (raw && !killed && name === undefined) {
   const dir = mkdtempSync(join(tmpdir(), "ydscope-mcap-"));
   writeFileSync(join(dir, "device.bin"), bytes);
   const model = args.model ?? values.model;
-  const again = execFileSync(args.cli, ["decode", "--model", model, join(dir, "device.bin")], { maxBuffer: 1 << 30 }).toString();
+  // Read with the conventions /diagnostics names (an old recording was read as the manuals say).
+  if (!values.conventions) fail("/diagnostics names no conventions");
+  const reading = values.conventions.endsWith("manual") ? "manual" : "field";
+  const again = execFileSync(args.cli, ["decode", "--model", model, "--conventions", reading, join(dir, "device.bin")], {
+    maxBuffer: 1 << 30,
+  }).toString();
   // The laps, without their times: bytes written out alone carry no receive times, so decode
   // times them at the baud rate (`t`), where the source had recorded ones.
   const lapsOnly = (text) =>
