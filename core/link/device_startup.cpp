@@ -60,26 +60,37 @@ StartupOutcome start_replay(const StartupParts& parts, const SessionConfig& conf
   return outcome;
 }
 
+// The model bytes at `baud` should come from: the one asked for, else the one whose baud it is.
+const ModelProfile& expected_at(const SessionConfig& config, std::uint32_t baud) {
+  if (config.model) return profile_for(*config.model);
+  return profile_for(baud == profile_for(Model::G1).default_baud ? Model::G1 : Model::G6);
+}
+
 // The first baud at which the device answers A5 90, with its answer; an error when none does.
 boost::asio::awaitable<std::optional<DeviceInfo>> find_device(const StartupParts& parts, const SessionConfig& config,
                                                               const std::vector<std::uint32_t>& bauds,
                                                               std::uint32_t& baud, std::string& error) {
   Step<DeviceInfo> info;
+  std::string bytes_say;  // why bytes that came made no sense, at the last baud they came at
   for (std::size_t i = 0; i < bauds.size(); ++i) {
     if (parts.cancelled()) co_return std::nullopt;
     if (i > 0) {
       if (!parts.link.link()->set_baud(bauds[i], error)) co_return std::nullopt;
       post_link(parts, bauds[i]);
     }
+    parts.link.forget_unsolicited();
     co_await parts.sequencer.pause_scan(true);  // a device left scanning answers nothing else
     info = co_await parts.sequencer.device_info();
     if (info.ok()) {
       baud = bauds[i];
       co_return info.value;
     }
+    if (const auto why = parts.link.unsolicited().verdict(expected_at(config, bauds[i]), bauds[i])) bytes_say = *why;
     if (info.link_lost) break;
   }
-  if (bauds.size() > 1 && !info.link_lost)
+  if (!bytes_say.empty() && !info.link_lost)
+    error = "no device-info reply (A5 90) on " + config.address + "; " + bytes_say;
+  else if (bauds.size() > 1 && !info.link_lost)
     error = "no device-info reply (A5 90) at any of " + baud_list(bauds) + " baud on " + config.address +
             ": is it a G1, G6 or TG lidar, powered, on this port?";
   else

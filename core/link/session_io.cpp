@@ -134,6 +134,7 @@ void SessionIo::set_sink(Sink sink) {
 }
 
 void SessionIo::route(std::span<const std::uint8_t> bytes, std::int64_t now) {
+  if (sink_ == Sink::Discard || sink_ == Sink::Reply) unsolicited_.feed(bytes, now);
   while (!bytes.empty()) {
     switch (sink_) {
       case Sink::Discard: counters_.add_drained(bytes.size()); return;

@@ -19,6 +19,7 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include "core/protocol/stream_diagnosis.h"
 #include "core/link/byte_link.h"
 #include "core/link/session_counters.h"
 #include "core/protocol/commands.h"
@@ -93,6 +94,10 @@ class SessionIo {
   void listen_stream() { sink_ = Sink::Stream; }
   // Back to discarding (after A5 65).
   void stop_stream();
+  // The bytes that came while no scan was being decoded (drains, hunts for a reply): when a
+  // device does not answer but bytes flow, they say why (a wrong baud, another layout).
+  const StreamDiagnosis& unsolicited() const { return unsolicited_; }
+  void forget_unsolicited() { unsolicited_.reset(); }
   // A timer wait that ends early on a fault or detach; false when it ended early.
   boost::asio::awaitable<bool> sleep(std::chrono::milliseconds duration);
 
@@ -125,6 +130,7 @@ class SessionIo {
   Command awaited_ = Command::Stop;
   bool reply_done_ = false;
   std::size_t reply_bytes_seen_ = 0;
+  StreamDiagnosis unsolicited_;
   std::size_t scan_header_matched_ = 0;
   LapEndOutlook stream_outlook_{};  // what the stream consumer last said can arrive unseen
   bool holding_ = false;            // reading is held off; hold_timer_ restarts it

@@ -9,6 +9,7 @@
 #include "core/protocol/byte_access.h"
 #include "core/protocol/stream_diagnosis.h"
 #include "protocol_test_support.h"
+#include "support/uart_line.h"
 
 namespace ydscope {
 namespace {
@@ -164,41 +165,9 @@ TEST(StreamDiagnosis, BuiltIntensityStreamNamesTheFamilyAtTheLineBaud) {
 
 // ---- a wrong baud: the G6's UART bits read at another rate ------------------------------------
 
-// What a receiver at rx_baud reads from a line driven at tx_baud: each byte a 10-bit frame (start
-// 0, eight data bits LSB first, stop 1), frames back to back. The receiver finds a falling edge at
-// 16x oversampling, samples each bit's middle, and reads a frame whose stop bit is 0 as 0x00 (a
-// framing error, as a Linux tty reports it by default).
-Bytes resample_uart(const Bytes& sent, double tx_baud, double rx_baud) {
-  auto level = [&](double t) {
-    const auto bit = static_cast<std::size_t>(std::floor(t * tx_baud));
-    const std::size_t frame = bit / 10, pos = bit % 10;
-    if (frame >= sent.size() || pos == 9) return 1;
-    if (pos == 0) return 0;
-    return (sent[frame] >> (pos - 1)) & 1;
-  };
-  const double end = static_cast<double>(sent.size()) * 10 / tx_baud;
-  const double bit = 1 / rx_baud;
-  Bytes out;
-  double t = 0;
-  while (t < end) {
-    if (level(t) == 1) {
-      t += bit / 16;
-      continue;
-    }
-    std::uint8_t byte = 0;
-    for (int i = 0; i < 8; ++i)
-      if (level(t + (1.5 + i) * bit)) byte = static_cast<std::uint8_t>(byte | (1 << i));
-    const bool stop = level(t + 9.5 * bit) == 1;
-    out.push_back(stop ? byte : 0);
-    t += 9.5 * bit;
-    while (!stop && t < end && level(t) == 0) t += bit / 16;  // a break: wait for the line to rise
-  }
-  return out;
-}
-
 TEST(StreamDiagnosis, ResamplerIsExactAtTheSameBaud) {
   const Bytes g6 = test::synthetic_stream(1, 4, 10);
-  EXPECT_EQ(resample_uart(g6, 512000, 512000), g6);
+  EXPECT_EQ(test::resample_uart(g6, 512000, 512000), g6);
 }
 
 struct WrongBaud {
@@ -210,7 +179,7 @@ class StreamDiagnosisWrongBaud : public ::testing::TestWithParam<WrongBaud> {};
 
 TEST_P(StreamDiagnosisWrongBaud, SaysTryAnotherBaud) {
   const WrongBaud p = GetParam();
-  const Bytes line = resample_uart(test::synthetic_stream(12, 20, 40), p.sent, p.read);
+  const Bytes line = test::resample_uart(test::synthetic_stream(12, 20, 40), p.sent, p.read);
   ASSERT_GE(line.size(), StreamDiagnosis::kMinBytes);
   const StreamDiagnosis d = fed(line);
   EXPECT_LT(d.findings().two_byte_packets, 3u);

@@ -140,6 +140,34 @@ TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
   EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 0.5, 0.05);
 }
 
+TEST(SessionScan, ReadingAUnitAsItsManualSaysHalvesAG6sRangesAndNamesTheRow) {
+  SimOnPty sim(Model::G6);  // writes as a real G6: S/2 mm
+  Session session(64);
+  session.connect(config_for(sim.port(), Model::G6));
+  std::vector<Lap> before;
+  ASSERT_EQ(take_laps(session, 2, &before), 2u);
+  ASSERT_NE(session.snapshot().conventions, nullptr);
+  EXPECT_EQ(session.snapshot().conventions->id, "g6-field");
+  session.set_reading(Reading::Manual);
+  const SessionSnapshot s = session.wait_until(
+      [](const SessionSnapshot& snap) { return snap.conventions && snap.conventions->reading == Reading::Manual; },
+      kPatience);
+  ASSERT_NE(s.conventions, nullptr);
+  EXPECT_EQ(s.conventions->id, "g6-manual");
+  EXPECT_EQ(s.distance_scale, 0.25);
+  Lap lap;
+  while (session.laps().try_pop(lap)) {
+  }
+  std::vector<Lap> after;
+  ASSERT_EQ(take_laps(session, 2, &after), 2u);
+  const auto max_range = [](const Lap& l) {
+    float m = 0;
+    for (const auto& p : l.points) m = std::max(m, p.range_mm);
+    return m;
+  };
+  EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 0.5, 0.05);
+}
+
 // A serial link that removes the A5 5A 05 00 00 40 81 header after A5 60, as a device in
 // power-down protection mode does for later scan commands: the session must find packets anyway.
 class ScanHeaderEater final : public ByteLink {

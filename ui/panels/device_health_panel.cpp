@@ -96,9 +96,10 @@ void draw_device_panel(UiModel& m, PanelEdits& e) {
     row("serial", d.serial.c_str());
     std::snprintf(text, sizeof text, "%g mm per count", s.distance_scale);
     row("distance scale", text);
-    if (s.conventions) row("conventions", std::string(s.conventions->label).c_str());
     ImGui::EndTable();
   }
+  // Long enough to wrap, so it sits under the table rather than in its narrow value column.
+  if (s.conventions) ImGui::TextWrapped("read as: %s", std::string(s.conventions->label).c_str());
   // Where the manual and real units differ (G6, TG), the user picks whose word counts.
   if (s.conventions && d.profile && d.profile->model != Model::G1) {
     bool manual = s.conventions->reading == Reading::Manual;
