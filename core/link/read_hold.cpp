@@ -32,6 +32,10 @@ constexpr double kHoldBytes = kTtyBufferBytes - kThrottleRoom - kMarginBytes - s
 
 std::chrono::nanoseconds read_hold(const ReadHoldInputs& in) {
   if (in.line_bytes_per_s <= 0) return std::chrono::nanoseconds(0);
+  // More than the baud can carry: the port's rate is not the line's (a pseudo-terminal, or a
+  // device answering at another baud than it streams). Nothing here bounds what piles up, so
+  // read as bytes come.
+  if (in.stream_bytes_per_s > in.line_bytes_per_s) return std::chrono::nanoseconds(0);
   const auto bytes = static_cast<double>(in.lap_end.bytes);
   // Up to a packet may already be on its way (a USB bridge or the kernel passes bytes on in
   // chunks), so it may arrive at once; the rest comes no faster than the line carries it, nor,

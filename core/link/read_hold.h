@@ -16,7 +16,8 @@ struct ReadHoldInputs {
   double line_bytes_per_s = 0;    // the most the link can deliver (0: unbounded)
 };
 
-// Zero when reading should go on at once: no line limit, or a hold too short to pay for itself.
+// Zero when reading should go on at once: no line limit, a stream faster than the line's baud (the
+// port is not the line it says), or a hold too short to pay for itself.
 // Otherwise until the lap is due to close (less its slack), or the least time the forecast bytes
 // need if that is longer: all but one packet (which may come as one burst) at line rate, or at the
 // stream's average rate with a margin. Never so long that, at full line rate, what piles up (a

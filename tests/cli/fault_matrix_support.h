@@ -100,10 +100,15 @@ inline std::vector<PrintedLap> printed_laps(const std::string& jsonl) {
     while (*p == '[' || *p == ',') {  // [angle,range,flag]
       if (*p == ',') ++p;
       if (*p != '[') break;
+      // A line cut off mid-point (the program was stopped while printing) ends the walk: every
+      // step checks its separator before stepping past it, never past the string's end.
       char* next = nullptr;
       std::strtod(p + 1, &next);
+      if (*next != ',') break;
       const double range = std::strtod(next + 1, &next);
+      if (*next != ',') break;
       std::strtoul(next + 1, &next, 10);
+      if (*next != ']') break;
       lap.signature.points += 1;
       lap.signature.range_sum += range;
       p = next + 1;  // past ']'

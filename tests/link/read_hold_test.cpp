@@ -102,6 +102,16 @@ TEST(ReadHold, WhatPilesUpStaysBelowTheThrottlePoint) {
   }
 }
 
+// A virtual TG on a pty opened at 230400 (model auto probes it first; a pty passes bytes whatever
+// the baud) delivers a real TG's 45 kB/s where the baud says 23 kB/s: no hold is safe then.
+TEST(ReadHold, NoneWhenTheStreamOutrunsTheBaud) {
+  ReadHoldInputs in = inputs(100'000, 45'000);
+  in.line_bytes_per_s = 23'040;
+  EXPECT_EQ(read_hold(in), nanoseconds(0));
+  in.stream_bytes_per_s = 20'000;  // within the baud: holds as before
+  EXPECT_GT(read_hold(in), milliseconds(10));
+}
+
 TEST(ReadHold, UntilTheLapIsDueLessItsSlack) {
   ReadHoldInputs in = inputs(100);
   in.lap_end.next_close_ns = in.now_ns + 30'000'000;

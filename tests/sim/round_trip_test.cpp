@@ -150,6 +150,24 @@ TEST_P(RoundTrip, TheFieldsReadingLosesNoByteToResync) {
   EXPECT_EQ(run.decoder.resync_bytes, 7u) << "TG's byte before the zero packet is understood, not noise";
 }
 
+// A TG on firmware the vendor SDK calls old (its major <= 1 and minor <= 2 in its byte order: the
+// manual's "2.1") writes S/2 mm; the host picks that row from the same A5 90 bytes.
+TEST(RoundTripFirmware, AnOldTgWritesHalfMillimetresAndIsReadSo) {
+  VirtualLidarConfig c;
+  c.model = Model::TG30;
+  c.scene = "room";
+  c.firmware_major = 2;  // the manual's order: byte 1
+  c.firmware_minor = 1;
+  const VirtualLidar probe(c);
+  EXPECT_EQ(probe.conventions().id, "tg-field-fw1.2");
+  EXPECT_EQ(probe.distance_scale(), 0.5);
+  EXPECT_EQ(&probe.conventions(),
+            &conventions_for(profile_for(Model::TG30), firmware_as_sdk_reads(2, 1), Reading::Field));
+  const ScanRun run = scan(c, 1'000 * kMs);
+  expect_laps_match_truth(run);
+  EXPECT_EQ(run.decoder.checksum_errors, 0u);
+}
+
 TEST_P(RoundTrip, LapsComeAtTheSetScanFrequencyWithinTheLineRate) {
   const VirtualLidarConfig c = config();
   const ScanRun run = scan(c, 3'000 * kMs);
