@@ -115,6 +115,23 @@ TEST(SessionScan, CorruptedAndDroppedBytesAreCountedAndTheStreamGoesOn) {
   EXPECT_GT(c.crc8_failures, 0u) << "a dropped byte loses a packet, so that lap's CT CRC8 fails";
 }
 
+// The room does not move much between laps: its largest range compares two scales.
+float largest_range(const Lap& lap) {
+  float largest = 0;
+  for (const LapPoint& p : lap.points) largest = std::max(largest, p.range_mm);
+  return largest;
+}
+
+// `count` laps decoded after a change to the session: what was queued before it goes first.
+std::vector<Lap> laps_after_change(Session& session, std::size_t count) {
+  Lap lap;
+  while (session.laps().try_pop(lap)) {
+  }
+  std::vector<Lap> laps;
+  take_laps(session, count, &laps);
+  return laps;
+}
+
 TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
   SimOnPty sim(Model::TG15);
   Session session(64);
@@ -126,18 +143,9 @@ TEST(SessionScan, ADistanceScaleOverrideAppliesToTheLaps) {
   ASSERT_TRUE(
       session.wait_until([](const SessionSnapshot& s) { return s.distance_scale == 0.5; }, kPatience).distance_scale ==
       0.5);
-  Lap lap;
-  while (session.laps().try_pop(lap)) {
-  }
-  std::vector<Lap> after;
-  ASSERT_EQ(take_laps(session, 2, &after), 2u);
-  // The room does not move much between laps: compare the largest range.
-  const auto max_range = [](const Lap& l) {
-    float m = 0;
-    for (const auto& p : l.points) m = std::max(m, p.range_mm);
-    return m;
-  };
-  EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 0.5, 0.05);
+  const std::vector<Lap> after = laps_after_change(session, 2);
+  ASSERT_EQ(after.size(), 2u);
+  EXPECT_NEAR(largest_range(after.back()) / largest_range(before.back()), 0.5, 0.05);
 }
 
 TEST(SessionScan, ReadingAUnitAsItsManualSaysHalvesAG6sRangesAndNamesTheRow) {
@@ -155,17 +163,9 @@ TEST(SessionScan, ReadingAUnitAsItsManualSaysHalvesAG6sRangesAndNamesTheRow) {
   ASSERT_NE(s.conventions, nullptr);
   EXPECT_EQ(s.conventions->id, "g6-manual");
   EXPECT_EQ(s.distance_scale, 0.25);
-  Lap lap;
-  while (session.laps().try_pop(lap)) {
-  }
-  std::vector<Lap> after;
-  ASSERT_EQ(take_laps(session, 2, &after), 2u);
-  const auto max_range = [](const Lap& l) {
-    float m = 0;
-    for (const auto& p : l.points) m = std::max(m, p.range_mm);
-    return m;
-  };
-  EXPECT_NEAR(max_range(after.back()) / max_range(before.back()), 0.5, 0.05);
+  const std::vector<Lap> after = laps_after_change(session, 2);
+  ASSERT_EQ(after.size(), 2u);
+  EXPECT_NEAR(largest_range(after.back()) / largest_range(before.back()), 0.5, 0.05);
 }
 
 // A serial link that removes the A5 5A 05 00 00 40 81 header after A5 60, as a device in
