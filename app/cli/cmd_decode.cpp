@@ -42,9 +42,12 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
                        by its header): its device->host bytes are decoded, with its model and
                        the distance scale it was recorded with (as replay does) unless --model
                        is given.
-  --model MODEL        G1, G6, TG15, TG30 or TG50 (any letter case). Picks the distance formula
-                       (G1: S>>2 mm with the interference flag in S&3; G6: S/4 mm; TG: S/2 mm, as
-                       the manuals give them) and, on G1, the CT information and LastCRC byte.
+  --model MODEL        G1, G6, TG15, TG30 or TG50, or X4 or X2 (bytes of those units of the same
+                       packet family; ydscope does not drive them), any letter case. Picks the
+                       distance formula with --conventions (G1: S>>2 mm with the interference
+                       flag in S&3; G6: S/2 mm, the manual's S/4; TG: S mm above firmware 1.2,
+                       the manual's S/2; X4, X2: S/4 mm) and, on G1, the CT information and
+                       LastCRC byte.
   --format FORMAT      jsonl (default): one JSON object per complete lap, then a summary line.
                        csv: the header lap,t,angle_deg,range_mm,flag, then one row per point of
                        every lap (the fields as in jsonl; no summary). summary: only the summary.
@@ -218,8 +221,10 @@ int run_decode(std::span<const std::string> raw) {
                                                                      scale_option, reading_option(args)))
                              : std::nullopt;
   const std::string model = recording ? "" : args.required("model");
-  const ModelProfile* profile = recording ? recording->profile : find_profile(model);
-  if (!profile) throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()));
+  const ModelProfile* profile = recording ? recording->profile : find_decodable_profile(model);
+  if (!profile)
+    throw UsageError("unknown model '" + model + "'; valid models are " + std::string(model_names()) +
+                     ", and X4 or X2 to decode their bytes");
   const auto mcap = args.value("mcap");
   if (mcap) refuse_to_overwrite(*mcap, args, "--mcap");
   if (!mcap && (args.value("compression") || args.value("frame-id") || args.has("no-link-bytes") || args.has("force")))

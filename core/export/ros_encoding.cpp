@@ -28,6 +28,8 @@ RangeLimits range_limits(Model model) {
     case Model::TG15: return {0.05f, 15.0f};
     case Model::TG30: return {0.05f, 30.0f};
     case Model::TG50: return {0.05f, 50.0f};
+    case Model::X4: return {0.12f, 10.0f};  // the vendor SDK's model table
+    case Model::X2: return {0.10f, 8.0f};
   }
   return {0.1f, 16.0f};
 }

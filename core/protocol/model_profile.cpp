@@ -65,7 +65,16 @@ constexpr ModelProfile tg(Model model, std::string_view name, std::uint8_t code)
           kG6TgRangingKhz, 9,    true, 5.0,    12.0, 10.0,  kTgCommands};
 }
 
-constexpr std::array<ModelProfile, 5> kProfiles{{
+// X4: the vendor SDK's model table (code 6, 128000 baud, 5 k samples/s, PWM motor 5-12 Hz) and
+// its commands (scan, stop, device info, health, restart). X2: 115200 baud, 3 k samples/s, 4-8 Hz,
+// no commands at all (it streams from power-on).
+constexpr std::array kX4Commands{Command::Scan, Command::Stop, Command::DeviceInfo, Command::HealthStatusBits,
+                                 Command::RestartG1};
+constexpr std::array<std::uint16_t, 1> kX4RangingKhz{5};
+constexpr std::array<std::uint16_t, 1> kX2RangingKhz{3};
+
+constexpr std::size_t kDrivenModels = 5;
+constexpr std::array<ModelProfile, 7> kProfiles{{
     {Model::G1, "G1", 19, 230400, 2, true, true, Command::HealthStatusBits, Command::RestartG1, kG1RangingKhz, 9, false,
      5.0, 12.0, 9.0, kG1Commands},
     {Model::G6, "G6", 13, 512000, 0, false, false, Command::HealthStatusCode, Command::RestartG6TG, kG6TgRangingKhz, 9,
@@ -73,6 +82,24 @@ constexpr std::array<ModelProfile, 5> kProfiles{{
     tg(Model::TG15, "TG15", 100),
     tg(Model::TG30, "TG30", 101),
     tg(Model::TG50, "TG50", 102),
+    {Model::X4, "X4", 6, 128000, 0, false, false, Command::HealthStatusBits, Command::RestartG1, kX4RangingKhz, 5,
+     false, 5.0, 12.0, 7.0, kX4Commands},
+    {Model::X2,
+     "X2",
+     6,
+     115200,
+     0,
+     false,
+     false,
+     Command::HealthStatusBits,
+     Command::RestartG1,
+     kX2RangingKhz,
+     3,
+     false,
+     4.0,
+     8.0,
+     7.0,
+     {}},
 }};
 
 bool equals_ignoring_case(std::string_view a, std::string_view b) {
@@ -93,18 +120,26 @@ std::optional<std::uint8_t> ModelProfile::ranging_index(std::uint16_t khz) const
   return static_cast<std::uint8_t>(it - ranging_khz.begin());
 }
 
-std::span<const ModelProfile> all_profiles() { return kProfiles; }
+std::span<const ModelProfile> all_profiles() { return std::span(kProfiles).first(kDrivenModels); }
 
-const ModelProfile& profile_for(Model model) { return kProfiles[static_cast<std::size_t>(model)]; }
+std::span<const ModelProfile> decode_only_profiles() { return std::span(kProfiles).subspan(kDrivenModels); }
 
-const ModelProfile* find_profile(std::string_view name) {
+const ModelProfile* find_decodable_profile(std::string_view name) {
   for (const auto& profile : kProfiles)
     if (equals_ignoring_case(profile.name, name)) return &profile;
   return nullptr;
 }
 
+const ModelProfile& profile_for(Model model) { return kProfiles[static_cast<std::size_t>(model)]; }
+
+const ModelProfile* find_profile(std::string_view name) {
+  for (const auto& profile : all_profiles())
+    if (equals_ignoring_case(profile.name, name)) return &profile;
+  return nullptr;
+}
+
 const ModelProfile* find_profile_by_code(std::uint8_t model_code) {
-  for (const auto& profile : kProfiles)
+  for (const auto& profile : all_profiles())
     if (profile.model_code == model_code) return &profile;
   return nullptr;
 }

@@ -10,7 +10,9 @@
 
 namespace ydscope {
 
-enum class Model : std::uint8_t { G1, G6, TG15, TG30, TG50 };
+// G1, G6 and TG are the lidars ydscope drives; X4 and X2 share their packet layout and are decoded
+// from their bytes (decode_only_profiles): they are not offered where a lidar is driven.
+enum class Model : std::uint8_t { G1, G6, TG15, TG30, TG50, X4, X2 };
 
 // The distance scales (mm per raw count) any source may ask for: --distance-scale, a
 // recording's metadata, the app. Wide enough for every firmware seen; anything else (0, negative,
@@ -47,7 +49,12 @@ struct ModelProfile {
   std::optional<std::uint8_t> ranging_index(std::uint16_t khz) const;
 };
 
+// The lidars ydscope drives (G1, G6, TG15, TG30, TG50).
 std::span<const ModelProfile> all_profiles();
+// Units of the same packet family whose bytes ydscope decodes but does not drive (X4, X2).
+std::span<const ModelProfile> decode_only_profiles();
+// A driven or decode-only model by name, for reading bytes (decode).
+const ModelProfile* find_decodable_profile(std::string_view name);
 const ModelProfile& profile_for(Model model);
 // Case-insensitive name lookup ("g1", "TG30").
 const ModelProfile* find_profile(std::string_view name);

@@ -13,15 +13,22 @@ constexpr std::array<std::uint16_t, 7> kG1SamplesKhz{4, 5, 8, 9, 10, 16, 18};
 constexpr std::array<std::uint16_t, 3> kManualSamplesKhz{4, 8, 9};
 constexpr std::array<std::uint16_t, 3> kG6FieldSamplesKhz{8, 16, 18};
 constexpr std::array<std::uint16_t, 3> kTgFieldSamplesKhz{10, 18, 20};
+constexpr std::array<std::uint16_t, 1> kX4SamplesKhz{5};
+constexpr std::array<std::uint16_t, 1> kX2SamplesKhz{3};
 
-enum class Family : std::uint8_t { G1, G6, TG };
+enum class Family : std::uint8_t { G1, G6, TG, X4, X2 };
 
 Family family_of(Model model) {
   switch (model) {
     case Model::G1: return Family::G1;
     case Model::G6: return Family::G6;
-    default: return Family::TG;
+    case Model::TG15:
+    case Model::TG30:
+    case Model::TG50: return Family::TG;
+    case Model::X4: return Family::X4;
+    case Model::X2: return Family::X2;
   }
+  return Family::G1;
 }
 
 struct Row {
@@ -34,7 +41,7 @@ constexpr ZeroPacketScanRate kCtRate{true, 0.0};
 constexpr ZeroPacketScanRate kCtRateFrom3Hz{true, 3.0};
 
 // The one table. Reading, id, label, mm per count, correction, samples, CT scan rate, byte.
-const std::array<Row, 6> kRows{{
+const std::array<Row, 8> kRows{{
     {Family::G1,
      {Reading::Field, "g1", "G1 manual = field: S>>2 mm, flags S&3, LastCRC", 1.0, true, kG1SamplesKhz, kNoCtRate,
       ByteBeforeZero::LapCrc8}},
@@ -53,6 +60,13 @@ const std::array<Row, 6> kRows{{
       kTgFieldSamplesKhz, kCtRate, ByteBeforeZero::Unexplained}},
     {Family::TG,
      {Reading::Manual, "tg-manual", "manual: S/2 mm, 4/8/9 k samples/s", 0.5, true, kManualSamplesKhz, kNoCtRate,
+      ByteBeforeZero::None}},
+    // X4 and X2 (decode only): the SDK reads them as triangulation units, S/4 mm corrected at S/4.
+    {Family::X4,
+     {Reading::Field, "x4", "X4 (vendor SDK): S/4 mm, 5 k samples/s", 0.25, true, kX4SamplesKhz, kNoCtRate,
+      ByteBeforeZero::None}},
+    {Family::X2,
+     {Reading::Field, "x2", "X2 (vendor SDK): S/4 mm, 3 k samples/s", 0.25, true, kX2SamplesKhz, kNoCtRate,
       ByteBeforeZero::None}},
 }};
 
@@ -81,6 +95,8 @@ const UnitConventions& conventions_for(const ModelProfile& profile, std::optiona
     case Family::TG:
       if (reading == Reading::Manual) return row("tg-manual");
       return row(firmware && old_tg_firmware(*firmware) ? "tg-field-fw1.2" : "tg-field");
+    case Family::X4: return row("x4");
+    case Family::X2: return row("x2");
   }
   return row("g1");
 }

@@ -198,6 +198,16 @@ TEST(CliDecode, DistanceScaleOverride) {
   EXPECT_NE(run.err.find("unknown --conventions 'paper'"), std::string::npos) << run.err;
 }
 
+TEST(CliDecode, X4BytesDecodeAsAnX4ThoughNoCommandDrivesOne) {
+  const auto run = run_cli_apart("decode --model x4 --format summary " + capture_arg("x4-scan1.bin"));
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find(R"("packets":455,"checksum_errors":0,"zero_packets":28,"laps":27)"), std::string::npos)
+      << run.out;
+  const auto scan = run_cli_apart("scan --port /dev/null --model X4 --laps 1");
+  EXPECT_EQ(scan.status, 2) << "ydscope drives G1, G6 and TG only";
+  EXPECT_NE(scan.err.find("unknown model 'X4'"), std::string::npos) << scan.err;
+}
+
 TEST(CliDecode, UsageErrorsExitTwoWithOneSentence) {
   auto run = run_cli_apart("decode --model X9 " + capture_arg("x4-scan1.bin"));
   EXPECT_EQ(run.status, 2);
