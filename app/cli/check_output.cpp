@@ -38,7 +38,12 @@ void print_check_text(std::FILE* out, const CheckRecord& record) {
                  r.measured.c_str(), r.limit.c_str());
   const std::size_t failed = static_cast<std::size_t>(std::count_if(
       record.results.begin(), record.results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; }));
-  if (failed == 0)
+  const CheckOutcome outcome = check_outcome(record);
+  if (outcome == CheckOutcome::Incomplete)
+    std::fprintf(out, "verdict: INCOMPLETE (%s; of what was measured, %zu of %zu criteria failed%s%s)\n",
+                 incomplete_reason(record).c_str(), failed, record.results.size(), failed ? ": " : "",
+                 failed_ids(record).c_str());
+  else if (failed == 0)
     std::fprintf(out, "verdict: PASS (%zu criteria)\n", record.results.size());
   else
     std::fprintf(out, "verdict: FAIL (%zu of %zu criteria: %s)\n", failed, record.results.size(),
@@ -49,7 +54,7 @@ void print_check_json(std::FILE* file, const CheckRecord& record) {
   JsonOut out(file);
   const LapTimingStatistics& t = record.observations.timing;
   out.raw(R"({"type":"check","verdict":)");
-  out.string(all_passed(record.results) ? "pass" : "fail");
+  out.string(outcome_word(check_outcome(record)));
   out.raw(R"(,"failed":[)");
   bool first = true;
   for (const CriterionResult& r : record.results) {

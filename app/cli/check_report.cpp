@@ -104,11 +104,11 @@ std::string charts(const CheckRecord& record) {
 }  // namespace
 
 std::string check_report_html(const CheckRecord& record) {
-  // A run cut short is neither: its criteria cover only part of the time asked for.
-  const bool complete = record.failure.empty() && !record.interrupted;
-  const bool pass = all_passed(record.results);
-  const char* word = !complete ? "INCOMPLETE" : pass ? "PASS" : "FAIL";
-  const char* style = !complete ? "incomplete" : pass ? "pass" : "fail";
+  const CheckOutcome outcome = check_outcome(record);
+  const char* style = outcome_word(outcome);
+  const char* word = outcome == CheckOutcome::Incomplete ? "INCOMPLETE"
+                     : outcome == CheckOutcome::Pass     ? "PASS"
+                                                         : "FAIL";
   const ModelProfile* profile = record.observations.profile;
   const std::string unit = (profile ? std::string(profile->name) : "lidar") +
                            (record.started.device ? " " + record.started.device->serial : std::string());

@@ -237,4 +237,24 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   return record;
 }
 
+CheckOutcome check_outcome(const CheckRecord& record) {
+  if (record.interrupted || !record.failure.empty()) return CheckOutcome::Incomplete;
+  return all_passed(record.results) ? CheckOutcome::Pass : CheckOutcome::Fail;
+}
+
+const char* outcome_word(CheckOutcome outcome) {
+  switch (outcome) {
+    case CheckOutcome::Pass: return "pass";
+    case CheckOutcome::Fail: return "fail";
+    case CheckOutcome::Incomplete: return "incomplete";
+  }
+  return "incomplete";
+}
+
+std::string incomplete_reason(const CheckRecord& record) {
+  if (!record.failure.empty())
+    return format_text("the link failed after %.1f s: %s", record.measured_seconds, record.failure.c_str());
+  return format_text("interrupted after %.1f s", record.measured_seconds);
+}
+
 }  // namespace ydscope::cli

@@ -45,6 +45,14 @@ struct CheckRecord {
   std::string failure;       // the device failed mid-run: one sentence (results are partial)
 };
 
+// A run cut short (Ctrl-C, or the link failed mid-run) is neither a pass nor a fail: its criteria
+// cover only part of the time asked for. Every format says the same word.
+enum class CheckOutcome : std::uint8_t { Pass, Fail, Incomplete };
+CheckOutcome check_outcome(const CheckRecord& record);
+const char* outcome_word(CheckOutcome outcome);  // "pass", "fail", "incomplete"
+// Why a run is incomplete, for people: "interrupted after 2.0 s", "the link failed after 2.0 s: ...".
+std::string incomplete_reason(const CheckRecord& record);
+
 // Throws UsageError for a request the detected model cannot do (a scan rate out of its span, a
 // ranging frequency it lacks) and std::runtime_error when the device fails before measuring.
 // `stop` (set by a signal handler) ends the measurement early.

@@ -76,9 +76,10 @@ limit options (defaults in brackets):
   --min-sector-valid-pct P       valid returns in the sector [95]
 
 On a terminal, progress is shown on stderr. Ctrl-C stops the lidar and prints the verdict on what
-was measured until then, marked as interrupted.
+was measured until then, marked as interrupted. A run cut short (Ctrl-C, or the link failing
+mid-run) is never a pass: its verdict is INCOMPLETE in the text, JSON and report alike.
 
-json: {"type":"check","verdict":"pass"|"fail","failed":[ids],"interrupted":bool,"failure":null|
+json: {"type":"check","verdict":"pass"|"fail"|"incomplete","failed":[ids],"interrupted":bool,"failure":null|
   sentence,"seconds":S,"device":{as `info`},"criteria":[{"id","title","verdict","value","measured",
   "limit"}],"timing":{"laps","normal_laps","interruptions","mean_hz","jitter_pct","sample_rate_hz",
   "points","lost_samples"},"sector":null|{"name","points","valid","range_mm":{...},

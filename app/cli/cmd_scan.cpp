@@ -76,6 +76,10 @@ int run_scan(std::span<const std::string> raw) {
   Session session(64, [&bell] { bell.ring(); });
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  std::signal(SIGHUP, on_signal);
+  // A reader that goes away (`scan ... | head -1`) must not kill us before the lidar is stopped:
+  // the write fails instead, and the loop ends as for Ctrl-C.
+  std::signal(SIGPIPE, SIG_IGN);
   const SessionSnapshot started = connect_or_throw(session, config);
   if (config.distance_scale) session.set_distance_scale(config.distance_scale);
   const bool g1_info = started.device && started.device->profile && started.device->profile->ct_carries_info;
@@ -88,7 +92,16 @@ int run_scan(std::span<const std::string> raw) {
   Lap lap;
   std::int64_t printed = 0;
   std::string failure;
-  while (printed < *laps_wanted && !interrupted.load()) {
+  bool reader_gone = false;
+  const auto deliver = [&](const Lap& lap) {
+    try {
+      printer.print(lap, health.lap_health(lap, g1_info));
+      out.flush();  // a program reading the pipe gets each lap as it arrives
+    } catch (const std::runtime_error&) {
+      reader_gone = true;
+    }
+  };
+  while (printed < *laps_wanted && !interrupted.load() && !reader_gone) {
     if (session.laps().try_pop(lap)) {
       health.observe_lap(lap);
       if (!start) {
@@ -96,12 +109,10 @@ int run_scan(std::span<const std::string> raw) {
         start = iso8601_utc(std::chrono::system_clock::now() -
                             std::chrono::duration_cast<std::chrono::system_clock::duration>(since_first_byte));
       }
-      printer.print(lap, health.lap_health(lap, g1_info));
-      out.flush();  // a program reading the pipe gets each lap as it arrives
+      deliver(lap);
       ++printed;
       continue;
     }
-    out.flush();
     const SessionSnapshot s = session.snapshot();
     health.observe_answer(s.health);
     if (s.state != LinkState::Scanning && s.state != LinkState::CommandInProgress) {
@@ -114,6 +125,10 @@ int run_scan(std::span<const std::string> raw) {
   const SessionSnapshot end = session.wait_until(
       [](const SessionSnapshot& s) { return s.state == LinkState::Idle || s.state == LinkState::Failed; },
       std::chrono::seconds(3));
+  if (reader_gone) {  // the lidar is stopped; end as a closed pipe ends any program, quietly
+    std::signal(SIGPIPE, SIG_DFL);
+    std::raise(SIGPIPE);
+  }
   DecoderCounters summary;
   summary.bytes = end.counters.bytes_received;
   summary.packets = end.counters.packets;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "core/link/link_address.h"
 
@@ -16,6 +17,13 @@ ReconnectPlan::ReconnectPlan(const SessionConfig& config)
     watched_path_ = address->path;
   else
     max_ = std::min(max_, kMaxTcpBackoff);
+}
+
+bool ReconnectPlan::hopeless() const {
+  if (!watched_path_) return false;
+  std::error_code ec;
+  const auto status = std::filesystem::status(*watched_path_, ec);  // follows links, as open does
+  return !ec && std::filesystem::exists(status) && !std::filesystem::is_character_file(status);
 }
 
 std::string ReconnectPlan::retry_text(bool watching) const {

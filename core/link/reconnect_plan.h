@@ -25,6 +25,9 @@ class ReconnectPlan {
   const std::optional<std::string>& watched_path() const { return watched_path_; }
   // What the state line adds to the error: "; retrying when /dev/ttyUSB0 comes back, or in 0.5 s".
   std::string retry_text(bool watching) const;
+  // True when waiting cannot help: the serial path exists and is no device (a regular file, a
+  // folder), so no plugging in will make it a port.
+  bool hopeless() const;
 
  private:
   std::chrono::milliseconds first_, max_, delay_;

@@ -71,7 +71,7 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
     link_.detach();
     intents_.fail_all(error);
     if (disconnect_requested_ || stopping_) break;
-    if (!config.reconnect) {
+    if (!config.reconnect || plan.hopeless()) {  // said once; retrying could not help
       board_.set_state(LinkState::Failed, error);
       co_return;
     }

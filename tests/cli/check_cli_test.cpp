@@ -5,6 +5,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -231,19 +232,11 @@ TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   SimOnPty sim(Model::G6);
   const auto report =
       std::filesystem::path(::testing::TempDir()) / ("check-ctrl-c-" + std::to_string(getpid()) + ".html");
-  int out_pipe[2];
-  ASSERT_EQ(pipe(out_pipe), 0);
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    dup2(out_pipe[1], STDOUT_FILENO);
-    close(out_pipe[0]);
-    const std::string port = sim.port(), report_path = report.string();
-    execl(YDSCOPE_CLI_PATH, YDSCOPE_CLI_PATH, "check", "--port", port.c_str(), "--seconds", "60", "--settle-seconds",
-          "0.3", "--report", report_path.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  close(out_pipe[1]);
+  const StartedCli cli = start_cli(
+      {"check", "--port", sim.port(), "--seconds", "60", "--settle-seconds", "0.3", "--report", report.string()});
+  ASSERT_GE(cli.pid, 0);
+  const pid_t child = cli.pid;
+  const int out_fd = cli.out_fd;
   // Wait until the lidar has been scanning a while (the virtual lidar counts its laps' packets).
   for (int i = 0; i < 200; ++i) {
     std::uint64_t zero_packets = 0;
@@ -255,14 +248,16 @@ TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   std::string out;
   char buffer[4096];
   ssize_t n;
-  while ((n = read(out_pipe[0], buffer, sizeof buffer)) > 0) out.append(buffer, static_cast<std::size_t>(n));
-  close(out_pipe[0]);
+  while ((n = read(out_fd, buffer, sizeof buffer)) > 0) out.append(buffer, static_cast<std::size_t>(n));
+  close(out_fd);
   int status = 0;
   waitpid(child, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130) << out;
   EXPECT_NE(out.find("(interrupted)"), std::string::npos) << out;
   EXPECT_NE(out.find("PASS  scan rate"), std::string::npos) << out;
+  EXPECT_NE(out.find("verdict: INCOMPLETE (interrupted after"), std::string::npos) << out;
+  EXPECT_EQ(out.find("verdict: PASS"), std::string::npos) << "a run cut short is never a pass: " << out;
   DeviceMode mode = DeviceMode::Scanning;
   sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
   EXPECT_EQ(mode, DeviceMode::Idle);
@@ -270,6 +265,30 @@ TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {
   std::filesystem::remove(report);
   EXPECT_NE(html.find(R"(id="verdict">INCOMPLETE</span>)"), std::string::npos) << "the report is written, marked";
   EXPECT_NE(html.find("Interrupted after"), std::string::npos);
+}
+
+// The lidar unplugged part way through: what was measured is judged, but the run is incomplete
+// in every format, never a pass.
+TEST(CheckCli, ALinkThatDiesPartWayIsIncompleteNeverAPass) {
+  SimOnPty sim(Model::G6);
+  std::uint32_t baud = 0;
+  sim.server().with_device([&](VirtualLidar& d) { baud = d.profile().default_baud; });
+  auto run = std::async(std::launch::async, [&] {
+    return run_cli_apart("check --port " + sim.port() + " --baud " + std::to_string(baud) +
+                         " --seconds 6 --settle-seconds 0.3 --format json");
+  });
+  // Unplug once the measurement is under way (about 30 laps of the virtual G6 at 8 Hz).
+  for (int i = 0; i < 200; ++i) {
+    std::uint64_t zero_packets = 0;
+    sim.server().with_device([&](VirtualLidar& d) { zero_packets = d.counters().zero_packets; });
+    if (zero_packets > 30) break;
+    std::this_thread::sleep_for(50ms);
+  }
+  sim.server().unplug();
+  const CliResult result = run.get();
+  EXPECT_EQ(result.status, 1) << result.out << result.err;
+  EXPECT_NE(result.out.find(R"({"type":"check","verdict":"incomplete")"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find(R"("failure":null)"), std::string::npos) << "the failure is named: " << result.out;
 }
 
 }  // namespace

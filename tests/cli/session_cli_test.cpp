@@ -2,7 +2,12 @@
 // pseudo-terminal: one JSON object (or N laps and a summary), and a sentence plus exit 1 on failure.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <string>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "cli/cli_run_support.h"
 #include "support/session_test_support.h"
@@ -99,6 +104,36 @@ TEST(SessionCli, FailuresAreOneSentenceAndANonZeroExit) {
   EXPECT_EQ(run_cli("info --port /dev/null --model G7").status, 2);
   EXPECT_EQ(run_cli("scan --port /dev/null").status, 2) << "--laps is required";
   EXPECT_EQ(run_cli("set --port /dev/null").status, 2) << "a target is required";
+}
+
+// `scan --laps 1000 | head -1`: the reader goes away after one line. The lidar must be stopped
+// before ydscope-cli ends (a real unit would otherwise keep spinning), and it ends as a closed
+// pipe ends any program: by SIGPIPE, quietly.
+TEST(SessionCli, AReaderThatGoesAwayStopsTheLidarFirst) {
+  SimOnPty sim(Model::G6);
+  const StartedCli cli = start_cli({"scan", "--port", sim.port(), "--laps", "1000"});
+  ASSERT_GE(cli.pid, 0);
+  const pid_t child = cli.pid;
+  std::string first;
+  char c = 0;
+  while (read(cli.out_fd, &c, 1) == 1 && c != '\n') first += c;
+  close(cli.out_fd);  // head -1 is done
+  EXPECT_NE(first.find("{\"type\":\"lap\""), std::string::npos) << first.substr(0, 80);
+  int status = 0;
+  bool ended = false;
+  for (int i = 0; i < 200 && !ended; ++i) {
+    ended = waitpid(child, &status, WNOHANG) == child;
+    if (!ended) std::this_thread::sleep_for(50ms);
+  }
+  if (!ended) {  // never leave it running past the test
+    kill(child, SIGKILL);
+    waitpid(child, &status, 0);
+    FAIL() << "ydscope-cli scan did not end within 10 s of its reader going away";
+  }
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGPIPE) << "status " << status;
+  DeviceMode mode = DeviceMode::Scanning;
+  sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
+  EXPECT_EQ(mode, DeviceMode::Idle) << "the lidar was left scanning";
 }
 
 }  // namespace

@@ -3,6 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
 namespace ydscope {
 namespace {
 
@@ -53,6 +58,21 @@ TEST(ReconnectPlan, ALinkOpenedByItsOwnOpenerIsNeitherWatchedNorCapped) {
   ReconnectPlan plan(config);
   EXPECT_FALSE(plan.watched_path());
   EXPECT_EQ(delays(plan, 6).back(), 4000);
+}
+
+// A regular file or a folder given as the port will never become one: the session says so once
+// and stops, instead of "retrying when ... comes back" forever. A missing path may yet appear.
+TEST(ReconnectPlan, APathThatIsNoDeviceIsHopelessAMissingOneIsNot) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ydscope-hopeless-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "lidar.txt";
+  std::ofstream(file) << "not a port\n";
+  EXPECT_TRUE(ReconnectPlan(config_for(file.string())).hopeless());
+  EXPECT_TRUE(ReconnectPlan(config_for(dir.string())).hopeless());
+  EXPECT_FALSE(ReconnectPlan(config_for((dir / "ttyUSB7").string())).hopeless()) << "it may be plugged in";
+  EXPECT_FALSE(ReconnectPlan(config_for("/dev/null")).hopeless()) << "a character device";
+  EXPECT_FALSE(ReconnectPlan(config_for("tcp://127.0.0.1:2000")).hopeless());
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -164,5 +164,23 @@ TEST(SessionStartup, AMissingPortFailsWithASentence) {
   EXPECT_NE(s.message.find("/dev/ydscope-no-such-port"), std::string::npos) << s.message;
 }
 
+// A regular file given as the port: even with reconnecting on (the app, serve), the session says
+// once what is wrong and stops, rather than "retrying when ... comes back" for ever.
+TEST(SessionStartup, ARegularFileAsThePortFailsOnceEvenWhenReconnecting) {
+  char path[] = "/tmp/ydscope-notaport-XXXXXX";
+  const int fd = ::mkstemp(path);
+  ASSERT_GE(fd, 0);
+  ::close(fd);
+  Session session;
+  SessionConfig config = config_for(path, Model::G6);
+  ASSERT_TRUE(config.reconnect);
+  session.connect(config);
+  const SessionSnapshot s = wait_for_state(session, LinkState::Failed, std::chrono::seconds(5));
+  ::unlink(path);
+  ASSERT_EQ(s.state, LinkState::Failed) << s.message;
+  EXPECT_NE(s.message.find("not a serial port"), std::string::npos) << s.message;
+  EXPECT_EQ(s.message.find("retrying"), std::string::npos) << s.message;
+}
+
 }  // namespace
 }  // namespace ydscope
