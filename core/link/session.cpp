@@ -113,7 +113,8 @@ void Session::Impl::shutdown() {
   disconnect_requested_ = true;
   pending_config_.reset();
   recording_.stop_file();
-  link_.detach();
+  // A running supervisor stops a scanning lidar before it lets the link go (supervise's end).
+  if (!supervisor_running_) link_.detach();
   notify();
   tick_.cancel();
 }

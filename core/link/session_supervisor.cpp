@@ -86,12 +86,13 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
     counters_.add_reconnect();
     plan.waited();
   }
-  if (link_.attached() && !stopping_) {
-    if (link_.device_scanning()) {  // leave the lidar stopped, as we found it
-      link_.stop_stream();
-      link_.send(Command::Stop);
-      co_await link_.sleep(30ms);
-    }
+  // Leave the lidar stopped, as we found it, however the session ends: a disconnect, or the
+  // program ending (SIGTERM, --seconds, a closed window, an error unwinding): a real unit left
+  // scanning keeps its motor and laser on.
+  if (link_.attached() && link_.device_scanning()) {
+    link_.stop_stream();
+    link_.send(Command::Stop);
+    co_await link_.sleep(30ms);
   }
   link_.detach();
   if (!stopping_) board_.set_state(LinkState::Idle, "disconnected");

@@ -133,7 +133,8 @@ INSTANTIATE_TEST_SUITE_P(Faults, CheckFault, ::testing::ValuesIn(kFaults),
 
 TEST(CheckCli, TheTextVerdictNamesTheFailedCriterion) {
   SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.faults.scan_hz_offset = -0.6; });
-  const CliResult run = run_cli_apart("check --port " + sim.port() + " --seconds 2 --settle-seconds 0.3");
+  // At the unit's own baud, as check() explains.
+  const CliResult run = run_cli_apart("check --port " + sim.port() + " --baud 512000 --seconds 2 --settle-seconds 0.3");
   EXPECT_EQ(run.status, 3) << run.out;
   EXPECT_NE(run.out.find("FAIL  scan rate"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("PASS  sample rate"), std::string::npos) << run.out;

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <thread>
+
 #include "core/link/serial_link.h"
 #include "support/session_test_support.h"
 
@@ -180,6 +182,23 @@ TEST(SessionStartup, ARegularFileAsThePortFailsOnceEvenWhenReconnecting) {
   ASSERT_EQ(s.state, LinkState::Failed) << s.message;
   EXPECT_NE(s.message.find("not a serial port"), std::string::npos) << s.message;
   EXPECT_EQ(s.message.find("retrying"), std::string::npos) << s.message;
+}
+
+// A program that ends without disconnecting (SIGTERM in serve, a closed window, an exception
+// unwinding) destroys its session: the lidar is stopped first, not left spinning.
+TEST(SessionStartup, ASessionEndedWhileScanningStopsTheLidar) {
+  SimOnPty sim(Model::G6);
+  {
+    Session session;
+    session.connect(config_for(sim.port(), Model::G6));
+    ASSERT_EQ(take_laps(session, 2), 2u);
+  }
+  DeviceMode mode = DeviceMode::Scanning;
+  for (int i = 0; i < 100 && mode != DeviceMode::Idle; ++i) {  // the virtual lidar reads it on its thread
+    sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
+    if (mode != DeviceMode::Idle) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_EQ(mode, DeviceMode::Idle) << "the session went without sending A5 65";
 }
 
 }  // namespace
