@@ -16,7 +16,7 @@ std::optional<std::uint8_t> byte_of(std::string_view text) {
 
 }  // namespace
 
-std::optional<FirmwareVersion> recorded_sdk_firmware(const RecordingMetadata& metadata) {
+std::optional<FirmwareVersion> recorded_firmware(const RecordingMetadata& metadata) {
   if (!metadata.firmware) return std::nullopt;
   const std::string_view text = *metadata.firmware;
   const std::size_t dot = text.find('.');
@@ -24,7 +24,13 @@ std::optional<FirmwareVersion> recorded_sdk_firmware(const RecordingMetadata& me
   const auto first = byte_of(text.substr(0, dot));
   const auto second = byte_of(text.substr(dot + 1));
   if (!first || !second) return std::nullopt;
-  return firmware_as_sdk_reads(*first, *second);
+  return FirmwareVersion{*first, *second};
+}
+
+std::optional<FirmwareVersion> recorded_sdk_firmware(const RecordingMetadata& metadata) {
+  const auto recorded = recorded_firmware(metadata);
+  if (!recorded) return std::nullopt;
+  return firmware_as_sdk_reads(recorded->major, recorded->minor);
 }
 
 const UnitConventions& recorded_conventions(const RecordingMetadata& metadata, const ModelProfile& profile,

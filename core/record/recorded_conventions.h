@@ -13,7 +13,9 @@ namespace ydscope {
 const UnitConventions& recorded_conventions(const RecordingMetadata& metadata, const ModelProfile& profile,
                                             std::optional<Reading> asked);
 
-// The recorded firmware ("major.minor", the manuals' byte order) as the vendor SDK reads it.
+// The recorded firmware ("major.minor": the A5 90 bytes in the manuals' order), if it parses.
+std::optional<FirmwareVersion> recorded_firmware(const RecordingMetadata& metadata);
+// The same bytes as the vendor SDK reads them (firmware_as_sdk_reads).
 std::optional<FirmwareVersion> recorded_sdk_firmware(const RecordingMetadata& metadata);
 
 }  // namespace ydscope
