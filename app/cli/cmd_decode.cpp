@@ -181,13 +181,12 @@ InterferenceFilter parse_filter(const std::string& list) {
 // --mcap: the same input as an MCAP file. A recording's records go in with their times; raw
 // bytes in small pieces timed at the line rate, so laps get distinct, plausible stamps.
 void write_mcap(const Arguments& args, const std::string& path, bool recording, const ModelProfile& profile,
-                std::optional<double> scale) {
+                std::optional<double> scale, std::optional<Reading> reading) {
   const std::string out = *args.value("mcap");
   McapExportOptions options = mcap_options_from(args);
   options.ros.model = profile.model;
   options.ros.distance_scale = scale;
-  // Raw bytes are a real unit's: the field's reading unless told otherwise.
-  options.ros.reading = recording ? reading_option(args) : reading_option(args).value_or(Reading::Field);
+  options.ros.reading = reading;
   std::string error;
   auto exporter = McapRecordingExport::create(out, options, error);
   if (!exporter) throw std::runtime_error(error);
@@ -245,10 +244,12 @@ int run_decode(std::span<const std::string> raw) {
       recording ? recording_distance_scale(scale_option, args.value("model").has_value(), recording->summary.metadata)
                 : scale_option;
 
-  // Raw bytes are a real unit's: read them as the field does unless told otherwise.
+  // Raw bytes are a real unit's: read them as the field does unless told otherwise. A recording is
+  // read as it was made unless told otherwise (plan_recording chose its conventions).
+  const std::optional<Reading> reading =
+      recording ? reading_option(args) : reading_option(args).value_or(Reading::Field);
   const UnitConventions& conventions =
-      recording ? *recording->conventions
-                : conventions_for(*profile, std::nullopt, reading_option(args).value_or(Reading::Field));
+      recording ? *recording->conventions : conventions_for(*profile, std::nullopt, *reading);
   ScanDecoder decoder(*profile, conventions, scale);
   JsonOut out(stdout);
   LapPrinter printer(out, format, profile->ct_carries_info);
@@ -271,7 +272,7 @@ int run_decode(std::span<const std::string> raw) {
   if (printer.wants_summary())
     write_summary(out, decoder.counters(), recording ? recording->summary.metadata.start_wall_time : std::nullopt);
   out.flush();
-  if (mcap) write_mcap(args, path, recording.has_value(), *profile, scale);
+  if (mcap) write_mcap(args, path, recording.has_value(), *profile, scale, reading);
   if (std::fflush(stdout) != 0)
     throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
   return kExitOk;

@@ -54,6 +54,8 @@ StartupOutcome start_replay(const StartupParts& parts, const SessionConfig& conf
   device.profile = outcome.profile;
   const RecordingMetadata* recorded = parts.link.link()->recording_metadata();
   if (recorded) device = recorded_device(*recorded, *outcome.profile);
+  // Kept for a later switch of reading (Session::set_reading): an old TG's firmware still counts.
+  if (recorded) outcome.sdk_firmware = recorded_sdk_firmware(*recorded);
   outcome.conventions =
       &recorded_conventions(recorded ? *recorded : RecordingMetadata{}, *outcome.profile, config.reading);
   parts.board.publish([&device](SessionSnapshot& s) { s.device = device; });
