@@ -1,5 +1,6 @@
 #include "app/cli/cli_command.h"
 
+#include <csignal>
 #include <algorithm>
 
 namespace ydscope::cli {
@@ -19,5 +20,9 @@ std::span<const CliCommand> registered_commands() {
 }
 
 RegisterCliCommand::RegisterCliCommand(const CliCommand& command) { registry().push_back(command); }
+
+void end_on_signals(void (*handler)(int)) {
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, handler);
+}
 
 }  // namespace ydscope::cli

@@ -25,6 +25,10 @@ struct CliCommand {
 
 std::span<const CliCommand> registered_commands();
 
+// The signals that end a command as Ctrl-C does (so a device command stops the lidar and keeps
+// what it recorded): SIGINT, SIGTERM and SIGHUP, a closed terminal or ssh session.
+void end_on_signals(void (*handler)(int));
+
 struct RegisterCliCommand {
   explicit RegisterCliCommand(const CliCommand& command);
 };

@@ -166,8 +166,7 @@ int run_check_command(std::span<const std::string> raw) {
   if (report)
     if (const std::string problem = report_output_problem(*report); !problem.empty()) throw UsageError(problem);
 
-  std::signal(SIGINT, check_on_signal);
-  std::signal(SIGTERM, check_on_signal);
+  end_on_signals(check_on_signal);
   const CheckRecord record = run_check(plan, interrupted);
   if (format == "json")
     print_check_json(stdout, record);

@@ -152,8 +152,7 @@ int run_record(std::span<const std::string> raw) {
                        with_mcap_flags({"force"}), 0, source_repeatable_options());
   if (args.values("port").size() > 1) {
     if (const auto out = args.value("out")) refuse_to_overwrite(*out, args, "--out");
-    std::signal(SIGINT, record_on_signal);
-    std::signal(SIGTERM, record_on_signal);
+    end_on_signals(record_on_signal);
     return record_sources(args, interrupted);
   }
   for (const std::string& option : source_repeatable_options())
@@ -178,8 +177,7 @@ int run_record(std::span<const std::string> raw) {
   const bool tty = ::isatty(STDERR_FILENO) == 1;
 
   Session session(4);
-  std::signal(SIGINT, record_on_signal);
-  std::signal(SIGTERM, record_on_signal);
+  end_on_signals(record_on_signal);
   // Recording starts right after the connect intent, so the start-up exchange is in the file too.
   session.connect(config);
   // The MCAP side is written from the session's tap on a thread of its own.

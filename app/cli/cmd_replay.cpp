@@ -77,8 +77,7 @@ int run_replay(std::span<const std::string> raw) {
       recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"), scale_option, reading_option(args));
   print_recording_warnings("ydscope-cli replay", plan.warnings());
   if (plan.several_sources()) {
-    std::signal(SIGINT, replay_on_signal);
-    std::signal(SIGTERM, replay_on_signal);
+    end_on_signals(replay_on_signal);
     print_source_laps(path, plan, format, speed, {}, interrupted);
     return kExitOk;
   }
@@ -98,7 +97,7 @@ int run_replay(std::span<const std::string> raw) {
     out.flush();  // a program reading the pipe gets each lap as it is played
   };
 
-  boost::asio::signal_set signals(io, SIGINT, SIGTERM);
+  boost::asio::signal_set signals(io, SIGINT, SIGTERM, SIGHUP);  // as end_on_signals
   signals.async_wait([&](const boost::system::error_code& ec, int) {
     if (!ec) link->close();
   });

@@ -74,9 +74,7 @@ int run_scan(std::span<const std::string> raw) {
 
   LapBell bell;
   Session session(64, [&bell] { bell.ring(); });
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
-  std::signal(SIGHUP, on_signal);
+  end_on_signals(on_signal);
   // A reader that goes away (`scan ... | head -1`) must not kill us before the lidar is stopped:
   // the write fails instead, and the loop ends as for Ctrl-C.
   std::signal(SIGPIPE, SIG_IGN);

@@ -109,8 +109,7 @@ int run_serve(std::span<const std::string> raw) {
       with_mcap_flags({"force"}), 0, source_repeatable_options());
   if (args.values("port").size() > 1) {
     const foxglove::ServerOptions options = listen_options(args);
-    std::signal(SIGINT, serve_on_signal);
-    std::signal(SIGTERM, serve_on_signal);
+    end_on_signals(serve_on_signal);
     return serve_sources(args, options, stop_requested);
   }
   for (const std::string& option : source_repeatable_options())
@@ -130,8 +129,7 @@ int run_serve(std::span<const std::string> raw) {
   options.server.name = "ydscope on " + config.address;
 
   Session session(4);
-  std::signal(SIGINT, serve_on_signal);
-  std::signal(SIGTERM, serve_on_signal);
+  end_on_signals(serve_on_signal);
   // Clients and the MCAP file get the session's records from its tap, on a thread of their own.
   std::string error;
   auto share = SessionShare::start(session, options, error);

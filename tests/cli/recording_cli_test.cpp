@@ -178,21 +178,31 @@ TEST_F(RecordingCli, ReplayAtRecordedSpeedGivesTheSameLaps) {
   EXPECT_EQ(timed.out, fast.out);
 }
 
+// Ctrl-C, and a closed terminal or ssh session (SIGHUP) alike.
 TEST_F(RecordingCli, CtrlCClosesTheFileCleanly) {
-  const std::string port = start_sim(Model::G6);
-  const std::string file = path("interrupted.ydrec");
-  const pid_t pid = spawn({"record", "--port", port, "--out", file});
-  ASSERT_TRUE(wait_for_device_bytes(file, 2000));
-  ::kill(pid, SIGINT);
-  const CliRun result = finish(pid);
-  EXPECT_EQ(result.status, 0) << result.err;
-  EXPECT_EQ(result.out.rfind("recorded ", 0), 0u) << result.out;
-  std::string error;
-  const auto summary = summarize_recording(file, error);
-  ASSERT_TRUE(summary) << error;
-  EXPECT_TRUE(summary->warning.empty()) << summary->warning;
-  EXPECT_TRUE(summary->error.empty()) << summary->error;
-  EXPECT_GE(summary->device_bytes, 2000u);
+  for (const int signal : {SIGINT, SIGHUP}) {
+    SCOPED_TRACE(signal == SIGINT ? "SIGINT" : "SIGHUP");
+    const std::string port = start_sim(Model::G6);
+    const std::string file = path("interrupted-" + std::to_string(signal) + ".ydrec");
+    const pid_t pid = spawn({"record", "--port", port, "--out", file});
+    ASSERT_TRUE(wait_for_device_bytes(file, 2000));
+    ::kill(pid, signal);
+    const CliRun result = finish(pid);
+    EXPECT_EQ(result.status, 0) << result.err;
+    EXPECT_EQ(result.out.rfind("recorded ", 0), 0u) << result.out;
+    DeviceMode mode = DeviceMode::Scanning;
+    for (int i = 0; i < 50 && mode != DeviceMode::Idle; ++i) {  // the virtual lidar reads it on its thread
+      sim_->with_device([&](VirtualLidar& d) { mode = d.mode(); });
+      if (mode != DeviceMode::Idle) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    EXPECT_EQ(mode, DeviceMode::Idle) << "the lidar was left scanning";
+    std::string error;
+    const auto summary = summarize_recording(file, error);
+    ASSERT_TRUE(summary) << error;
+    EXPECT_TRUE(summary->warning.empty()) << summary->warning;
+    EXPECT_TRUE(summary->error.empty()) << summary->error;
+    EXPECT_GE(summary->device_bytes, 2000u);
+  }
 }
 
 TEST_F(RecordingCli, KilledRecorderLeavesAReadableFile) {
