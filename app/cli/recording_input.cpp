@@ -18,7 +18,8 @@ RecordingPlan recording_plan_or_throw(const std::string& path, RecordingUse use,
     case RecordingRefusal::NeedsModel: throw UsageError(plan.refusal_text);
     case RecordingRefusal::Unreadable:
     case RecordingRefusal::NotARecording:
-    case RecordingRefusal::NothingToPlay: break;
+    case RecordingRefusal::NothingToPlay:
+    case RecordingRefusal::Damaged: break;
   }
   throw std::runtime_error(plan.refusal_text);
 }

@@ -14,6 +14,12 @@ RecordingRefusal refusal_of(RecordingOpenFailure failure) {
   return RecordingRefusal::Unreadable;
 }
 
+// The sentence of the damage that ended the reading (a corrupt record, a cut-off tail), or empty:
+// "PATH is corrupt at byte N (...); the K records before it are intact".
+const std::string& damage_that_stopped(const RecordingSummary& summary) {
+  return summary.error.empty() ? summary.warning : summary.error;
+}
+
 }  // namespace
 
 const ModelProfile* recording_model(const std::optional<std::string>& model_option, const RecordingMetadata& metadata,
@@ -44,6 +50,8 @@ std::optional<double> recording_distance_scale(const std::optional<double>& scal
 
 std::string nothing_to_replay(const RecordingSummary& summary, const std::string& path) {
   if (summary.device_bytes > 0) return {};
+  if (const std::string& damage = damage_that_stopped(summary); !damage.empty())
+    return damage + ", and none of them holds bytes from a device: nothing to replay";
   return path + " holds no bytes from a device; nothing to replay";
 }
 
@@ -73,6 +81,16 @@ RecordingPlan plan_recording(const std::string& path, RecordingUse use, const st
     if (!source.profile) {
       plan.refusal = RecordingRefusal::NeedsModel;
       plan.sources.clear();
+      // Damage before the model record is the cause: "does not say which lidar" would hide it.
+      if (const std::string& damage = damage_that_stopped(plan.summary);
+          !model_option && !metadata.model && !damage.empty()) {
+        const std::uint64_t bytes = plan.summary.sources[id].device_bytes;
+        if (bytes == 0) plan.refusal = RecordingRefusal::Damaged;
+        plan.refusal_text = damage + ", and none of them says which lidar made it: " +
+                            (bytes == 0 ? std::string("nothing to decode")
+                                        : "pass --model (" + std::string(model_names()) + ") to decode the " +
+                                              std::to_string(bytes) + " bytes from the device before it");
+      }
       return plan;
     }
     source.distance_scale = recording_distance_scale(scale_option, model_option.has_value(), metadata);

@@ -29,6 +29,7 @@ enum class RecordingRefusal : std::uint8_t {
   Unsupported,    // a version or header size this ydscope cannot read
   NothingToPlay,  // Replay: not one byte from a device
   NeedsModel,     // no model recorded, an unknown one, or an unknown --model
+  Damaged,        // corrupt or cut off before it says which lidar made it, with no device byte before
 };
 
 // How one source of the recording decodes (version 2 has several; version 1 one).
@@ -73,7 +74,8 @@ const ModelProfile* recording_model(const std::optional<std::string>& model_opti
 std::optional<double> recording_distance_scale(const std::optional<double>& scale_option, bool model_chosen,
                                                const RecordingMetadata& metadata);
 
-// "PATH holds no bytes from a device; nothing to replay", or empty when it holds some.
+// "PATH holds no bytes from a device; nothing to replay", or empty when it holds some. When damage
+// stopped the reading, the sentence is the damage's: that is the cause, not an empty recording.
 std::string nothing_to_replay(const RecordingSummary& summary, const std::string& path);
 
 }  // namespace ydscope

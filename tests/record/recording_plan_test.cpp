@@ -104,5 +104,58 @@ TEST_F(RecordingPlanTest, DamageThatStillPlaysIsAWarningEach) {
   EXPECT_NE(plan.warnings()[0].find("the 3 records before it are intact"), std::string::npos) << plan.warnings()[0];
 }
 
+// Issue 26: a file corrupt before its model record said "does not say which lidar made it; pass
+// --model", while the corruption was the cause. Every use names it, where it is, and what helps.
+TEST_F(RecordingPlanTest, DamageBeforeTheModelRecordIsTheReasonGiven) {
+  const auto corrupt_after = [&](const std::string& name, const RawRecording& head) {
+    std::vector<std::uint8_t> bytes = head.bytes();
+    RecordHeader bad;
+    bad.type = static_cast<std::uint8_t>(RecordType::DeviceToHost);
+    bad.length = 0xFFFFFFFF;
+    const auto header = encode_record_header(bad);
+    bytes.insert(bytes.end(), header.begin(), header.end());
+    RawRecording model_later(1, 16, "model=G6\n");  // the record the damage hides
+    bytes.insert(bytes.end(), model_later.bytes().begin() + kFileHeaderSize, model_later.bytes().end());
+    const std::string path = (dir_ / name).string();
+    test::write_file_bytes(path, bytes);
+    return std::pair{path, head.bytes().size()};
+  };
+  RawRecording commands_only(1, 16, "port=/dev/pts/1\n");
+  commands_only.add(RecordType::HostToDevice, 1000, {0xA5, 0x90});
+  const auto [no_bytes, at] = corrupt_after("commands.ydrec", commands_only);
+  const std::string damage = no_bytes + " is corrupt at byte " + std::to_string(at) +
+                             " (record type 1, length 4294967295); the 2 records "
+                             "before it are intact, and none of them ";
+  RecordingPlan plan = plan_recording(no_bytes, RecordingUse::Decode, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::Damaged);
+  EXPECT_EQ(plan.refusal_text, damage + "says which lidar made it: nothing to decode");
+  plan = plan_recording(no_bytes, RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::NothingToPlay);
+  EXPECT_EQ(plan.refusal_text, damage + "holds bytes from a device: nothing to replay");
+  EXPECT_EQ(plan_recording(no_bytes, RecordingUse::Replay, "G6", std::nullopt).refusal_text, plan.refusal_text);
+  // A chosen model decodes the intact part, and the damage is its warning.
+  plan = plan_recording(no_bytes, RecordingUse::Decode, "G6", std::nullopt);
+  ASSERT_TRUE(plan.usable()) << plan.refusal_text;
+  EXPECT_EQ(plan.warnings(), std::vector<std::string>{damage.substr(0, damage.find(", and none"))});
+
+  RawRecording with_bytes(1, 16, "port=/dev/pts/1\n");
+  with_bytes.add_device_records({0, 1000, 2000});
+  const std::string some_bytes = corrupt_after("bytes.ydrec", with_bytes).first;
+  plan = plan_recording(some_bytes, RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal, RecordingRefusal::NeedsModel);
+  EXPECT_NE(plan.refusal_text.find(" is corrupt at byte "), std::string::npos) << plan.refusal_text;
+  EXPECT_NE(plan.refusal_text.find(", and none of them says which lidar made it: pass --model (" + kModels +
+                                   ") to decode the 3 bytes from the device before it"),
+            std::string::npos)
+      << plan.refusal_text;
+  // Cut off before the model record: the cut is the cause, in the same way.
+  std::vector<std::uint8_t> cut = with_bytes.bytes();
+  cut.insert(cut.end(), {3, 0, 0});
+  test::write_file_bytes((dir_ / "cut.ydrec").string(), cut);
+  plan = plan_recording((dir_ / "cut.ydrec").string(), RecordingUse::Decode, std::nullopt, std::nullopt);
+  EXPECT_EQ(plan.refusal_text.rfind((dir_ / "cut.ydrec").string() + " ends inside a record header at byte ", 0), 0u)
+      << plan.refusal_text;
+}
+
 }  // namespace
 }  // namespace ydscope
