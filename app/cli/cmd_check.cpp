@@ -89,7 +89,8 @@ json: {"type":"check","verdict":"pass"|"fail"|"incomplete","failed":[ids],"inter
 
 exit status: 0 every criterion passed; 3 at least one failed; 1 the device or the link failed (a
 sentence on stderr; when it failed mid-run the verdict on what was measured is still printed);
-2 usage error; 130 interrupted by Ctrl-C (the verdict printed covers only the time measured).
+2 usage error (a port that does not exist included); 130 interrupted by Ctrl-C (the verdict
+printed covers only the time measured).
 
 examples:
   ydscope-cli check --port /dev/ttyUSB0

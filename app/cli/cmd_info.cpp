@@ -33,7 +33,7 @@ output:
   health, scan_hz and ranging_khz are null when the device did not answer that question.
 
 exit status: 0 the device answered; 1 it could not be opened or did not answer (one sentence on
-stderr says which and what to try); 2 usage error.
+stderr says which and what to try); 2 usage error (a port that does not exist included).
 
 example:
   ydscope-cli info --port /dev/ttyUSB0

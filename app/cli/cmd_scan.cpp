@@ -55,7 +55,7 @@ on stderr at the end: check the cable, the power supply and that no other progra
 
 exit status: 0 N laps were printed (a health warning does not change this); 3 N laps were printed
 but the lidar reported a health error; 1 the device failed or stopped sending (one sentence on
-stderr); 2 usage error.
+stderr); 2 usage error (a port that does not exist included).
 
 example:
   ydscope-cli scan --port /dev/ttyUSB0 --laps 10 --format jsonl

@@ -37,9 +37,15 @@ Parameters (Foxglove's Parameters panel, or any client's setParameters):
   scan_hz                float, set through the session's command sequencing; the value the
                          clients see is what the device reads back
   ranging_khz            float, G6/TG: cycled until the device reads it back
-  power_down_protection  bool
+  power_down_protection  bool, off until set (a unit powers on without it)
   filter_specular        bool, drop G1 points flagged as specular reflection (flag 2)
   filter_ambient         bool, drop G1 points flagged as ambient light (flag 3)
+After a reconnect (a pulled cable, a stall) the lidar is set back to the scan_hz, ranging_khz and
+power_down_protection last set, before its scan resumes; a status message says what was
+re-applied (or could not be), and clients subscribed to parameter updates get the values in
+force. The filters are the server's own and never change with the lidar. /diagnostics keeps its
+rate through an outage (level ERROR: "no data for 5.0 s; reconnecting to PORT: why"); its level
+is the lidar's state now, checksum errors counting for 5 s.
 
 Several lidars (--port once for each): each scans in a session of its own and is served under
 its name, /NAME/scan, /NAME/points, /NAME/diagnostics, /NAME/ydscope/device_bytes and
@@ -70,8 +76,9 @@ Open it in Foxglove: "Open connection" -> "Foxglove WebSocket" -> ws://HOST:PORT
 Ctrl-C or SIGTERM stops cleanly (the MCAP gets its summary); per-client counters go to stderr.
 
 exit status: 0 stopped by a signal or --seconds; 1 the listen address or the MCAP file failed;
-2 usage error. A lidar that is unplugged or silent is not an exit: the server keeps retrying
-and tells its clients with a status message.
+2 usage error (a port that does not exist when serve starts included). A lidar that is unplugged
+or silent later is not an exit: the server keeps retrying and tells its clients with a status
+message.
 
 examples:
   ydscope-cli serve --port /dev/ttyUSB0

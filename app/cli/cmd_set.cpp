@@ -34,7 +34,7 @@ output: one JSON object, the read-back after the attempt:
   {"ok":true,"scan_hz":10|null,"ranging_khz":9|null,"message":"scan frequency reads back 10.00 Hz"}
 
 exit status: 0 the target was reached; 1 it was not (the JSON still shows the read-back, and
-stderr says why) or the device failed; 2 usage error.
+stderr says why) or the device failed; 2 usage error (a port that does not exist included).
 
 examples:
   ydscope-cli set --port /dev/ttyUSB0 --scan-hz 10

@@ -1,6 +1,7 @@
 #include "app/cli/session_cli.h"
 
 #include <charconv>
+#include <filesystem>
 #include <stdexcept>
 
 #include "core/link/device_probe.h"
@@ -40,7 +41,13 @@ SessionConfig session_config_for(const std::string& address, const std::optional
   SessionConfig config;
   config.address = address;
   std::string error;
-  if (!parse_link_address(config.address, error)) throw UsageError(error);
+  const auto link = parse_link_address(config.address, error);
+  if (!link) throw UsageError(error);
+  // A usage error like any other mistake in the command line (2), from every command alike.
+  std::error_code ec;
+  if (link->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(link->path, ec))
+    throw UsageError("there is no port " + link->path +
+                     "; is the lidar plugged in? `ydscope-cli ports` lists the ones attached");
   const std::string model = model_option.value_or("auto");
   if (model != "auto") {
     const ModelProfile* profile = find_profile(model);

@@ -1,7 +1,5 @@
 #include "app/cli/source_options.h"
 
-#include <filesystem>
-
 #include "app/cli/session_cli.h"
 #include "core/link/link_address.h"
 
@@ -18,9 +16,6 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
     std::string error;
     const auto address = parse_link_address(text.port, error);
     if (!seen_ports.insert(address->text()).second) throw UsageError("--port " + text.port + " is given twice");
-    std::error_code ec;
-    if (address->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(address->path, ec))
-      throw UsageError("there is no port " + address->path + "; `ydscope-cli ports` lists the ones attached");
     spec.name = std::move(text.name);
     spec.pose = text.pose.value_or(Pose{});  // no --pose: the common frame's origin
     specs.push_back(std::move(spec));

@@ -191,6 +191,55 @@ TEST_F(BadInputCli, RecordChecksItsOutputBeforeStarting) {
   EXPECT_FALSE(fs::exists(path("missing")));
 }
 
+// Issue 26: corrupt before its model record, decode and export said "does not say which lidar made
+// it; pass --model" and replay "holds no bytes from a device": each now names the corruption.
+TEST_F(BadInputCli, ACorruptionBeforeTheModelIsWhatEveryCommandSays) {
+  RawRecording head(1, 16, "port=/dev/pts/1\n");
+  head.add(RecordType::HostToDevice, 1000, {0xA5, 0x90});
+  Bytes bytes = head.bytes();
+  const std::size_t at = bytes.size();
+  bytes.insert(bytes.end(), {1, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0xFF, 0, 0, 0, 0, 0, 0, 0, 0});
+  const std::string file = path("corrupt.ydrec");
+  test::write_file_bytes(file, bytes);
+  const std::string cause =
+      file + " is corrupt at byte " + std::to_string(at) +
+      " (record type 1, length 4294967295); the 2 records before it are intact, and none of them ";
+  const std::pair<std::string, std::string> cases[] = {
+      {"decode", "says which lidar made it: nothing to decode"},
+      {"replay", "holds bytes from a device: nothing to replay"},
+      {"export", "says which lidar made it: nothing to decode"},
+  };
+  for (const auto& [command, ending] : cases) {
+    const auto run =
+        run_cli_apart(command + " '" + file + "'" + (command == "export" ? " --mcap '" + path("o.mcap") + "'" : ""));
+    EXPECT_EQ(run.status, 1) << command << ": " << run.err;
+    EXPECT_EQ(run.err, "ydscope-cli " + command + ": " + cause + ending + "\n");
+    EXPECT_EQ(run.out, "");
+  }
+  EXPECT_FALSE(fs::exists(path("o.mcap")));
+}
+
+// info, scan and set said 1 for a port that is not there, record's help 2, and serve waited for
+// it forever: every command that opens a port now says the same sentence, with the help's 2.
+TEST_F(BadInputCli, AMissingPortIsAUsageErrorFromEveryCommand) {
+  const std::string port = "/dev/ttyNOPE";
+  const std::string out = " --out '" + path("never.ydrec") + "'";
+  const std::vector<std::string> commands{
+      "info", "scan --laps 1", "set --scan-hz 8", "check --seconds 1", "record --seconds 1" + out, "serve --seconds 1"};
+  for (const std::string& command : commands) {
+    const std::string name = command.substr(0, command.find(' '));
+    const auto run = run_cli_apart(command + " --port " + port + " </dev/null");
+    EXPECT_EQ(run.status, 2) << command << ": " << run.err;
+    EXPECT_EQ(run.err, "ydscope-cli " + name + ": there is no port " + port +
+                           "; is the lidar plugged in? `ydscope-cli ports` lists the ones attached\n")
+        << command;
+    EXPECT_EQ(run.out, "") << command;
+    const auto help = run_cli_apart(name + " --help");
+    EXPECT_NE(help.out.find("a port that does not exist"), std::string::npos) << name;
+  }
+  EXPECT_FALSE(fs::exists(path("never.ydrec")));
+}
+
 // decode without --model once said "missing required option --model" for these.
 TEST_F(BadInputCli, DecodeChecksTheFileBeforeAskingForAModel) {
   auto run = run_cli_apart("decode '" + dir_.string() + "'");
