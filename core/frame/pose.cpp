@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/text/quoted_text.h"
+
 namespace ydscope {
 namespace {
 
@@ -55,7 +57,7 @@ double Pose::common_angle_deg(double device_angle_deg) const {
 }
 
 std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
-  const std::string quoted = "'" + std::string(text) + "'";
+  const std::string shown = quote_file_text(text);  // a recording's pose may hold any bytes
   std::vector<std::string_view> fields;
   for (std::size_t start = 0;;) {
     const std::size_t comma = text.find(',', start);
@@ -64,27 +66,27 @@ std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
     start = comma + 1;
   }
   if (fields.size() < 3 || fields.size() > 4) {
-    error = "a pose is x,y,yaw or x,y,yaw,flip (metres, metres, degrees), such as 0.2,-0.15,90, not " + quoted;
+    error = "a pose is x,y,yaw or x,y,yaw,flip (metres, metres, degrees), such as 0.2,-0.15,90, not " + shown;
     return std::nullopt;
   }
   const auto x = parse_number(fields[0]);
   const auto y = parse_number(fields[1]);
   const auto yaw = parse_number(fields[2]);
   if (!x || !y || !yaw) {
-    error = "a pose's x, y and yaw are numbers (metres, metres, degrees), such as 0.2,-0.15,90, not " + quoted;
+    error = "a pose's x, y and yaw are numbers (metres, metres, degrees), such as 0.2,-0.15,90, not " + shown;
     return std::nullopt;
   }
   if (std::abs(*x) > kMaxPoseOffsetM || std::abs(*y) > kMaxPoseOffsetM) {
-    error = "a pose's x and y are metres, within " + shortest(kMaxPoseOffsetM) + " of the origin, not " + quoted +
+    error = "a pose's x and y are metres, within " + shortest(kMaxPoseOffsetM) + " of the origin, not " + shown +
             " (millimetres given as metres?)";
     return std::nullopt;
   }
   if (std::abs(*yaw) > 360.0) {
-    error = "a pose's yaw is degrees from -360 to 360, not " + quoted;
+    error = "a pose's yaw is degrees from -360 to 360, not " + shown;
     return std::nullopt;
   }
   if (fields.size() == 4 && fields[3] != "flip") {
-    error = "the fourth field of a pose can only be flip (mounted upside down), not " + quoted;
+    error = "the fourth field of a pose can only be flip (mounted upside down), not " + shown;
     return std::nullopt;
   }
   return Pose{*x, *y, *yaw, fields.size() == 4};

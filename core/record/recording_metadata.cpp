@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/protocol/model_profile.h"
+#include "core/text/quoted_text.h"
 
 namespace ydscope {
 namespace {
@@ -100,7 +101,7 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
     if (line.empty()) continue;
     const auto eq = line.find('=');
     if (eq == std::string_view::npos || eq == 0) {
-      warn("metadata line without key=value skipped: '" + std::string(line) + "'");
+      warn("metadata line without key=value skipped: " + quote_file_text(line));
       continue;
     }
     const std::string key(line.substr(0, eq));
@@ -109,7 +110,7 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
       if (const auto parsed = parse_u32(value)) {
         field = parsed;
       } else {
-        warn("metadata " + key + "='" + value + "' is not a whole number; ignored");
+        warn("metadata " + key + "=" + quote_file_text(value) + " is not a whole number; ignored");  // a known key
       }
     };
     if (key == "model") {
@@ -121,8 +122,9 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
       if (const auto parsed = parse_double(value); parsed && distance_scale_in_range(*parsed)) {
         metadata.distance_scale = parsed;
       } else {
-        warn("metadata distance_scale='" + value + "' is not a number from " + format_double(kMinDistanceScale) +
-             " to " + format_double(kMaxDistanceScale) + " mm per count; ignored, the model's own scale is used");
+        warn("metadata distance_scale=" + quote_file_text(value) + " is not a number from " +
+             format_double(kMinDistanceScale) + " to " + format_double(kMaxDistanceScale) +
+             " mm per count; ignored, the model's own scale is used");
       }
     } else if (key == "port") {
       metadata.port = value;

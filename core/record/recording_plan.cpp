@@ -1,6 +1,7 @@
 #include "core/record/recording_plan.h"
 
 #include "core/record/recorded_conventions.h"
+#include "core/text/quoted_text.h"
 
 namespace ydscope {
 namespace {
@@ -27,7 +28,7 @@ const ModelProfile* recording_model(const std::optional<std::string>& model_opti
   const std::string choices(model_names());
   if (model_option) {
     const ModelProfile* profile = find_profile(*model_option);
-    if (!profile) error = "unknown model '" + *model_option + "'; valid models are " + choices;
+    if (!profile) error = "unknown model " + quote_file_text(*model_option) + "; valid models are " + choices;
     return profile;
   }
   if (!metadata.model) {
@@ -36,8 +37,8 @@ const ModelProfile* recording_model(const std::optional<std::string>& model_opti
   }
   const ModelProfile* profile = find_profile(*metadata.model);
   if (!profile)
-    error = path + " was made with model '" + *metadata.model + "', which this ydscope does not know; pass --model (" +
-            choices + ")";
+    error = path + " was made with model " + quote_file_text(*metadata.model) +
+            ", which this ydscope does not know; pass --model (" + choices + ")";
   return profile;
 }
 

@@ -219,6 +219,30 @@ TEST_F(BadInputCli, ACorruptionBeforeTheModelIsWhatEveryCommandSays) {
   EXPECT_FALSE(fs::exists(path("o.mcap")));
 }
 
+// Issue 26: a warning quoting metadata copied its bytes to the terminal (ESC sequences included).
+TEST_F(BadInputCli, MetadataQuotedOnStderrCannotDriveTheTerminal) {
+  const std::string esc = "\x1b]0;owned\x07\x1b[2J";
+  RawRecording bad_baud(1, 16, "model=G6\nbaud=" + esc + "\n");
+  bad_baud.add_device_records({0});
+  bad_baud.write(path("baud.ydrec"));
+  RawRecording bad_model(1, 16, "model=" + esc + "\n");
+  bad_model.add_device_records({0});
+  bad_model.write(path("model.ydrec"));
+  const std::string shown = "'\\x1b]0;owned\\x07\\x1b[2J'";
+  for (const std::string command : {"decode", "replay --speed 0"}) {
+    const auto warned = run_cli_apart(command + " --format summary '" + path("baud.ydrec") + "'");
+    EXPECT_EQ(warned.status, 0) << warned.err;
+    EXPECT_NE(warned.err.find("metadata baud=" + shown + " is not a whole number"), std::string::npos) << warned.err;
+    const auto refused = run_cli_apart(command + " '" + path("model.ydrec") + "'");
+    EXPECT_EQ(refused.status, 2) << refused.err;
+    EXPECT_NE(refused.err.find("was made with model " + shown + ", which"), std::string::npos) << refused.err;
+    for (const auto* run : {&warned, &refused}) {
+      EXPECT_EQ(run->err.find('\x1b'), std::string::npos) << command;
+      EXPECT_EQ(run->err.find('\x07'), std::string::npos) << command;
+    }
+  }
+}
+
 // info, scan and set said 1 for a port that is not there, record's help 2, and serve waited for
 // it forever: every command that opens a port now says the same sentence, with the help's 2.
 TEST_F(BadInputCli, AMissingPortIsAUsageErrorFromEveryCommand) {
