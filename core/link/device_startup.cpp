@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/link/device_probe.h"
+#include "core/link/device_settings.h"
 #include "core/link/link_address.h"
 #include "core/link/recorded_device.h"
 #include "core/record/recorded_conventions.h"
@@ -103,7 +104,7 @@ boost::asio::awaitable<std::optional<DeviceInfo>> find_device(const StartupParts
 }  // namespace
 
 boost::asio::awaitable<StartupOutcome> start_device(const StartupParts& parts, const SessionConfig& config,
-                                                    bool power_down_wanted) {
+                                                    const DeviceSettings& wanted) {
   StartupOutcome outcome;
   parts.board.set_state(LinkState::Connecting, "opening " + config.address);
   const std::vector<std::uint32_t> bauds = candidate_bauds(config);
@@ -151,15 +152,22 @@ boost::asio::awaitable<StartupOutcome> start_device(const StartupParts& parts, c
   if (lost(scan_hz)) co_return outcome;
   const auto ranging = co_await parts.sequencer.ranging_khz(*outcome.profile);
   if (lost(ranging)) co_return outcome;
-  if (power_down_wanted) {  // a replugged device is back to its default (off)
-    const auto step = co_await parts.sequencer.power_down_protection(true);
-    if (lost(step)) co_return outcome;
-    outcome.power_down_protection = step.value;
+  // Before the values are posted, so nobody is told the power-on ones in between.
+  const RestoredSettings restored =
+      co_await restore_settings(parts.sequencer, *outcome.profile, wanted, scan_hz.value, ranging.value);
+  if (!restored.link_error.empty()) {
+    outcome.error = restored.link_error;
+    co_return outcome;
   }
+  outcome.settings_note = restored.said;
+  outcome.power_down_protection = restored.in_force.power_down_protection.value_or(false);
+  const std::optional<double> scan_hz_now = restored.in_force.scan_hz ? restored.in_force.scan_hz : scan_hz.value;
+  const std::optional<std::uint16_t> ranging_now =
+      restored.in_force.ranging_khz ? restored.in_force.ranging_khz : ranging.value;
   parts.board.publish([&](SessionSnapshot& s) {
     s.health = health.value;
-    s.scan_hz = scan_hz.value;
-    s.ranging_khz = ranging.value;
+    s.scan_hz = scan_hz_now;
+    s.ranging_khz = ranging_now;
     s.power_down_protection = outcome.power_down_protection;
   });
   if (!health.ok() && outcome.note.empty()) outcome.note = "health: " + health.error;

@@ -68,6 +68,7 @@ asio::awaitable<void> IntentRunner::run(const SessionIntent& intent, const Model
       result.scan_hz = step.value;
       settle(step, step.value ? "scan frequency reads back " + hz_text(*step.value) : "");
       if (step.value) board.publish([&](SessionSnapshot& s) { s.scan_hz = step.value; });
+      if (step.ok()) settings_.scan_hz = step.value;
       break;
     }
     case SessionIntent::Kind::RangingKhz: {
@@ -75,6 +76,7 @@ asio::awaitable<void> IntentRunner::run(const SessionIntent& intent, const Model
       result.ranging_khz = step.value;
       settle(step, step.value ? "ranging frequency reads back " + std::to_string(*step.value) + " kHz" : "");
       if (step.value) board.publish([&](SessionSnapshot& s) { s.ranging_khz = step.value; });
+      if (step.ok()) settings_.ranging_khz = step.value;
       break;
     }
     case SessionIntent::Kind::PowerDown: {
@@ -82,7 +84,7 @@ asio::awaitable<void> IntentRunner::run(const SessionIntent& intent, const Model
       result.power_down_protection = step.value;
       settle(step, std::string("power-down protection is ") + (intent.on ? "on" : "off"));
       if (step.value) {
-        power_down_wanted_ = *step.value;
+        settings_.power_down_protection = step.value;
         parts_.link.allow_scan_keepalive(*step.value);
         board.publish([&](SessionSnapshot& s) { s.power_down_protection = step.value; });
       }

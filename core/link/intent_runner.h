@@ -11,6 +11,7 @@
 #include <boost/asio/awaitable.hpp>
 
 #include "core/link/command_sequencer.h"
+#include "core/link/device_settings.h"
 #include "core/link/running_scan.h"
 #include "core/link/session_io.h"
 #include "core/link/snapshot_board.h"
@@ -47,9 +48,12 @@ class IntentRunner {
   // Ends every queued intent unrun, saying why.
   void fail_all(const std::string& why);
 
-  // Power-down protection as the user last set it: start-up turns it back on after a replug, and
-  // while it is on the scan needs A5 60 as a keep-alive.
-  bool power_down_wanted() const { return power_down_wanted_; }
+  // What the user last set successfully: start-up puts it back after a reconnect.
+  const DeviceSettings& settings() const { return settings_; }
+  // Another device: its settings are not the last one's.
+  void forget_settings() { settings_ = {}; }
+  // While power-down protection is on, the scan needs A5 60 as a keep-alive.
+  bool power_down_wanted() const { return settings_.power_down_protection.value_or(false); }
 
  private:
   // The command and its read-back. Its references are run_next's locals, which it awaits at once.
@@ -58,7 +62,7 @@ class IntentRunner {
 
   Parts parts_;
   std::deque<SessionIntent> queue_;
-  bool power_down_wanted_ = false;
+  DeviceSettings settings_;
 };
 
 }  // namespace ydscope

@@ -16,6 +16,7 @@
 
 #include "core/link/command_sequencer.h"
 #include "core/link/intent_runner.h"
+#include "core/link/link_outage.h"
 #include "core/link/port_watch.h"
 #include "core/link/session.h"
 #include "core/link/session_io.h"
@@ -57,7 +58,8 @@ class Session::Impl {
 
   void spawn_supervisor();
   boost::asio::awaitable<void> supervise(SessionConfig config);
-  boost::asio::awaitable<bool> connect_and_start(const SessionConfig& config, std::string& error);
+  // `again`: a reconnect after a fault, which the state's sentence says.
+  boost::asio::awaitable<bool> connect_and_start(const SessionConfig& config, bool again, std::string& error);
   boost::asio::awaitable<void> serve();
   boost::asio::awaitable<void> backoff(std::chrono::milliseconds duration);
   // A metadata record of what the session knows now, to whatever captures.
@@ -92,6 +94,7 @@ class Session::Impl {
   IntentRunner intents_{{link_, sequencer_, board_, scan_, [this] { new_decoder(); }, [this] { record_metadata(); }}};
   std::int64_t last_rate_tick_ns_ = 0;
   RecordingControl recording_{link_};
+  LinkOutage outage_{recording_};  // marks the link's faults in what captures
 
   std::thread thread_;  // last: starts after everything above exists
 };

@@ -53,7 +53,7 @@ struct SessionSnapshot {
   std::optional<HealthReport> health;
   std::optional<double> scan_hz;                 // set value (A5 0D), not the measured rate
   std::optional<std::uint16_t> ranging_khz;      // A5 D1
-  std::optional<bool> power_down_protection;     // known after toggling it
+  std::optional<bool> power_down_protection;     // as set or re-applied, else off (power-on)
   double distance_scale = 0;                     // mm per count in use
   const UnitConventions* conventions = nullptr;  // how the bytes are read (with the scale above)
   bool busy = false;                             // a command is running

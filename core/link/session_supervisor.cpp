@@ -20,6 +20,8 @@ using namespace std::chrono_literals;
 void Session::Impl::spawn_supervisor() {
   SessionConfig config = std::move(*pending_config_);
   pending_config_.reset();
+  // The user's settings were for the lidar on that port; another port is another lidar.
+  if (config_ && config_->address != config.address) intents_.forget_settings();
   config_ = config;
   supervisor_running_ = true;
   disconnect_requested_ = false;
@@ -60,9 +62,11 @@ void Session::Impl::spawn_supervisor() {
 asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
   sequencer_.configure(config.reply_timeout, config.command_attempts);
   ReconnectPlan plan(config);
+  bool again = false;  // it started before: this start is a reconnect
   while (!disconnect_requested_ && !stopping_) {
     std::string error;
-    if (co_await connect_and_start(config, error)) {
+    if (co_await connect_and_start(config, again, error)) {
+      again = true;
       plan.started();
       co_await serve();
       if (disconnect_requested_ || stopping_) break;
@@ -72,9 +76,11 @@ asio::awaitable<void> Session::Impl::supervise(SessionConfig config) {
     intents_.fail_all(error);
     if (disconnect_requested_ || stopping_) break;
     if (!config.reconnect || plan.hopeless()) {  // said once; retrying could not help
+      outage_.down("gave up on " + config.address + ": " + error);
       board_.set_state(LinkState::Failed, error);
       co_return;
     }
+    outage_.down("reconnecting to " + config.address + ": " + error);
     const auto& port_path = plan.watched_path();
     const bool watching = port_path && port_watch_.arm(*port_path, [this] {
       port_changed_ = true;
@@ -121,9 +127,9 @@ asio::awaitable<void> Session::Impl::serve() {
   }
 }
 
-asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& config, std::string& error) {
+asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& config, bool again, std::string& error) {
   const StartupParts parts{io_, link_, sequencer_, board_, [this] { return disconnect_requested_ || stopping_; }};
-  const StartupOutcome outcome = co_await start_device(parts, config, intents_.power_down_wanted());
+  const StartupOutcome outcome = co_await start_device(parts, config, intents_.settings());
   if (!outcome.ok) {
     error = outcome.error;
     co_return false;
@@ -133,6 +139,7 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
   conventions_ =
       reading_override_ ? &conventions_for(*profile_, sdk_firmware_, *reading_override_) : outcome.conventions;
   new_decoder();
+  outage_.up();
   if (!outcome.accepts_commands) {  // a replay: decode what comes
     link_.listen_stream();
     scan_.scanning_from(link_clock_ns());
@@ -141,8 +148,13 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
   }
   link_.allow_scan_keepalive(outcome.power_down_protection.value_or(false));
   record_metadata();
+  // Said where the app, serve's clients and record show the link: a reconnect, and whether the
+  // user's settings are in force again.
+  std::string said = again ? "reconnected" : "";
+  for (const std::string* part : {&outcome.settings_note, &outcome.note})
+    if (!part->empty()) said += (said.empty() ? "" : "; ") + *part;
   if (!config.scan) {
-    board_.set_state(LinkState::Ready, outcome.note);
+    board_.set_state(LinkState::Ready, said);
     co_return true;
   }
   scan_.scanning_from(link_clock_ns());
@@ -150,14 +162,16 @@ asio::awaitable<bool> Session::Impl::connect_and_start(const SessionConfig& conf
     error = "could not send A5 60 to " + config.address;
     co_return false;
   }
-  board_.set_state(LinkState::Scanning, outcome.note);
+  board_.set_state(LinkState::Scanning, said);
   co_return true;
 }
 
 void Session::Impl::record_metadata() {
   if (!recording_.capturing()) return;
-  recording_.record_metadata(recording_metadata_of(snapshot(), config_ ? std::optional(config_->address) : std::nullopt,
-                                                   scan_.distance_scale()));
+  RecordingMetadata metadata = recording_metadata_of(
+      snapshot(), config_ ? std::optional(config_->address) : std::nullopt, scan_.distance_scale());
+  outage_.add_to(metadata);
+  recording_.record_metadata(metadata);
 }
 
 }  // namespace ydscope
