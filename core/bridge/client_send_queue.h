@@ -7,7 +7,9 @@
 // When the queue is full, the oldest waiting lap (binary Message Data) is dropped and counted, so
 // the status message telling a slow client about its drops is not itself dropped by the next
 // lap; only a queue of nothing but text messages drops its oldest text. The message in flight is
-// never dropped. Not thread-safe: the server's thread owns it.
+// never dropped. queued() and queued_bytes() say what it holds (waiting and in flight), so a test
+// or a benchmark can see that a client that never reads pins no more than `capacity` messages. Not
+// thread-safe: the server's thread owns it.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -25,6 +27,9 @@ struct OutgoingMessage {
   std::string json;                                          // text messages
   std::array<std::uint8_t, 13> header{};                     // binary: Message Data header
   std::shared_ptr<const std::vector<std::uint8_t>> payload;  // binary: shared by every client
+
+  // What the message holds for its client: its bytes on the wire, less the WebSocket framing.
+  std::size_t bytes() const { return text ? json.size() : header.size() + (payload ? payload->size() : 0); }
 };
 
 class ClientSendQueue {
@@ -38,10 +43,13 @@ class ClientSendQueue {
     bool dropped = false;
     if (waiting_.size() + (in_flight_ ? 1 : 0) >= capacity_ && !waiting_.empty()) {
       const auto lap = std::find_if(waiting_.begin(), waiting_.end(), [](const OutgoingMessage& m) { return !m.text; });
-      waiting_.erase(lap != waiting_.end() ? lap : waiting_.begin());
+      const auto oldest = lap != waiting_.end() ? lap : waiting_.begin();
+      bytes_ -= oldest->bytes();
+      waiting_.erase(oldest);
       ++dropped_;
       dropped = true;
     }
+    bytes_ += message.bytes();
     waiting_.push_back(std::move(message));
     return dropped;
   }
@@ -55,17 +63,25 @@ class ClientSendQueue {
     return &*in_flight_;
   }
   // The write finished (sent or failed).
-  void end_write() { in_flight_.reset(); }
+  void end_write() {
+    if (in_flight_) bytes_ -= in_flight_->bytes();
+    in_flight_.reset();
+  }
 
   bool writing() const { return in_flight_.has_value(); }
   std::size_t waiting() const { return waiting_.size(); }
   std::uint64_t dropped() const { return dropped_; }
+  // Messages held, waiting or in flight (never more than the capacity, or 2 for a capacity of 1:
+  // the one in flight and the newest), and their bytes.
+  std::size_t queued() const { return waiting_.size() + (in_flight_ ? 1 : 0); }
+  std::size_t queued_bytes() const { return bytes_; }
 
  private:
   std::size_t capacity_;
   std::deque<OutgoingMessage> waiting_;
   std::optional<OutgoingMessage> in_flight_;
   std::uint64_t dropped_ = 0;
+  std::size_t bytes_ = 0;
 };
 
 }  // namespace ydscope::foxglove

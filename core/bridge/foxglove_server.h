@@ -58,6 +58,10 @@ struct ClientStats {
   std::string peer;
   std::uint64_t sent = 0;
   std::uint64_t dropped = 0;
+  // Its send queue now: messages waiting or being written (at most client_queue) and their bytes,
+  // what a client that does not read holds of the server's memory.
+  std::size_t queued = 0;
+  std::size_t queued_bytes = 0;
 };
 
 class FoxgloveServer {

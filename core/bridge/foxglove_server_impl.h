@@ -89,7 +89,7 @@ class FoxgloveServer::Impl::Client : public std::enable_shared_from_this<Client>
     ws_.next_layer().shutdown(tcp::socket::shutdown_both, ec);
     ws_.next_layer().close(ec);
   }
-  ClientStats stats() const { return {peer_, sent_, queue_.dropped()}; }
+  ClientStats stats() const { return {peer_, sent_, queue_.dropped(), queue_.queued(), queue_.queued_bytes()}; }
 
  private:
   void enqueue(OutgoingMessage out);

@@ -97,5 +97,30 @@ TEST(ClientSendQueue, AQueueOfTextAloneStaysBounded) {
   EXPECT_EQ(queue.begin_write()->json, "8");
 }
 
+// What a client that never reads pins: never more than the capacity, in messages and so in bytes,
+// and nothing once everything is written.
+TEST(ClientSendQueue, CountsWhatItHoldsInMessagesAndBytes) {
+  ClientSendQueue queue(4);
+  const std::size_t lap_bytes = numbered(0).bytes();
+  EXPECT_EQ(lap_bytes, 13u + 64u);
+  queue.push(numbered(0));
+  ASSERT_NE(queue.begin_write(), nullptr);
+  for (int n = 1; n <= 100; ++n) {
+    queue.push(numbered(n));
+    EXPECT_LE(queue.queued(), 4u);
+    EXPECT_EQ(queue.queued_bytes(), queue.queued() * lap_bytes);
+  }
+  OutgoingMessage status;
+  status.text = true;
+  status.json = "0123456789";
+  queue.push(status);  // a lap goes for it
+  EXPECT_EQ(queue.queued(), 4u);
+  EXPECT_EQ(queue.queued_bytes(), 3 * lap_bytes + 10);
+  queue.end_write();
+  while (queue.begin_write()) queue.end_write();
+  EXPECT_EQ(queue.queued(), 0u);
+  EXPECT_EQ(queue.queued_bytes(), 0u);
+}
+
 }  // namespace
 }  // namespace ydscope::foxglove
