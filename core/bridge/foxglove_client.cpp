@@ -151,7 +151,11 @@ void FoxgloveServer::Impl::Client::handle_text(std::string_view text) {
   } else if (const auto* unsubscribe = std::get_if<Unsubscribe>(&*request)) {
     for (const std::uint32_t sub : unsubscribe->subscription_ids) {
       const auto it = subscriptions_.find(sub);
-      if (it == subscriptions_.end()) continue;
+      if (it == subscriptions_.end()) {
+        send_text(status_json(StatusLevel::Error, "cannot unsubscribe subscription id " + std::to_string(sub) +
+                                                      ": this connection has no such subscription"));
+        continue;
+      }
       by_channel_.erase(it->second);
       subscriptions_.erase(it);
     }

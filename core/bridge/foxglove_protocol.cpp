@@ -56,11 +56,14 @@ const pt::ptree* array_field(const pt::ptree& tree, const char* name, std::strin
     error = std::string("\"") + name + "\" is missing";
     return nullptr;
   }
-  for (const auto& [key, _] : *child)
-    if (!key.empty()) {
-      error = std::string("\"") + name + "\" must be an array";
-      return nullptr;
-    }
+  // property_tree reads a string or a number as a node with data and no children, as it reads
+  // an empty array but for the data; it must not pass for an empty array.
+  bool array = child->empty() ? child->data().empty() : true;
+  for (const auto& [key, _] : *child) array = array && key.empty();
+  if (!array) {
+    error = std::string("\"") + name + "\" must be an array";
+    return nullptr;
+  }
   return &*child;
 }
 
@@ -164,6 +167,12 @@ std::array<std::uint8_t, 13> message_data_header(std::uint32_t subscription_id, 
   return header;
 }
 
+std::string quoted_client_text(std::string_view text, std::size_t limit) {
+  std::string out = "\"" + std::string(text.substr(0, limit)) + "\"";
+  if (text.size() > limit) out += "... (" + std::to_string(text.size()) + " bytes)";
+  return out;
+}
+
 std::optional<ClientRequest> parse_client_message(std::string_view text, std::string& error) {
   if (nests_deeper_than(text, kMaxJsonDepth)) {
     error = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
@@ -177,14 +186,19 @@ std::optional<ClientRequest> parse_client_message(std::string_view text, std::st
     error = "not JSON (" + e.message() + " at line " + std::to_string(e.line()) + ")";
     return std::nullopt;
   }
-  const auto op = tree.get_optional<std::string>("op");
-  if (!op) {
+  const auto op_node = tree.get_child_optional("op");
+  if (!op_node) {
     error = "no \"op\" field";
     return std::nullopt;
   }
+  if (!op_node->empty()) {
+    error = "\"op\" must be a string";
+    return std::nullopt;
+  }
+  const std::string& op = op_node->data();
   std::optional<std::string> id;
   if (const auto given = tree.get_optional<std::string>("id")) id = *given;
-  if (*op == "subscribe") {
+  if (op == "subscribe") {
     const pt::ptree* list = array_field(tree, "subscriptions", error);
     if (!list) return std::nullopt;
     Subscribe request;
@@ -199,7 +213,7 @@ std::optional<ClientRequest> parse_client_message(std::string_view text, std::st
     }
     return request;
   }
-  if (*op == "unsubscribe") {
+  if (op == "unsubscribe") {
     const pt::ptree* list = array_field(tree, "subscriptionIds", error);
     if (!list) return std::nullopt;
     Unsubscribe request;
@@ -213,11 +227,11 @@ std::optional<ClientRequest> parse_client_message(std::string_view text, std::st
     }
     return request;
   }
-  if (*op == "getParameters") {
+  if (op == "getParameters") {
     std::string ignored;
     return GetParameters{string_list(array_field(tree, "parameterNames", ignored)), id};
   }
-  if (*op == "setParameters") {
+  if (op == "setParameters") {
     const pt::ptree* list = array_field(tree, "parameters", error);
     if (!list) return std::nullopt;
     SetParameters request;
@@ -233,13 +247,13 @@ std::optional<ClientRequest> parse_client_message(std::string_view text, std::st
     }
     return request;
   }
-  if (*op == "subscribeParameterUpdates" || *op == "unsubscribeParameterUpdates") {
+  if (op == "subscribeParameterUpdates" || op == "unsubscribeParameterUpdates") {
     std::string ignored;
     auto names = string_list(array_field(tree, "parameterNames", ignored));
-    if (*op == "subscribeParameterUpdates") return SubscribeParameterUpdates{std::move(names)};
+    if (op == "subscribeParameterUpdates") return SubscribeParameterUpdates{std::move(names)};
     return UnsubscribeParameterUpdates{std::move(names)};
   }
-  error = "op \"" + *op + "\" is not supported by this server";
+  error = "op " + quoted_client_text(op) + " is not supported by this server";
   return std::nullopt;
 }
 

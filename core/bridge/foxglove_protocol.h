@@ -70,6 +70,11 @@ using ClientRequest = std::variant<Subscribe, Unsubscribe, GetParameters, SetPar
 // known "op", or its fields have the wrong shape.
 std::optional<ClientRequest> parse_client_message(std::string_view text, std::string& error);
 
+// A client's text (an op, a parameter's name) as a status message quotes it: at most `limit`
+// bytes of it and its length, so a client's 60 KiB name does not come back whole (and a slow
+// client's queue hold it many times over).
+std::string quoted_client_text(std::string_view text, std::size_t limit = 40);
+
 // A JSON string literal, always valid UTF-8 (core/text/json_string.h): a WebSocket text frame
 // that is not UTF-8 makes clients drop the connection.
 using ydscope::append_json_string;

@@ -5,8 +5,11 @@
 // Each client has a bounded send queue (core/bridge/client_send_queue.h): when it is full, the
 // oldest queued lap is dropped and counted for that client (a status warning tells the client,
 // at most every 5 s). Client
-// text messages above kMaxClientMessage, malformed JSON, unknown ops and bad subscriptions get a
-// status message and are otherwise ignored; a client that vanishes mid-frame is just removed.
+// messages above kMaxClientMessage, binary messages, malformed JSON, unknown ops, subscriptions to
+// channels never advertised and unsubscriptions of unknown ids get a status message of level
+// error and are otherwise ignored (the connection goes on); bytes that break the WebSocket
+// protocol itself (unmasked or reserved frames, text that is not UTF-8, a message above 16 MiB)
+// end that connection, as RFC 6455 says; a client that vanishes mid-frame is just removed.
 //
 // Thread contract: publish(), broadcast_parameters(), clients() and stop() may be called from
 // any thread. The ParameterBackend is called on the server's thread and must not block: it
