@@ -18,6 +18,7 @@
 #include "app/cli/lap_json.h"
 #include "app/cli/lap_output.h"
 #include "app/cli/mcap_output.h"
+#include "app/cli/raw_input.h"
 #include "app/cli/recording_input.h"
 #include "app/cli/source_playback.h"
 #include "core/protocol/function_ref.h"
@@ -69,6 +70,10 @@ Decodes the raw bytes a lidar sends after the scan command (A5 60) into complete
 A lap runs from a zero packet (CT bit 0 set), inclusive, to the next one, exclusive. Bytes before
 the first zero packet and a cut-off packet at the end are not part of any lap.
 
+FILE may be a FIFO or a device: after 1 s without a byte, decode says on stderr what it waits for.
+An input whose first 4 MiB hold no valid scan packet (/dev/zero, a wrong file) is not a lidar's
+bytes: decode stops there with one sentence and exit status 1.
+
 jsonl schema, one object per line:
   {"type":"lap","index":I,"t":T,"points":[[angle_deg,range_mm,flag],...],"scan_hz":F|null,
    "health":H|null,"crc_ok":true|false|null,"packets":N,"checksum_errors":E[,"cut_points":C]}
@@ -99,8 +104,9 @@ jsonl schema, one object per line:
                      dropped from over-long laps, the partial lap included; start (a recording
                      that names it): the wall-clock time it began, ISO 8601 UTC
 
-exit status: 0 the input was read to the end; 1 reading failed; 2 usage error (unknown model,
-missing file, bad option, a recording of a version or header this ydscope cannot read).
+exit status: 0 the input was read to the end; 1 reading failed, or 4 MiB without a valid packet;
+2 usage error (unknown model, missing file, bad option, a recording of a version or header this
+ydscope cannot read).
 
 examples:
   ydscope-cli decode --model G6 scan.bin
@@ -108,36 +114,9 @@ examples:
   ydscope-cli decode --model TG15 --distance-scale 1 --format summary tg.bin
 )";
 
-constexpr std::size_t kReadChunk = 1 << 20;
-
-using InputFile = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
-
-// The input, opened before anything else is checked so a missing file or a folder is what the
-// user hears about (not a missing --model): UsageError when it does not exist, std::runtime_error
-// when it cannot be read (a folder included). "-" is standard input (not closed).
-InputFile open_input(const std::string& path) {
-  if (path == "-") return InputFile(stdin, [](std::FILE*) { return 0; });
-  require_existing_file(path, "input file");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw std::runtime_error("'" + path + "' is a folder; pass a file or - for standard input");
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
-  return InputFile(file, &std::fclose);
-}
-
-// Calls on_chunk for every chunk of the input, in order.
-void read_input(std::FILE* file, const std::string& path, FunctionRef<void(std::span<const std::uint8_t>)> on_chunk) {
-  std::vector<std::uint8_t> buffer(kReadChunk);
-  for (;;) {
-    const std::size_t got = std::fread(buffer.data(), 1, buffer.size(), file);
-    if (got > 0) on_chunk({buffer.data(), got});
-    if (got < buffer.size()) {
-      if (std::ferror(file)) throw std::runtime_error("reading '" + path + "' failed: " + std::strerror(errno));
-      if (std::feof(file)) return;
-    }
-  }
-}
+// An input this long without one valid scan packet is not a lidar's bytes (/dev/zero, a wrong
+// file): decode stops rather than read it for ever. Thousands of packets of any model fit in it.
+constexpr std::uint64_t kNoPacketLimit = 4u << 20;
 
 // Raw bytes carry no times: each gets the time the model's baud rate would deliver it at (8N1,
 // ten bits a byte, from t=0), in pieces of 64 bytes (1.25 ms at 512000 baud), so laps get
@@ -197,8 +176,8 @@ void write_mcap(const Arguments& args, const std::string& path, bool recording, 
     while (reader->next(record) && !exporter->failed()) exporter->record(record.type, record.payload, record.t_ns);
   } else {
     LineRateClock clock(profile.default_baud);
-    const InputFile again = open_input(path);  // the first pass read it to the end
-    read_input(again.get(), path, [&](std::span<const std::uint8_t> chunk) {
+    RawInput again(path, "ydscope-cli decode");  // the first pass read it to the end
+    again.read([&](std::span<const std::uint8_t> chunk) {
       clock.split(chunk, [&](std::span<const std::uint8_t> piece, std::int64_t t_ns) {
         exporter->record(RecordType::DeviceToHost, piece, t_ns);
       });
@@ -212,7 +191,7 @@ int run_decode(std::span<const std::string> raw) {
                        with_mcap_value_options({"model", "format", "filter", "distance-scale", "mcap", "conventions"}),
                        with_mcap_flags({"force"}), /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (or - for standard input)");
-  const InputFile input = open_input(path);
+  RawInput input(path, "ydscope-cli decode");
   // A .ydrec recording (by its magic) names its model; raw bytes need --model.
   const auto scale_option = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
   const auto recording = path != "-" && is_recording_file(path)
@@ -228,7 +207,8 @@ int run_decode(std::span<const std::string> raw) {
   if (mcap) refuse_to_overwrite(*mcap, args, "--mcap");
   if (!mcap && (args.value("compression") || args.value("frame-id") || args.has("no-link-bytes") || args.has("force")))
     throw UsageError("--compression, --frame-id, --no-link-bytes and --force go with --mcap OUT.mcap");
-  if (mcap && path == "-") throw UsageError("--mcap needs a FILE, not standard input");
+  if (mcap && !input.regular())  // it is read twice
+    throw UsageError("--mcap needs a FILE, not standard input, a FIFO or a device");
   const LapFormat format = parse_lap_format(args.value("format"), mcap ? LapFormat::Summary : LapFormat::Jsonl);
   const InterferenceFilter filter = args.value("filter") ? parse_filter(*args.value("filter")) : InterferenceFilter{};
   if (recording && recording->several_sources()) {
@@ -266,7 +246,14 @@ int run_decode(std::span<const std::string> raw) {
     read_recording_device_bytes(path, feed);
   } else {
     LineRateClock clock(profile->default_baud);
-    read_input(input.get(), path, [&](std::span<const std::uint8_t> chunk) { clock.split(chunk, feed); });
+    input.read([&](std::span<const std::uint8_t> chunk) {
+      clock.split(chunk, feed);
+      if (const DecoderCounters seen = decoder.counters(); seen.packets == 0 && seen.bytes >= kNoPacketLimit)
+        throw std::runtime_error((path == "-" ? std::string("standard input") : path) + " gave " +
+                                 std::to_string(seen.bytes >> 20) + " MiB without one valid " +
+                                 std::string(profile->name) + " scan packet, so decode gave up on it; check that " +
+                                 "it holds the bytes of a lidar's port, and the model (--model)");
+    });
   }
   decoder.finish(on_lap);
   if (printer.wants_summary())

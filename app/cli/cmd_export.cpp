@@ -73,6 +73,7 @@ int run_export(std::span<const std::string> raw) {
   const std::string path = args.single_positional("REC.ydrec");
   const std::string out = args.required("mcap");
   require_existing_file(path, "recording");
+  if (const std::string problem = not_a_regular_file(path); !problem.empty()) throw std::runtime_error(problem);
   if (!is_recording_file(path))
     throw UsageError(
         path +

@@ -75,6 +75,9 @@ std::unique_ptr<RecordingReader> RecordingReader::open(const std::string& path, 
   struct stat info {};
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     return fail(path + " is a folder; pass a recording file (.ydrec) instead");
+  kind = RecordingOpenFailure::NotARecording;
+  if (std::string problem = not_a_regular_file(path); !problem.empty()) return fail(std::move(problem));
+  kind = RecordingOpenFailure::Unreadable;
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return fail("cannot open recording " + path + ": " + std::strerror(errno));
   std::unique_ptr<RecordingReader> reader(new RecordingReader(file, path));
@@ -202,7 +205,15 @@ std::vector<std::string> RecordingReader::damage() const {
   return sentences;
 }
 
+std::string not_a_regular_file(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode) || S_ISDIR(info.st_mode)) return {};
+  const char* kind = S_ISFIFO(info.st_mode) ? "a FIFO (named pipe)" : S_ISSOCK(info.st_mode) ? "a socket" : "a device";
+  return path + " is " + kind + ", not a file; ydscope reads a recording more than once, so save it to a file first";
+}
+
 bool is_recording_file(const std::string& path) {
+  if (!not_a_regular_file(path).empty()) return false;
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return false;
   std::array<std::uint8_t, kRecordingMagic.size()> head{};

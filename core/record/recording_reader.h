@@ -101,8 +101,14 @@ class RecordingReader {
   std::string first_time_problem_;
 };
 
-// True when the file at `path` starts with the recording magic (false if it cannot be read).
+// True when the file at `path` starts with the recording magic (false if it cannot be read, and
+// for anything but a regular file, which is not opened: a FIFO would block and lose its bytes).
 bool is_recording_file(const std::string& path);
+
+// One sentence when `path` exists but is not a regular file (a FIFO, a device, a socket): a
+// recording is read more than once (planned, then played) and a FIFO that never writes would block
+// without a word. Empty for a regular file, and for a path that does not exist.
+std::string not_a_regular_file(const std::string& path);
 
 // One source's part of a recording.
 struct SourceSummary {

@@ -2,6 +2,7 @@
 // recording_plan.h), asked by ydscope-cli and by the app alike: its sentences, its kinds, and
 // the damage it reports as warnings.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -102,6 +103,23 @@ TEST_F(RecordingPlanTest, DamageThatStillPlaysIsAWarningEach) {
   ASSERT_EQ(plan.warnings().size(), 1u);
   EXPECT_EQ(plan.warnings()[0].rfind(path + " ends inside a record at byte ", 0), 0u) << plan.warnings()[0];
   EXPECT_NE(plan.warnings()[0].find("the 3 records before it are intact"), std::string::npos) << plan.warnings()[0];
+}
+
+// Issue 26: a FIFO nobody writes to blocked replay, export and the app without a word. A recording
+// is read more than once, so anything but a file is refused at once, and never opened.
+TEST_F(RecordingPlanTest, AFifoOrADeviceIsRefusedWithoutWaitingForIt) {
+  const std::string fifo = (dir_ / "lidar.fifo").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const RecordingUse use : {RecordingUse::Decode, RecordingUse::Replay}) {
+    const RecordingPlan plan = plan_recording(fifo, use, std::nullopt, std::nullopt);
+    EXPECT_EQ(plan.refusal, RecordingRefusal::NotARecording);
+    EXPECT_EQ(plan.refusal_text, fifo +
+                                     " is a FIFO (named pipe), not a file; ydscope reads a recording more than "
+                                     "once, so save it to a file first");
+  }
+  EXPECT_FALSE(is_recording_file(fifo));
+  const RecordingPlan zero = plan_recording("/dev/zero", RecordingUse::Replay, std::nullopt, std::nullopt);
+  EXPECT_EQ(zero.refusal_text.rfind("/dev/zero is a device, not a file; ", 0), 0u) << zero.refusal_text;
 }
 
 // Issue 26: a file corrupt before its model record said "does not say which lidar made it; pass
