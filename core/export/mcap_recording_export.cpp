@@ -123,6 +123,14 @@ void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> 
                        });
 }
 
+void McapRecordingExport::idle(std::int64_t t_ns, std::uint16_t source) {
+  if (source >= lanes_.size()) return;
+  Lane& lane = lanes_[source];
+  lane.encoder->idle(t_ns, [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+    emit(lane, topic, log_time, cdr);
+  });
+}
+
 void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_t, std::uint16_t source) {
   if (source >= lanes_.size()) return;
   Lane& lane = lanes_[source];

@@ -61,6 +61,8 @@ class McapRecordingExport {
   // ignored, as readers of .ydrec skip what they do not know.
   void record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns, std::uint16_t source = 0);
   void metadata(const RecordingMetadata& changes, std::int64_t t_ns, std::uint16_t source = 0);
+  // No record of `source` came until `t_ns` (a live tap): see RosTopicEncoder::idle.
+  void idle(std::int64_t t_ns, std::uint16_t source = 0);
   // A lap decoded elsewhere (the app's shown laps): its /scan and /points, stamped `stamp_ns`
   // (ns since the Unix epoch); `scan_time_s` is the time since the previous lap's close (0: unknown).
   // One lidar's export only: source 0's channels.

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "core/export/lidar_condition.h"
 #include "core/export/ros_schemas.h"
 
 namespace ydscope {
@@ -107,6 +108,7 @@ std::uint64_t RosTopicEncoder::log_time(std::int64_t t_ns) const {
 
 void RosTopicEncoder::device_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit) {
   last_t_ns_ = t_ns;
+  last_device_t_ns_ = t_ns;
   if (!seen_bytes_) {
     seen_bytes_ = true;
     next_diagnostics_ns_ = t_ns + kDiagnosticsPeriodNs;
@@ -134,6 +136,17 @@ void RosTopicEncoder::finish(MessageFn emit) {
   if (!seen_bytes_) return;
   encode_diagnostics(diagnostics(), options_.frame.frame_id, log_time(last_t_ns_), message_);
   emit(RosTopic::Diagnostics, log_time(last_t_ns_), message_);
+}
+
+void RosTopicEncoder::idle(std::int64_t t_ns, MessageFn emit) {
+  if (!link_down() || t_ns <= last_t_ns_) return;
+  last_t_ns_ = t_ns;
+  maybe_diagnostics(t_ns, emit);
+}
+
+bool RosTopicEncoder::link_down() const {
+  const auto it = metadata_.extra.find("link_fault");  // core/link/link_outage.h writes it
+  return it != metadata_.extra.end() && !it->second.empty();
 }
 
 void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
@@ -170,8 +183,21 @@ void RosTopicEncoder::maybe_diagnostics(std::int64_t t_ns, MessageFn emit) {
     measured_scan_hz_.reset();
   window_first_close_ns_.reset();
   window_laps_ = 0;
+  count_recent_errors(t_ns);
   encode_diagnostics(diagnostics(), options_.frame.frame_id, log_time(t_ns), message_);
   emit(RosTopic::Diagnostics, log_time(t_ns), message_);
+}
+
+void RosTopicEncoder::count_recent_errors(std::int64_t t_ns) {
+  const auto c = counters();
+  if (!c) return;
+  error_samples_.push_back({t_ns, c->checksum_errors, c->crc_mismatches});
+  // Keep one sample at or before the window's start: the errors since it are the recent ones.
+  while (error_samples_.size() >= 2 && error_samples_[1].t_ns <= t_ns - kConditionWindowNs) error_samples_.pop_front();
+  const bool whole_window = error_samples_.front().t_ns <= t_ns - kConditionWindowNs;
+  const ErrorSample before = whole_window ? error_samples_.front() : ErrorSample{0, 0, 0};
+  recent_checksum_errors_ = c->checksum_errors - before.checksum_errors;
+  recent_crc_mismatches_ = c->crc_mismatches - before.crc_mismatches;
 }
 
 std::optional<DecoderCounters> RosTopicEncoder::counters() const {
@@ -190,17 +216,19 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
   report.name = "ydscope: " + model + " lidar";
   report.hardware_id = metadata_.serial.value_or(metadata_.port.value_or(""));
   const auto health = extra("health");
-  report.message = health ? "health: " + *health : "health not read";
-  const auto c = counters();
-  const bool health_ok = !health || *health == "ok";
-  if (!health_ok)
-    report.level = 2;
-  else if (c && (c->checksum_errors || c->crc_mismatches))
-    report.level = 1;
-  if (!measured_scan_hz_ && seen_bytes_ && profile_) {
-    report.level = std::max<std::uint8_t>(report.level, 1);
-    report.message += "; no complete lap in the last second";
+  LidarCondition condition;
+  if (link_down()) {
+    condition.link_fault = extra("link_fault");
+    if (last_device_t_ns_) condition.quiet_ns = last_t_ns_ - *last_device_t_ns_;
   }
+  condition.health = health;
+  condition.recent_checksum_errors = recent_checksum_errors_;
+  condition.recent_crc_mismatches = recent_crc_mismatches_;
+  condition.no_recent_lap = !measured_scan_hz_ && seen_bytes_ && profile_;
+  const LidarVerdict verdict = judge_lidar(condition);
+  report.level = verdict.level;
+  report.message = verdict.message;
+  const auto c = counters();
   auto& v = report.values;
   v.emplace_back("model", model);
   if (metadata_.model_code) v.emplace_back("model_code", std::to_string(*metadata_.model_code));

@@ -5,13 +5,16 @@
 // and /points carry exactly what decode prints for the same bytes.
 //
 // Topics: /scan (sensor_msgs/msg/LaserScan), /points (sensor_msgs/msg/PointCloud2),
-// /diagnostics (diagnostic_msgs/msg/DiagnosticArray, once per second of recorded time), and the
+// /diagnostics (diagnostic_msgs/msg/DiagnosticArray, once per second of recorded time, its level
+// from the lidar's state now: core/export/lidar_condition.h; while the session's link is down,
+// idle() keeps it coming, reporting the outage), and the
 // link bytes with their times on /ydscope/device_bytes and /ydscope/host_bytes
 // (std_msgs/msg/UInt8MultiArray), so the file can be decoded again exactly like a .ydrec.
 //
 // Times: a record at t_ns (since the recording started) is logged at start_wall_time + t_ns,
 // in ns since the Unix epoch; a lap at the time of its closing byte. Not thread-safe.
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <span>
@@ -67,6 +70,9 @@ class RosTopicEncoder {
   void host_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit);
   // End of the recording: laps still held back by the decoder, and a last /diagnostics.
   void finish(MessageFn emit);
+  // No record came until `t_ns` (a live tap): while the session says its link is down (metadata
+  // link_fault), /diagnostics keeps its rate and reports the outage; otherwise nothing.
+  void idle(std::int64_t t_ns, MessageFn emit);
 
   // Changes apply from the next lap (the bridge's filter parameters).
   void set_filter(InterferenceFilter filter) { options_.filter = filter; }
@@ -88,6 +94,8 @@ class RosTopicEncoder {
   // conventions, so it is made with the first device bytes.
   void make_decoder();
   void maybe_diagnostics(std::int64_t t_ns, MessageFn emit);
+  void count_recent_errors(std::int64_t t_ns);
+  bool link_down() const;
   std::uint64_t log_time(std::int64_t t_ns) const;
 
   RosExportOptions options_;
@@ -98,6 +106,17 @@ class RosTopicEncoder {
   std::int64_t last_t_ns_ = 0;
   std::int64_t next_diagnostics_ns_ = 0;
   bool seen_bytes_ = false;
+  std::optional<std::int64_t> last_device_t_ns_;
+  // The decoder's error counts at each report within kConditionWindowNs, and the errors since the
+  // oldest: what counts against the level now.
+  struct ErrorSample {
+    std::int64_t t_ns;
+    std::uint64_t checksum_errors;
+    std::uint64_t crc_mismatches;
+  };
+  std::deque<ErrorSample> error_samples_;
+  std::uint64_t recent_checksum_errors_ = 0;
+  std::uint64_t recent_crc_mismatches_ = 0;
   std::uint64_t laps_ = 0;
   std::optional<std::int64_t> previous_close_ns_;
   // Lap closes of the current diagnostics window, for the measured scan rate.

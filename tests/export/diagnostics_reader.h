@@ -1,0 +1,30 @@
+#pragma once
+// What a test needs to know of a diagnostic_msgs/DiagnosticArray as ydscope writes it (one
+// status; core/export/ros_encoding.h), read with the tests' own CDR reader.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "export/cdr_test_reader.h"
+
+namespace ydscope::test {
+
+struct DiagnosticSeen {
+  std::uint8_t level = 0;
+  std::string message;
+};
+
+inline DiagnosticSeen diagnostic_status(const std::vector<std::uint8_t>& cdr) {
+  CdrReader r(cdr);
+  r.i32();
+  r.u32();
+  r.str();  // frame_id
+  if (r.u32() != 1) throw std::runtime_error("not one diagnostic status");
+  DiagnosticSeen status;
+  status.level = r.u8();
+  r.str();  // name
+  status.message = r.str();
+  return status;
+}
+
+}  // namespace ydscope::test
