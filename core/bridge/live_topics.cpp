@@ -127,12 +127,32 @@ void LiveTopics::publish(std::size_t source, RosTopic topic, std::uint64_t log_t
                              std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
 }
 
-void LiveTopics::tell_link_state(std::size_t source, Reading& reading) {
-  const SessionSnapshot s = lanes_[source].source.session->snapshot();
+void LiveTopics::idle(std::vector<Reading>& readings, std::size_t id) {
+  const Reading& reading = readings[id];
+  if (!reading.last_t_ns) return;
+  const std::int64_t t_ns =
+      *reading.last_t_ns +
+      std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - reading.last_taken).count();
+  if (mcap_) return mcap_->idle(t_ns, static_cast<std::uint16_t>(id));
+  readings[id].encoder->idle(t_ns,
+                             [this, id](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
+                               publish(id, topic, log_time, cdr);
+                             });
+}
+
+void LiveTopics::tell_clients(std::size_t source, Reading& reading) {
+  const LiveSource& lidar = lanes_[source].source;
+  const SessionSnapshot s = lidar.session->snapshot();
+  if (lidar.parameters) {
+    std::vector<foxglove::Parameter> values = lidar.parameters->updates(s);
+    if (several())
+      for (foxglove::Parameter& p : values) p.name = foxglove::source_parameter_name(lidar.about.name, p.name);
+    if (!values.empty()) options_.server->broadcast_parameters(std::move(values));
+  }
   if (s.state == reading.told_state) return;
   reading.told_state = s.state;
   const bool bad = s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled;
-  const std::string who = several() ? lanes_[source].source.about.name + ": lidar " : "lidar ";
+  const std::string who = several() ? lidar.about.name + ": lidar " : "lidar ";
   options_.server->broadcast_status(
       bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
       who + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message));
@@ -155,6 +175,7 @@ void LiveTopics::take_new_taps(std::vector<Reading>& readings, std::uint64_t& la
   new_taps_ = false;
   for (std::size_t id = 0; id < readings.size(); ++id) {
     readings[id].tap = next_taps_.at(id);
+    readings[id].last_t_ns.reset();  // a new tap counts its own time
     if (mcap_) continue;
     if (readings[id].encoder) laps_before += readings[id].encoder->laps();
     readings[id].encoder = std::make_unique<RosTopicEncoder>(
@@ -175,7 +196,7 @@ void LiveTopics::run() {
   for (;;) {
     take_new_taps(readings, laps_before);
     if (options_.server) {
-      for (std::size_t id = 0; id < readings.size(); ++id) tell_link_state(id, readings[id]);
+      for (std::size_t id = 0; id < readings.size(); ++id) tell_clients(id, readings[id]);
       if (several() && Clock::now() - last_poses >= kPosesEvery) {
         publish_poses();
         last_poses = Clock::now();
@@ -201,6 +222,12 @@ void LiveTopics::run() {
                           publish(id, topic, log_time, cdr);
                         });
         }
+      }
+      if (!records.empty()) {
+        reading.last_t_ns = records.back().t_ns;
+        reading.last_taken = Clock::now();
+      } else {
+        idle(readings, id);
       }
       // Nothing came although the tap was closed, or stop() gave up waiting for it to close.
       const bool drained = records.empty() && (!open || stopping_.load());

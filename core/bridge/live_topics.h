@@ -9,19 +9,24 @@
 // with every pose on /tf_static (channel ids: core/bridge/ros_topic_channels.h).
 //
 // With a server it also tells the clients when a lidar's link goes down or comes back (a
-// status message) and applies the filter the clients set through each SessionParameters.
+// status message) and the parameter values in force once it is back or when they change
+// (SessionParameters::updates), and applies the filter the clients set through each
+// SessionParameters.
 //
 // Thread contract: every method is for the thread that created it; error(), laps() and the
 // counters may be read from any thread. The sessions must outlive it.
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include "core/bridge/foxglove_server.h"
 #include "core/bridge/session_parameters.h"
+#include "core/bridge/sources_parameters.h"
 #include "core/export/mcap_recording_export.h"
 #include "core/link/record_tap.h"
 #include "core/link/session.h"
@@ -88,6 +93,9 @@ class LiveTopics {
     std::shared_ptr<RecordTap> tap;
     std::unique_ptr<RosTopicEncoder> encoder;  // without a file; a file's export has its own
     LinkState told_state = LinkState::Idle;
+    // The newest record's time and when it was taken: the tap's clock while nothing comes.
+    std::optional<std::int64_t> last_t_ns;
+    std::chrono::steady_clock::time_point last_taken;
   };
   LiveTopics(std::vector<LiveSource> sources, LiveTopicsOptions options);
   static std::unique_ptr<LiveTopics> begin(std::unique_ptr<LiveTopics> live, std::string& error);
@@ -96,7 +104,10 @@ class LiveTopics {
   void take_new_taps(std::vector<Reading>& readings, std::uint64_t& laps_before);
   RosTopicEncoder& topics_of(std::vector<Reading>& readings, std::size_t id);
   void publish(std::size_t source, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
-  void tell_link_state(std::size_t source, Reading& reading);
+  // Nothing came from `id`'s tap: its time still passes (an outage keeps /diagnostics coming).
+  void idle(std::vector<Reading>& readings, std::size_t id);
+  // The link's state and the parameters' new values, to the server's clients.
+  void tell_clients(std::size_t source, Reading& reading);
   void publish_poses();
   bool several() const { return lanes_.size() > 1; }
 

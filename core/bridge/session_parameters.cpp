@@ -1,5 +1,6 @@
 #include "core/bridge/session_parameters.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ydscope::foxglove {
@@ -18,8 +19,9 @@ std::optional<bool> boolean_of(const Parameter& p) {
 
 }  // namespace
 
-std::vector<Parameter> SessionParameters::current() {
-  const SessionSnapshot s = session_.snapshot();
+std::vector<Parameter> SessionParameters::current() { return values_of(session_.snapshot()); }
+
+std::vector<Parameter> SessionParameters::values_of(const SessionSnapshot& s) const {
   std::vector<Parameter> out;
   if (s.scan_hz) out.push_back({"scan_hz", *s.scan_hz});
   if (s.ranging_khz) out.push_back({"ranging_khz", static_cast<double>(*s.ranging_khz)});
@@ -29,7 +31,38 @@ std::vector<Parameter> SessionParameters::current() {
   return out;
 }
 
+std::vector<Parameter> SessionParameters::updates(const SessionSnapshot& s) {
+  if (s.state != LinkState::Scanning && s.state != LinkState::Ready) return {};
+  std::vector<Parameter> now = values_of(s);
+  std::lock_guard lock(told_mutex_);
+  if (told_connection_ != s.counters.reconnects) {
+    told_connection_ = s.counters.reconnects;
+    told_ = now;
+    return now;
+  }
+  std::vector<Parameter> changed;
+  for (const Parameter& p : now) {
+    const auto was = std::find_if(told_.begin(), told_.end(), [&](const Parameter& t) { return t.name == p.name; });
+    if (was == told_.end() || was->value != p.value) changed.push_back(p);
+  }
+  told_ = std::move(now);
+  return changed;
+}
+
+void SessionParameters::told(const std::vector<Parameter>& values) {
+  std::lock_guard lock(told_mutex_);
+  for (const Parameter& p : values) {
+    const auto was = std::find_if(told_.begin(), told_.end(), [&](const Parameter& t) { return t.name == p.name; });
+    if (was != told_.end()) was->value = p.value;
+  }
+}
+
 void SessionParameters::set(const Parameter& parameter, SetDone done) {
+  // Whatever the clients are told here is known to them.
+  done = [this, done = std::move(done)](std::vector<Parameter> read_back, std::string error) {
+    told(read_back);
+    done(std::move(read_back), std::move(error));
+  };
   const auto fail = [&](const std::string& why) {
     // The unchanged value is the read-back, so the client's view snaps back.
     std::vector<Parameter> now;

@@ -18,11 +18,23 @@ class SessionParameters final : public ParameterBackend {
   void set(const Parameter& parameter, SetDone done) override;
   // The filter the clients asked for (any thread).
   InterferenceFilter filter() const { return {specular_.load(), ambient_.load()}; }
+  // What subscribed clients should be told unasked, given the session's state `s`: every value
+  // once a (re)connection has settled, so they learn the values in force after a replug; after
+  // that, the values that changed (the app set the scan rate, a re-apply failed). Empty while
+  // the link is not settled. One thread calls it (the topics').
+  std::vector<Parameter> updates(const SessionSnapshot& s);
 
  private:
+  std::vector<Parameter> values_of(const SessionSnapshot& s) const;
+  // A set's read-back reached the clients already: not news for updates().
+  void told(const std::vector<Parameter>& values);
+
   Session& session_;
   std::atomic<bool> specular_{false};
   std::atomic<bool> ambient_{false};
+  std::mutex told_mutex_;  // updates() on the topics' thread, told() on the session's
+  std::vector<Parameter> told_;
+  std::optional<std::uint64_t> told_connection_;  // the session's reconnect count when all were told
 };
 
 }  // namespace ydscope::foxglove

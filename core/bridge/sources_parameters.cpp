@@ -5,7 +5,7 @@ namespace ydscope::foxglove {
 std::vector<Parameter> SourcesParameters::current() {
   std::vector<Parameter> out;
   for (const auto& [name, parameters] : sources_)
-    for (Parameter p : parameters->current()) out.push_back({name + "/" + p.name, p.value});
+    for (Parameter p : parameters->current()) out.push_back({source_parameter_name(name, p.name), p.value});
   return out;
 }
 
@@ -13,10 +13,9 @@ void SourcesParameters::set(const Parameter& parameter, SetDone done) {
   const std::size_t slash = parameter.name.find('/');
   for (const auto& [name, parameters] : sources_) {
     if (slash != name.size() || parameter.name.compare(0, slash, name) != 0) continue;
-    const std::string prefix = name + "/";
     return parameters->set({parameter.name.substr(slash + 1), parameter.value},
-                           [prefix, done](std::vector<Parameter> read_back, std::string error) {
-                             for (Parameter& p : read_back) p.name = prefix + p.name;
+                           [name = name, done](std::vector<Parameter> read_back, std::string error) {
+                             for (Parameter& p : read_back) p.name = source_parameter_name(name, p.name);
                              done(std::move(read_back), std::move(error));
                            });
   }

@@ -10,6 +10,11 @@
 
 namespace ydscope::foxglove {
 
+// "front/scan_hz": one of several lidars' parameter, as its clients see it.
+inline std::string source_parameter_name(const std::string& source, const std::string& name) {
+  return source + "/" + name;
+}
+
 class SourcesParameters final : public ParameterBackend {
  public:
   // `parameters` must outlive this.
