@@ -21,6 +21,20 @@ struct LapPoint {
 // nothing to compare with (the CT information is kept, but unverified).
 enum class CrcVerdict : std::uint8_t { NotApplicable, Ok, Mismatch, Unknown };
 
+// How a lap ended. Only a zero packet ends one rotation; the other two are cut short so that no
+// lap ever holds more than one turn (a real X4 capture's start-up lap held two, 54 packets over
+// 720 degrees), and the packets after the cut are dropped until the next zero packet.
+enum class LapEnd : std::uint8_t {
+  ZeroPacket,        // the next lap's zero packet arrived
+  MissedZeroPacket,  // the angle came round past the lap's start again: its closing zero packet was lost
+  Stall,             // the stream went quiet and came back elsewhere in the turn
+};
+
+// Longer than any wait between two reads of a flowing stream (the read hold is at most 80 ms,
+// plus timer lateness), shorter than any outage worth telling about: a wait longer than this
+// inside a lap is a stall, and the lap's duration says nothing about the motor.
+inline constexpr std::int64_t kStreamStallNs = 250'000'000;
+
 struct FirmwareVersion {
   std::uint8_t major = 0;
   std::uint8_t minor = 0;
@@ -46,10 +60,14 @@ struct Lap {
   // The triangulation correction was added to the angles (not on a time-of-flight TG read as the
   // field reads it): analysis that needs the first-level angles takes it off only then.
   bool angles_corrected = true;
+  LapEnd end = LapEnd::ZeroPacket;
+  std::int64_t longest_wait_ns = 0;  // longest receive-time wait between two packets of the lap
 
   Lap() { points.reserve(kMaxPoints); }
   // CT information is trusted only when the CRC8 did not fail.
   bool ct_info_trusted() const { return crc != CrcVerdict::Mismatch; }
+  // One turn heard without a stall: only then does the lap's duration time the motor.
+  bool whole() const { return end == LapEnd::ZeroPacket && longest_wait_ns <= kStreamStallNs; }
 };
 
 }  // namespace ydscope

@@ -22,6 +22,21 @@ float wrap_degrees(double degrees) {
   return narrow >= 360.0f ? 0.0f : narrow;
 }
 
+// Clockwise from a to b, in [0, 360).
+double clockwise_deg(double a, double b) {
+  const double d = b - a;
+  return d < 0.0 ? d + 360.0 : d;
+}
+
+// How far the lidar turned from one packet's start to the next's. Real packets can start a hair
+// behind the last one's (an X4 start-up lap: 223.34 then 222.64 degrees), so a step of nearly a
+// whole turn is read as that small step back.
+double step_deg(double from, double to) {
+  constexpr double kLargestStepBackDeg = 60.0;
+  const double d = clockwise_deg(from, to);
+  return d > 360.0 - kLargestStepBackDeg ? d - 360.0 : d;
+}
+
 }  // namespace
 
 LapAssembler::LapAssembler(const ModelProfile& profile, const UnitConventions& conventions, double distance_scale)
@@ -52,11 +67,42 @@ void LapAssembler::start_lap(const PacketView& zero) {
   building_.checksum_errors = 0;
   building_.cut_points = 0;
   building_.angles_corrected = conventions_->angle_correction;
+  building_.end = LapEnd::ZeroPacket;
+  building_.longest_wait_ns = 0;
   building_.first_rx_ns = zero.first_rx_ns;
   building_.last_rx_ns = zero.rx_ns;
   packet_index_ = 0;
   crc_ = 0;
+  turned_deg_ = 0;
+  last_fsa_deg_ = raw_angle_degrees(zero.fsa);
+  last_lsa_deg_ = raw_angle_degrees(zero.lsa);
   in_lap_ = true;
+}
+
+std::optional<LapEnd> LapAssembler::cut_before(const PacketView& packet) const {
+  const double fsa = raw_angle_degrees(packet.fsa);
+  if (packet.first_rx_ns - building_.last_rx_ns > kStreamStallNs) {
+    // A host that read late loses nothing: the packet then follows on from the last one (a lost
+    // packet or two aside). After a real stall the lidar kept turning, so it does not.
+    const double last_span = clockwise_deg(last_fsa_deg_, last_lsa_deg_);
+    if (clockwise_deg(last_lsa_deg_, fsa) > std::max(1.0, 2.0 * last_span)) return LapEnd::Stall;
+  }
+  if (turned_deg_ + step_deg(last_fsa_deg_, fsa) >= 360.0) return LapEnd::MissedZeroPacket;
+  return std::nullopt;
+}
+
+void LapAssembler::follow(const PacketView& packet) {
+  const double fsa = raw_angle_degrees(packet.fsa);
+  turned_deg_ += step_deg(last_fsa_deg_, fsa);
+  last_fsa_deg_ = fsa;
+  last_lsa_deg_ = raw_angle_degrees(packet.lsa);
+  building_.longest_wait_ns = std::max(building_.longest_wait_ns, packet.first_rx_ns - building_.last_rx_ns);
+  building_.last_rx_ns = packet.rx_ns;
+}
+
+void LapAssembler::publish() {
+  std::swap(building_, done_);
+  ++counters_.laps;
 }
 
 bool LapAssembler::add_packet(const PacketView& packet) {
@@ -75,15 +121,21 @@ bool LapAssembler::add_packet(const PacketView& packet) {
           ++(ok ? counters_.crc_ok : counters_.crc_mismatches);
         }
       }
-      building_.last_rx_ns = packet.rx_ns;
-      std::swap(building_, done_);
-      ++counters_.laps;
+      follow(packet);
+      publish();
       closed = true;
     }
     start_lap(packet);
   } else if (!in_lap_) {
     ++counters_.discarded_packets;
     return false;
+  } else if (const std::optional<LapEnd> end = cut_before(packet)) {
+    building_.end = *end;
+    publish();
+    ++counters_.cut_laps;
+    ++counters_.discarded_packets;
+    in_lap_ = false;
+    return true;
   }
   if (profile_->ct_carries_info)
     take_ct_info(packet);
@@ -92,8 +144,8 @@ bool LapAssembler::add_packet(const PacketView& packet) {
   if (lap_crc8_) crc_ = ct_crc8_update(crc_, packet.ct);
   add_points(packet);
   ++building_.packets;
+  if (packet_index_ > 0) follow(packet);
   ++packet_index_;
-  building_.last_rx_ns = packet.rx_ns;
   return closed;
 }
 

@@ -12,8 +12,12 @@
 // - A lap runs from a zero packet (inclusive) to the next (exclusive). Packets before the first
 //   zero packet form a partial lap that is discarded. A lap is published when the next zero packet
 //   arrives; it stays readable through lap() until the following add_packet call.
+// - A lap is cut short, and the packets up to the next zero packet dropped, when its angle comes
+//   round past its start again (a lost zero packet) or when the stream stalls and resumes
+//   somewhere that does not follow on (Lap::end says which): no lap holds more than one turn.
 // Two preallocated laps are swapped, so steady state allocates nothing.
 #include <cstdint>
+#include <optional>
 
 #include "core/protocol/angle_correction.h"
 #include "core/protocol/lap.h"
@@ -30,6 +34,7 @@ struct LapCounters {
   std::uint64_t crc_mismatches = 0;     // G1 laps whose CRC8 did not match
   std::uint64_t crc_unknown = 0;        // G1 laps closed without a LastCRC byte
   std::uint64_t overflow_points = 0;    // points dropped because a lap exceeded Lap::kMaxPoints
+  std::uint64_t cut_laps = 0;           // laps closed without their zero packet (Lap::end)
 };
 
 class LapAssembler {
@@ -52,6 +57,10 @@ class LapAssembler {
   void add_points(const PacketView& packet);
   void take_ct_info(const PacketView& packet);
   void take_zero_packet_scan_rate(std::uint8_t ct);
+  // Why the lap being built must end before this (not zero) packet, if it must.
+  std::optional<LapEnd> cut_before(const PacketView& packet) const;
+  void follow(const PacketView& packet);  // the angle and time this packet reached
+  void publish();                         // the lap being built becomes lap()
 
   const ModelProfile* profile_;
   const UnitConventions* conventions_;
@@ -63,6 +72,9 @@ class LapAssembler {
   bool in_lap_ = false;             // a zero packet has been seen
   std::uint32_t packet_index_ = 0;  // index of the next packet within the lap being built
   std::uint8_t crc_ = 0;            // G1 CRC8 over the CT bytes of the lap being built
+  double turned_deg_ = 0;           // first-level angle from the lap's zero packet to the last packet
+  double last_fsa_deg_ = 0;         // the last packet's first-level start and end angles
+  double last_lsa_deg_ = 0;
   std::uint64_t next_index_ = 0;
   LapCounters counters_;
 };

@@ -66,6 +66,7 @@ DecoderCounters ScanDecoder::counters() const {
   c.crc_mismatches = l.crc_mismatches;
   c.crc_unknown = l.crc_unknown;
   c.overflow_points = l.overflow_points;
+  c.cut_laps = l.cut_laps;
   return c;
 }
 

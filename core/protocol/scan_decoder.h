@@ -23,7 +23,8 @@ struct DecoderCounters {
   std::uint64_t resync_bytes = 0;       // bytes skipped hunting a header (junk, reply headers, failed starts)
   std::uint64_t pending_bytes = 0;      // bytes of a packet not complete yet (cut off at end of stream)
   std::uint64_t laps = 0;               // complete laps published
-  std::uint64_t discarded_packets = 0;  // packets before the first zero packet (partial lap)
+  std::uint64_t discarded_packets = 0;  // packets outside a lap: before the first zero packet, after a cut
+  std::uint64_t cut_laps = 0;           // laps closed without their zero packet (Lap::end)
   std::uint64_t crc_ok = 0;             // G1 laps whose CT CRC8 matched
   std::uint64_t crc_mismatches = 0;     // G1 laps whose CT CRC8 did not match
   std::uint64_t crc_unknown = 0;        // G1 laps closed without a LastCRC byte

@@ -14,7 +14,7 @@ using test::decode;
 
 struct CaptureCounts {
   const char* file;
-  std::uint64_t bytes, packets, zero_packets, laps, discarded, pending;
+  std::uint64_t bytes, packets, zero_packets, laps, discarded, pending, cut_laps;
 };
 
 class X4Capture : public ::testing::TestWithParam<CaptureCounts> {};
@@ -32,6 +32,7 @@ TEST_P(X4Capture, DecodesWithExactCounts) {
   EXPECT_EQ(c.pending_bytes, expected.pending);  // the cut-off packet at the end
   EXPECT_EQ(c.laps, expected.laps);
   EXPECT_EQ(c.discarded_packets, expected.discarded);
+  EXPECT_EQ(c.cut_laps, expected.cut_laps);
   ASSERT_EQ(decoded.laps.size(), expected.laps);
   std::uint64_t packets_in_laps = 0;
   for (const Lap& lap : decoded.laps) {
@@ -55,11 +56,12 @@ TEST_P(X4Capture, DecodesWithExactCounts) {
 }
 
 // packets/zero packets/tail from the independent walk; laps = zero packets - 1 (the last lap is
-// cut off); discarded = packets before the first zero packet (scan1: 7, scan2/3 start with one).
+// cut off); discarded = packets before the first zero packet (scan1: 7, scan2/3 start with one)
+// and, in scan2, the 29 packets of the start-up lap's second turn (see X4Scan2StartUpLap).
 INSTANTIATE_TEST_SUITE_P(Captures, X4Capture,
-                         ::testing::Values(CaptureCounts{"x4-scan1.bin", 38074, 455, 28, 27, 7, 75},
-                                           CaptureCounts{"x4-scan2.bin", 98769, 1243, 71, 70, 0, 74},
-                                           CaptureCounts{"x4-scan3.bin", 156209, 1949, 114, 113, 0, 74}),
+                         ::testing::Values(CaptureCounts{"x4-scan1.bin", 38074, 455, 28, 27, 7, 75, 0},
+                                           CaptureCounts{"x4-scan2.bin", 98769, 1243, 71, 70, 29, 74, 1},
+                                           CaptureCounts{"x4-scan3.bin", 156209, 1949, 114, 113, 0, 74, 0}),
                          [](const ::testing::TestParamInfo<CaptureCounts>& param_info) {
                            std::string name = param_info.param.file;
                            return name.substr(0, name.find('.')).erase(2, 1);
@@ -72,6 +74,21 @@ TEST(Captures, X4Scan1FirstLap) {
   ASSERT_FALSE(decoded.laps.empty());
   EXPECT_EQ(decoded.laps[0].packets, 19u);
   EXPECT_EQ(decoded.laps[0].points.size(), 601u);
+}
+
+TEST(Captures, X4Scan2StartUpLapHoldsNoMoreThanOneTurn) {
+  // Walked by hand: lap 1 runs from the zero packet at 348.03 degrees (packet 15) to 180.12 and
+  // stays there for 8 packets (the motor settling), then goes on from 0.39 round to 347.66: 540
+  // degrees before the next zero packet (packet 69). It is cut at 0.39, where it passes its own
+  // start, and packets 40 to 68 are dropped; every other lap of the three captures is one turn.
+  const auto decoded = decode(profile_for(Model::G6), test::read_file(test::capture("x4-scan2.bin")));
+  ASSERT_GE(decoded.laps.size(), 3u);
+  EXPECT_EQ(decoded.laps[0].end, LapEnd::ZeroPacket);
+  EXPECT_EQ(decoded.laps[1].end, LapEnd::MissedZeroPacket);
+  EXPECT_EQ(decoded.laps[1].packets, 25u);
+  EXPECT_FALSE(decoded.laps[1].whole());
+  EXPECT_EQ(decoded.laps[2].end, LapEnd::ZeroPacket);
+  EXPECT_EQ(decoded.laps[2].index, 2u);
 }
 
 TEST(Captures, X4ClassFileWithOneBadChecksum) {

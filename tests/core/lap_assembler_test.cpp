@@ -272,6 +272,88 @@ TEST(G1, WithSeveralBytesBeforeAZeroPacketTheLastOneIsTheLastCrc) {
   EXPECT_FALSE(junk_last.laps[0].ct_info_trusted());
 }
 
+// A stream fed packet by packet, each with its own receive time (ns).
+std::vector<Lap> decode_timed(const std::vector<std::pair<Bytes, std::int64_t>>& packets,
+                              DecoderCounters* counters = nullptr) {
+  ScanDecoder decoder(profile_for(Model::G6));
+  std::vector<Lap> laps;
+  for (const auto& [bytes, rx_ns] : packets) decoder.feed(bytes, rx_ns, [&](const Lap& lap) { laps.push_back(lap); });
+  if (counters) *counters = decoder.counters();
+  return laps;
+}
+
+TEST(Laps, ALostZeroPacketCutsTheLapWhereItComesRound) {
+  Bytes stream = packet(kCtLapStart, 0.0, 0.0, {40});
+  for (double a = 10.0; a < 350.0; a += 40.0) append(stream, packet(0, a, a + 30.0, {100, 100}));
+  // The next zero packet was lost: the angle passes 0 again, then the lap after it closes.
+  append(stream, packet(0, 2.0, 30.0, {100, 100}));
+  append(stream, packet(0, 40.0, 70.0, {100, 100}));
+  append(stream, packet(kCtLapStart, 0.0, 0.0, {40}));
+  append(stream, packet(0, 10.0, 40.0, {100, 100}));
+  append(stream, packet(kCtLapStart, 0.0, 0.0, {40}));
+  const auto decoded = decode(profile_for(Model::G6), stream);
+  ASSERT_EQ(decoded.laps.size(), 2u);
+  EXPECT_EQ(decoded.laps[0].end, LapEnd::MissedZeroPacket);
+  EXPECT_EQ(decoded.laps[0].packets, 10u);  // the zero packet and the nine up to 330 degrees
+  EXPECT_FALSE(decoded.laps[0].whole());
+  EXPECT_EQ(decoded.laps[1].end, LapEnd::ZeroPacket);
+  EXPECT_TRUE(decoded.laps[1].whole());
+  EXPECT_EQ(decoded.counters.cut_laps, 1u);
+  EXPECT_EQ(decoded.counters.discarded_packets, 2u);  // the turn after the cut, up to the zero packet
+}
+
+TEST(Laps, APacketStartingAHairBehindTheLastIsNoNewTurn) {
+  // The X4's start-up lap: 223.34 then 222.64 degrees. Read as 359.3 degrees on, it would cut a
+  // whole lap short.
+  Bytes stream = packet(kCtLapStart, 0.0, 0.0, {40});
+  append(stream, packet(0, 100.0, 223.34, {100, 100}));
+  append(stream, packet(0, 222.64, 300.0, {100, 100}));
+  append(stream, packet(0, 300.0, 359.0, {100, 100}));
+  append(stream, packet(kCtLapStart, 0.0, 0.0, {40}));
+  const auto decoded = decode(profile_for(Model::G6), stream);
+  ASSERT_EQ(decoded.laps.size(), 1u);
+  EXPECT_EQ(decoded.laps[0].end, LapEnd::ZeroPacket);
+  EXPECT_EQ(decoded.laps[0].packets, 4u);
+}
+
+TEST(Laps, AStallThatResumesElsewhereCutsTheLap) {
+  constexpr std::int64_t ms = 1'000'000;
+  DecoderCounters counters;
+  const auto laps = decode_timed({{packet(kCtLapStart, 0.0, 0.0, {40}), 0},
+                                  {packet(0, 10.0, 40.0, {100, 100}), 5 * ms},
+                                  {packet(0, 40.5, 70.0, {100, 100}), 10 * ms},
+                                  // 3 s of nothing; the lidar turned on meanwhile
+                                  {packet(0, 200.0, 230.0, {100, 100}), 3010 * ms},
+                                  {packet(0, 230.5, 260.0, {100, 100}), 3015 * ms},
+                                  {packet(kCtLapStart, 0.0, 0.0, {40}), 3100 * ms},
+                                  {packet(0, 10.0, 40.0, {100, 100}), 3105 * ms},
+                                  {packet(kCtLapStart, 0.0, 0.0, {40}), 3200 * ms}},
+                                 &counters);
+  ASSERT_EQ(laps.size(), 2u);
+  EXPECT_EQ(laps[0].end, LapEnd::Stall);
+  EXPECT_EQ(laps[0].packets, 3u);
+  EXPECT_EQ(laps[0].last_rx_ns, 10 * ms);  // the lap ends where the stream went quiet
+  EXPECT_FALSE(laps[0].whole());
+  EXPECT_EQ(laps[1].end, LapEnd::ZeroPacket);
+  EXPECT_TRUE(laps[1].whole());
+  EXPECT_EQ(counters.cut_laps, 1u);
+}
+
+TEST(Laps, ALateReadThatLostNothingKeepsTheLapButItTimesNothing) {
+  // The host read 400 ms late and every byte was still there: the packet follows on from the
+  // last, so the lap is whole in angle, but its duration is the host's, not the motor's.
+  constexpr std::int64_t ms = 1'000'000;
+  const auto laps = decode_timed({{packet(kCtLapStart, 0.0, 0.0, {40}), 0},
+                                  {packet(0, 10.0, 40.0, {100, 100}), 5 * ms},
+                                  {packet(0, 40.5, 70.0, {100, 100}), 405 * ms},
+                                  {packet(kCtLapStart, 0.0, 0.0, {40}), 410 * ms}});
+  ASSERT_EQ(laps.size(), 1u);
+  EXPECT_EQ(laps[0].end, LapEnd::ZeroPacket);
+  EXPECT_EQ(laps[0].packets, 3u);
+  EXPECT_EQ(laps[0].longest_wait_ns, 400 * ms);
+  EXPECT_FALSE(laps[0].whole());
+}
+
 TEST(Laps, PointStorageIsBounded) {
   // A stream that never sends the next zero packet cannot grow a lap past Lap::kMaxPoints.
   Bytes stream = packet(kCtLapStart, 0.0, 0.0, {40});
