@@ -38,6 +38,11 @@ void print_check_text(std::FILE* out, const CheckRecord& record) {
                  r.measured.c_str(), r.limit.c_str());
   const std::size_t failed = static_cast<std::size_t>(std::count_if(
       record.results.begin(), record.results.end(), [](const auto& r) { return r.verdict == Verdict::Fail; }));
+  const std::vector<TimingGap>& gaps = record.observations.timing.gaps;
+  if (!gaps.empty()) {
+    std::fprintf(out, "interruptions: %zu, left out of the per-lap figures\n", gaps.size());
+    for (const TimingGap& gap : gaps) std::fprintf(out, "  %s\n", describe_timing_gap(gap).c_str());
+  }
   const CheckOutcome outcome = check_outcome(record);
   if (outcome == CheckOutcome::Incomplete)
     std::fprintf(out, "verdict: INCOMPLETE (%s; of what was measured, %zu of %zu criteria failed%s%s)\n",
@@ -97,6 +102,22 @@ void print_check_json(std::FILE* file, const CheckRecord& record) {
   out.integer(t.normal_laps);
   out.raw(R"(,"interruptions":)");
   out.integer(t.interruptions);
+  out.raw(R"(,"gaps":[)");
+  for (std::size_t i = 0; i < t.gaps.size(); ++i) {
+    const TimingGap& gap = t.gaps[i];
+    out.raw(i ? R"(,{"from_s":)" : R"({"from_s":)");
+    out.fixed(gap.from_s, 3);
+    out.raw(R"(,"to_s":)");
+    out.fixed(gap.to_s, 3);
+    out.raw(R"(,"turns_lost":)");
+    out.fixed(gap.turns_lost, 1);
+    out.raw(R"(,"cause":)");
+    out.string(gap.cause == TimingGap::Cause::Stall ? "stall" : "lost_zero_packet");
+    out.raw(R"(,"text":)");
+    out.string(describe_timing_gap(gap));
+    out.raw("}");
+  }
+  out.raw("]");
   out.raw(R"(,"mean_hz":)");
   out.fixed(t.mean_hz, 4);
   out.raw(R"(,"jitter_pct":)");

@@ -88,7 +88,15 @@ std::string criteria_table(const CheckRecord& record) {
 std::string charts(const CheckRecord& record) {
   const CheckObservations& o = record.observations;
   std::string html = R"(<section class="charts"><h2>Scan rate</h2>)";
-  html += svg_scan_rate_chart(o.timing.series, record.limits.scan_hz_target, record.limits.scan_hz_tolerance_pct);
+  html += svg_scan_rate_chart(o.timing.series, o.timing.gaps, record.limits.scan_hz_target,
+                              record.limits.scan_hz_tolerance_pct);
+  if (!o.timing.gaps.empty()) {
+    html += format_text(R"(<p class="note">%zu interruption%s, shaded red above and left out of the per-lap )"
+                        R"(figures:</p><ul id="gaps">)",
+                        o.timing.gaps.size(), o.timing.gaps.size() == 1 ? "" : "s");
+    for (const TimingGap& gap : o.timing.gaps) html += "<li>" + markup_escaped(describe_timing_gap(gap)) + "</li>";
+    html += "</ul>";
+  }
   if (record.sector) {
     const SectorStatistics& s = *record.sector;
     html += "<h2>Sector " + markup_escaped(o.sector_name.value_or("")) + "</h2>";

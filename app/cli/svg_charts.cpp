@@ -15,6 +15,7 @@ constexpr const char* kInk = "#1f2933";
 constexpr const char* kGrid = "#d9dee3";
 constexpr const char* kData = "#1565c0";
 constexpr const char* kTarget = "#2e7d32";
+constexpr const char* kGap = "#c62828";
 
 // A step of 1, 2 or 5 times a power of ten giving about `wanted` intervals over span.
 double nice_step(double span, int wanted) {
@@ -101,12 +102,14 @@ std::string markup_escaped(std::string_view text) {
   return out;
 }
 
-std::string svg_scan_rate_chart(std::span<const LapRateSample> series, double target_hz, double tolerance_pct) {
+std::string svg_scan_rate_chart(std::span<const LapRateSample> series, std::span<const TimingGap> gaps,
+                                double target_hz, double tolerance_pct) {
   constexpr const char* kTitle = "Scan rate of each lap over the run";
   if (series.empty()) return empty_chart(kTitle, "no complete lap was measured");
   const double band = target_hz * tolerance_pct / 100;
   PlotFrame f;
   f.x_hi = std::max(series.back().t_s, 1.0);
+  for (const TimingGap& gap : gaps) f.x_hi = std::max(f.x_hi, gap.to_s);
   f.y_lo = target_hz - band, f.y_hi = target_hz + band;
   for (const LapRateSample& s : series) f.y_lo = std::min(f.y_lo, s.hz), f.y_hi = std::max(f.y_hi, s.hz);
   const double pad = std::max((f.y_hi - f.y_lo) * 0.15, 0.05);
@@ -119,9 +122,29 @@ std::string svg_scan_rate_chart(std::span<const LapRateSample> series, double ta
   svg += f.axes("time (s)", "scan rate (Hz)");
   svg += format_text(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-dasharray="6 4"/>)", f.left,
                      f.sy(target_hz), f.width - f.right, f.sy(target_hz), kTarget);
-  svg += format_text(R"(<polyline fill="none" stroke="%s" stroke-width="1.5" points=")", kData);
-  for (const LapRateSample& s : series) svg += format_text("%.1f,%.1f ", f.sx(s.t_s), f.sy(s.hz));
-  svg += R"("/>)";
+  for (const TimingGap& gap : gaps) {
+    const double x0 = f.sx(gap.from_s), x1 = f.sx(gap.to_s);
+    svg +=
+        format_text(R"(<rect class="gap" x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="%s" fill-opacity="0.25">)"
+                    R"(<title>%s</title></rect>)",
+                    x0, f.top, std::max(x1 - x0, 2.0), f.sy(f.y_lo) - f.top, kGap,
+                    markup_escaped(describe_timing_gap(gap)).c_str());
+  }
+  // One polyline per stretch between gaps.
+  std::size_t next_gap = 0;
+  bool open = false;
+  for (const LapRateSample& s : series) {
+    const std::size_t gaps_before = next_gap;
+    while (next_gap < gaps.size() && gaps[next_gap].from_s < s.t_s) ++next_gap;
+    if (open && next_gap != gaps_before) {
+      svg += R"("/>)";
+      open = false;
+    }
+    if (!open) svg += format_text(R"(<polyline fill="none" stroke="%s" stroke-width="1.5" points=")", kData);
+    open = true;
+    svg += format_text("%.1f,%.1f ", f.sx(s.t_s), f.sy(s.hz));
+  }
+  if (open) svg += R"("/>)";
   svg += format_text(R"(<text x="%.1f" y="%.1f" text-anchor="end" fill="%s">target %.2f Hz ± %.1f %%</text>)",
                      f.width - f.right - 6, f.top + 14, kTarget, target_hz, tolerance_pct);
   return svg + "</svg>";

@@ -14,8 +14,10 @@
 
 namespace ydscope::cli {
 
-// Each lap's rate against time, with the target as a line and the tolerance as a band.
-std::string svg_scan_rate_chart(std::span<const LapRateSample> series, double target_hz, double tolerance_pct);
+// Each lap's rate against time, with the target as a line and the tolerance as a band; each gap
+// is shaded and the line breaks there rather than running straight across it.
+std::string svg_scan_rate_chart(std::span<const LapRateSample> series, std::span<const TimingGap> gaps,
+                                double target_hz, double tolerance_pct);
 
 // Counts per bin of a histogram; `x_label` names the binned quantity ("range (mm)").
 std::string svg_histogram_chart(const Histogram& histogram, std::string_view x_label);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/analysis/text_format.h"
 #include "core/analysis/value_summary.h"
 #include "core/protocol/angle_correction.h"
 
@@ -39,7 +40,9 @@ void LapTimingAccumulator::add(const Lap& lap) {
                    follows ? lap.last_rx_ns - previous_close_ns_ : 0,
                    static_cast<std::uint32_t>(lap.points.size()),
                    0,
-                   0.0};
+                   0.0,
+                   lap.end,
+                   lap.longest_wait_ns > kStreamStallNs};
   have_previous_ = true;
   previous_index_ = lap.index;
   previous_close_ns_ = lap.last_rx_ns;
@@ -57,11 +60,14 @@ void LapTimingAccumulator::add(const Lap& lap) {
   if (!steps_.empty()) {
     // Reordering the steps is harmless: only their sizes matter below.
     const double step = summarize_values(std::span<double>(steps_)).median;
-    // The next lap starts where this one did, so the tail up to there is part of this lap too.
-    double tail = step_between(raw_angles_.back(), raw_angles_.front());
-    if (tail <= 0) tail += 360.0;
-    steps_.push_back(tail);
-    covered += tail;
+    // The next lap starts where this one did, so the tail up to there is part of this lap too;
+    // a lap cut short ends where it was cut.
+    if (lap.end == LapEnd::ZeroPacket) {
+      double tail = step_between(raw_angles_.back(), raw_angles_.front());
+      if (tail <= 0) tail += 360.0;
+      steps_.push_back(tail);
+      covered += tail;
+    }
     for (const double d : steps_)
       if (d > kGapSteps * step) record.missing += static_cast<std::uint32_t>(std::lround(d / step) - 1);
     record.turns = covered / 360.0;
@@ -87,6 +93,49 @@ double robust_seconds_per_lap(const std::vector<std::pair<double, double>>& coun
 
 }  // namespace
 
+const char* timing_gap_cause(TimingGap::Cause cause) {
+  return cause == TimingGap::Cause::Stall ? "the stream stalled" : "a zero packet was lost";
+}
+
+std::string describe_timing_gap(const TimingGap& gap) {
+  std::string text =
+      format_text("at %.1f s for %.1f s: %s", gap.from_s, gap.to_s - gap.from_s, timing_gap_cause(gap.cause));
+  const long turns = std::lround(gap.turns_lost);
+  if (turns > 0) text += format_text(" (about %ld turn%s unheard)", turns, turns == 1 ? "" : "s");
+  return text;
+}
+
+std::vector<TimingGap> LapTimingAccumulator::gaps(const std::vector<double>& spans,
+                                                  const std::vector<std::pair<double, double>>& count_and_time,
+                                                  double median_period) const {
+  std::vector<TimingGap> out;
+  bool open = false;  // the last gap ended at a cut lap's close: the long lap after it continues it
+  for (std::size_t i = 0; i < laps_.size(); ++i) {
+    const LapRecord& r = laps_[i];
+    const double close = count_and_time[i].second;
+    if (spans[i] == 1.0) {
+      open = false;
+      continue;
+    }
+    if (r.end != LapEnd::ZeroPacket) {
+      const auto cause = r.end == LapEnd::Stall ? TimingGap::Cause::Stall : TimingGap::Cause::LostZeroPacket;
+      out.push_back({cause, close, close, 0.0});
+      open = true;
+      continue;
+    }
+    // A lap of more than one period: laps resumed one period before it closed.
+    const double resumed = std::max(close - median_period, i ? count_and_time[i - 1].second : close);
+    if (!open) {
+      const auto cause = r.turns >= 1.5 && !r.stalled ? TimingGap::Cause::LostZeroPacket : TimingGap::Cause::Stall;
+      out.push_back({cause, i ? count_and_time[i - 1].second : close, resumed, 0.0});
+    }
+    out.back().to_s = resumed;
+    out.back().turns_lost += spans[i] - 1.0;
+    open = false;
+  }
+  return out;
+}
+
 LapTimingStatistics LapTimingAccumulator::statistics() const {
   LapTimingStatistics s;
   s.laps = laps_.size();
@@ -100,13 +149,18 @@ LapTimingStatistics LapTimingAccumulator::statistics() const {
   // the same long gap, followed by laps closing in a burst as it catches up. So a gap counts as
   // silence only for the excess time the next few laps do not make up for.
   std::vector<double> turns(laps_.size()), excess(laps_.size(), 0.0);
+  const auto cut = [this](std::size_t i) { return laps_[i].end != LapEnd::ZeroPacket; };
   for (std::size_t i = 0; i < laps_.size(); ++i) {
-    turns[i] = std::max(1.0, std::round(laps_[i].turns));
+    turns[i] = cut(i) ? laps_[i].turns : std::max(1.0, std::round(laps_[i].turns));
     if (laps_[i].timed && median_period > 0)
       excess[i] = static_cast<double>(laps_[i].period_ns) * 1e-9 - median_period * turns[i];
   }
   std::vector<double> spans(laps_.size());
   for (std::size_t i = 0; i < laps_.size(); ++i) {
+    if (cut(i)) {  // part of a turn, and an interruption whatever its time
+      spans[i] = std::min(turns[i], 0.999);
+      continue;
+    }
     double silent = excess[i];
     double made_up = 0;
     for (std::size_t j = i + 1; j < laps_.size() && j <= i + kCatchUpLaps && laps_[j].timed; ++j) {
@@ -138,6 +192,7 @@ LapTimingStatistics LapTimingAccumulator::statistics() const {
     samples.push_back(r.points + r.missing);
   }
   s.normal_laps = samples.size();
+  s.gaps = gaps(spans, count_and_time, median_period);
   const double seconds_per_lap = robust_seconds_per_lap(count_and_time);
   if (seconds_per_lap > 0) s.mean_hz = 1.0 / seconds_per_lap;
   if (!samples.empty()) {

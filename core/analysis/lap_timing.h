@@ -10,13 +10,16 @@
 //   so the samples a lap holds measure how fast the motor turned in that lap. It is the robust
 //   std-dev (robust_stddev) of the samples per lap, in % of their median;
 // - a lap lasting more than 1.5 periods (its closing zero packet was lost, or the stream stalled)
-//   is an interruption: left out of the per-lap figures, its missing samples counted instead.
+//   is an interruption: left out of the per-lap figures, its missing samples counted instead; so
+//   is a lap the decoder cut short (Lap::end), which covers only the part of a turn it holds.
 //
 // Missing samples are found from the angles: undoing the distance-only second-level correction
 // gives each point's first-level angle, which the lidar spaces evenly, so a gap of k steps means
 // k - 1 samples never arrived (a lost packet, one dropped for a bad checksum, a stall).
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/protocol/lap.h"
@@ -29,6 +32,20 @@ struct LapRateSample {
   std::uint32_t points = 0;  // received
 };
 
+// Where the laps stopped telling the motor's time, for the report to name and the plots to draw.
+struct TimingGap {
+  enum class Cause { Stall, LostZeroPacket };
+  Cause cause = Cause::Stall;
+  double from_s = 0;      // the last lap close before it (the series' clock)
+  double to_s = 0;        // when laps resumed
+  double turns_lost = 0;  // revolutions no lap covers
+};
+
+// "the stream stalled", "a zero packet was lost".
+const char* timing_gap_cause(TimingGap::Cause cause);
+// "at 3.2 s for 0.4 s: the stream stalled (about 3 turns unheard)", for every report format.
+std::string describe_timing_gap(const TimingGap& gap);
+
 struct LapTimingStatistics {
   std::uint64_t laps = 0;           // laps added
   std::uint64_t normal_laps = 0;    // laps of one period, used for the per-lap figures
@@ -40,8 +57,9 @@ struct LapTimingStatistics {
   double samples_per_lap = 0;         // mean of received + missing samples over the normal laps
   double sample_rate_hz = 0;          // samples_per_lap * mean_hz
   std::uint64_t points = 0;           // points received in all laps
-  std::uint64_t lost_samples = 0;     // estimated samples that never arrived
+  std::uint64_t lost_samples = 0;     // estimated samples missing from the laps (lost, or dropped with a cut lap)
   std::vector<LapRateSample> series;  // one entry per normal lap, in order
+  std::vector<TimingGap> gaps;        // one per interruption (one or more laps), in order
 };
 
 class LapTimingAccumulator {
@@ -62,7 +80,12 @@ class LapTimingAccumulator {
     std::uint32_t points;
     std::uint32_t missing;  // from gaps in the first-level angles
     double turns;           // first-level angle covered, in turns (2 when a zero packet was lost)
+    LapEnd end;             // a lap cut short covers part of a turn (and no tail back to its start)
+    bool stalled;           // it waited longer than a stall inside
   };
+  std::vector<TimingGap> gaps(const std::vector<double>& spans,
+                              const std::vector<std::pair<double, double>>& count_and_time, double median_period) const;
+
   std::vector<LapRecord> laps_;
   bool have_previous_ = false;
   std::uint64_t previous_index_ = 0;

@@ -18,18 +18,21 @@ LapTimingStatistics timing_of(const std::vector<Lap>& laps) {
   return timing.statistics();
 }
 
-// Samples that never arrived (lost, stalled or broken packets) in the device laps the host's
-// complete laps cover: from the first zero packet that arrived to the one closing the last lap.
+// Samples missing from the host's laps in the device laps they cover (from the first zero packet
+// that arrived to the one after the last lap's): those that never arrived (lost, stalled or broken
+// packets) and those the decoder dropped after cutting a lap short. Every host lap starts at a
+// zero packet that arrived, so the window is counted in the device's own laps.
 std::uint64_t truly_missing(const VirtualRun& run) {
   std::vector<std::uint64_t> arrived_zero_laps;
   for (const TruthPacket& p : run.truth)
     if (p.index == 0 && !p.lost && !p.corrupted) arrived_zero_laps.push_back(p.lap);
   if (arrived_zero_laps.size() <= run.laps.size()) return 0;
   const std::uint64_t first = arrived_zero_laps.front(), end = arrived_zero_laps[run.laps.size()];
-  std::uint64_t missing = 0;
+  std::uint64_t sent = 0, in_laps = 0;
   for (const TruthPacket& p : run.truth)
-    if (p.lap >= first && p.lap < end && (p.lost || p.corrupted)) missing += p.points.size();
-  return missing;
+    if (p.lap >= first && p.lap < end) sent += p.points.size();
+  for (const Lap& lap : run.laps) in_laps += lap.points.size();
+  return sent - in_laps;
 }
 
 class CleanStream : public ::testing::TestWithParam<Model> {};
@@ -94,6 +97,13 @@ TEST(LapTiming, AStallIsAnInterruptionNotJitter) {
   EXPECT_GE(t.interruptions, 2u);
   EXPECT_LT(t.jitter_pct, 0.1);
   EXPECT_NEAR(t.mean_hz, 8.0, 0.01);
+  // Issue 26: each stall is named once, where and how long, for the report and its plot.
+  ASSERT_EQ(t.gaps.size(), run.faults.stalls);
+  for (const TimingGap& gap : t.gaps) {
+    EXPECT_EQ(gap.cause, TimingGap::Cause::Stall);
+    EXPECT_NEAR(gap.to_s - gap.from_s, 0.4, 0.125 + 0.01) << "a 400 ms stall, give or take a lap at 8 Hz";
+    EXPECT_NEAR(gap.turns_lost, 0.4 * 8.0, 1.5);
+  }
   // Each 400 ms stall loses about 3.2 laps of 1125 samples; the estimate works in whole periods.
   const double missing = static_cast<double>(truly_missing(run));
   EXPECT_NEAR(static_cast<double>(t.lost_samples), missing, 0.15 * missing);

@@ -141,6 +141,32 @@ TEST(CheckCli, TheTextVerdictNamesTheFailedCriterion) {
   EXPECT_NE(run.out.find("verdict: FAIL (1 of 7 criteria: scan_rate)"), std::string::npos) << run.out;
 }
 
+// Issue 26: a stall was drawn straight across and named nowhere. Each is now said in the text,
+// listed in the JSON and the report, shaded on the report's plot, and the line breaks there.
+TEST(CheckCli, StallsAreNamedInEveryFormatAndBreakThePlot) {
+  SimOnPty sim(Model::G6, [](SimServerOptions& o) {
+    o.device.faults.stall_ms = 400;
+    o.device.faults.stall_every_ms = 1200;
+  });
+  const std::filesystem::path report = std::filesystem::temp_directory_path() / "ydscope-check-stalls.html";
+  const CliResult text = run_cli_apart("check --port " + sim.port() +
+                                       " --baud 512000 --seconds 3 --settle-seconds 0.3 --report " + report.string());
+  EXPECT_NE(text.out.find("interruptions: "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("s: the stream stalled (about "), std::string::npos) << text.out;
+  std::ifstream in(report);
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(report);
+  EXPECT_NE(html.find(R"(<ul id="gaps"><li>at )"), std::string::npos) << "the report lists no interruption";
+  EXPECT_NE(html.find(R"(<rect class="gap")"), std::string::npos) << "the plot shades no interruption";
+  std::size_t lines = 0;
+  for (auto at = html.find("<polyline"); at != std::string::npos; at = html.find("<polyline", at + 1)) ++lines;
+  EXPECT_GE(lines, 2u) << "the scan-rate line runs straight across the stalls";
+
+  const CliResult json = check(sim);
+  EXPECT_NE(json.out.find(R"("gaps":[{"from_s":)"), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find(R"("cause":"stall")"), std::string::npos) << json.out;
+}
+
 TEST(CheckCli, AForcedModelTheDeviceDisagreesWithFailsIdentity) {
   SimOnPty sim(Model::TG50);
   const CliResult run = check(sim, " --model TG30");
