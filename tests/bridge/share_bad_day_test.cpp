@@ -1,7 +1,7 @@
 // A shared lidar on a bad day, as a Foxglove client sees it: after an unplugged cable the clients
 // are told the parameter values in force, every parameter serve lists is returned, and
 // /diagnostics keeps coming through an outage, saying so, with a level that follows the lidar's
-// state now rather than its worst moment.
+// state now rather than its worst moment; the MCAP recorded alongside holds the same reports.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -11,6 +11,8 @@
 #include "bridge/ws_test_client.h"
 #include "core/bridge/session_share.h"
 #include "export/diagnostics_reader.h"
+#include "export/mcap_test_reader.h"
+#include "support/raw_recording.h"
 #include "support/session_test_support.h"
 
 namespace ydscope {
@@ -41,9 +43,11 @@ std::optional<std::string> answer_to(WsTestClient& client, const std::string& id
 }
 
 struct Shared {
-  explicit Shared(Model model) : sim(model) {
+  // `mcap_path`: also record the topics there (serve --mcap, record --mcap).
+  explicit Shared(Model model, std::string mcap_path = {}) : sim(model) {
     ShareOptions options;
     options.server.port = 0;
+    options.mcap_path = std::move(mcap_path);
     std::string error;
     share = SessionShare::start(session, options, error);
     EXPECT_TRUE(share) << error;
@@ -97,7 +101,9 @@ TEST(ShareBadDay, AfterAReplugTheClientsAreToldTheValuesInForce) {
 }
 
 TEST(ShareBadDay, DiagnosticsFollowTheLidarsStateNowAndKeepComingThroughAnOutage) {
-  Shared lidar(Model::G6);
+  TempDir dir("bad-day");
+  const std::string mcap = (dir.path() / "run.mcap").string();
+  Shared lidar(Model::G6, mcap);
   ASSERT_TRUE(lidar.share);
   WsTestClient client(lidar.share->port());
   ASSERT_TRUE(client.subscribe(1, "/diagnostics"));
@@ -139,7 +145,20 @@ TEST(ShareBadDay, DiagnosticsFollowTheLidarsStateNowAndKeepComingThroughAnOutage
   lidar.sim.server().replug();
   EXPECT_TRUE(report([](const DiagnosticSeen& s) { return s.level == 0; }))
       << "the level did not come back after the reconnect: " << describe_snapshot(lidar.session.snapshot());
-  EXPECT_TRUE(lidar.share->stop());
+  ASSERT_TRUE(lidar.share->stop());
+
+  // The file has the outage's reports too, not only the clients.
+  const McapContents file = read_mcap(read_file_bytes(mcap));
+  std::uint16_t diagnostics = 0;
+  for (const auto& [id, channel] : file.channels)
+    if (channel.topic == "/diagnostics") diagnostics = id;
+  std::size_t outage_reports = 0;
+  for (const ReadMessage& m : file.messages)
+    if (m.channel_id == diagnostics) {
+      const DiagnosticSeen status = diagnostic_status(m.data);
+      outage_reports += status.level == 2 && has(status.message, outage) ? 1 : 0;
+    }
+  EXPECT_GE(outage_reports, 3u);
 }
 
 }  // namespace
