@@ -35,6 +35,7 @@ void serve_until_stopped(SessionShare& share, const std::vector<ServedLidar>& li
                          const std::atomic<bool>& stop) {
   const auto start = Clock::now();
   std::vector<LinkState> last_state(lidars.size(), LinkState::Idle);
+  std::vector<bool> troubled(lidars.size(), false);  // until it scans again, which is said too
   Lap lap;
   while (!stop.load() && (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -44,7 +45,11 @@ void serve_until_stopped(SessionShare& share, const std::vector<ServedLidar>& li
       const SessionSnapshot s = lidars[id].session->snapshot();
       if (s.state == last_state[id]) continue;
       last_state[id] = s.state;
-      if (link_in_trouble(s.state))
+      // The recovery too ("reconnected; re-applied scan 10.00 Hz"), so a log shows the outage end.
+      const bool trouble = link_in_trouble(s.state);
+      const bool back = troubled[id] && s.state == LinkState::Scanning;
+      troubled[id] = trouble || (troubled[id] && !back);
+      if (trouble || back)
         std::fprintf(stderr, "ydscope-cli serve: %s%s\n",
                      lidars[id].name.empty() ? "" : (lidars[id].name + ": ").c_str(), describe_snapshot(s).c_str());
     }
