@@ -82,8 +82,12 @@ bool SourceSlot::take_laps(double now_s) {
 }
 
 void SourceSlot::measure(const Lap& measured) {
-  model.scan_rate.add_lap_end(measured.index, measured.last_rx_ns);
-  model.plots.add_lap({model.scan_rate.hz(), model.snap.scan_hz, measured.points.size()});
+  // A lap cut short or held up by a stall does not time the motor: the rate starts again after it.
+  if (measured.whole())
+    model.scan_rate.add_lap_end(measured.index, measured.last_rx_ns);
+  else
+    model.scan_rate.reset();
+  model.plots.add_lap({model.scan_rate.hz(), model.snap.scan_hz, measured.points.size(), !measured.whole()});
   for (ui::SectorWatch& sector : model.sectors) sector.add_lap(measured);
   if (measured.health_bits) {
     model.ct_health = measured.health_bits;

@@ -48,8 +48,14 @@ void SourceSlot::describe_view() {
   in.replay_paused = model.replay.available && model.replay.paused;
   in.replay_passes = model.replay.passes;
   if (s.device && s.device->profile) in.model = s.device->profile->name;
-  in.source_warnings = model.source_warnings;
+  // A long gap the replay skipped (or waits out) is news beside the recording's other notices.
+  std::vector<std::string> notices = model.source_warnings;
+  if (const auto status = model.replay.available ? source.replay().status() : std::nullopt)
+    if (std::string gap = gap_notice(status->last_gap, status->skip_gaps, status->position_ns); !gap.empty())
+      notices.push_back(std::move(gap));
+  in.source_warnings = notices;
   in.seconds_since_lap = seconds_since_lap(std::chrono::steady_clock::now());
+  model.seconds_since_lap = in.seconds_since_lap;
   model.view_state = ui::describe_view_state(in);
   if (model.view_state.give_up && model.replay.available && !model.replay.paused) {
     source.replay().set_paused(true);  // another pass would only spin

@@ -16,11 +16,16 @@ constexpr int kViewLeft = 448;
 struct Reading {
   int points = 0;         // saturated scan-point pixels inside the rings
   int overlay_words = 0;  // near-white pixels in the band where the overlay writes
+  int sidebar_green = 0;  // the panels' "all is well" green (state, health lamp and status words)
 };
+
+// The panels' green words and lamps (ImGui colours 0.35, 0.9, 0.55 and 70, 200, 110).
+bool is_all_is_well_green(const unsigned char* p) { return p[1] > 170 && p[1] > p[0] + 80 && p[1] > p[2] + 40; }
 
 Reading read(const Image& image) {
   Reading r;
   r.points = points_in_rings(image, kViewLeft);
+  r.sidebar_green = count_pixels(image, {0, 0, kViewLeft - 20, image.height}, is_all_is_well_green);
   const int cx = (kViewLeft + image.width) / 2;
   const int cy = image.height / 2;
   r.overlay_words = count_pixels(image, {cx - 320, cy - 90, cx + 320, cy + 90}, is_white_pixel);
@@ -48,6 +53,12 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   const Reading dead = screenshot_until(app, dir, seen, read, dimmed, std::chrono::seconds(20));
   EXPECT_LT(dead.points, before.points / 10) << "the old scan stays bright after the lidar died";
   EXPECT_GT(dead.overlay_words, 1500) << "no large overlay words over the view";
+  // Issue 26: the panels kept a green "status 0: normal" through the outage. Stale values are
+  // greyed under "last seen ... ago" and a lamp is only a ring.
+  EXPECT_GT(before.sidebar_green, 150) << "no green in the panels while the lidar scans";
+  EXPECT_LT(dead.sidebar_green, before.sidebar_green / 4)
+      << "the panels still say all is well in green while no data comes (" << dead.sidebar_green << " green pixels, "
+      << before.sidebar_green << " while live)";
 
   // The same port comes back and the app reconnects by itself. The killed sim left its link; it
   // may point at a pty number another program now holds, which the new sim would refuse to replace.

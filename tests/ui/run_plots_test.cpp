@@ -62,5 +62,22 @@ TEST(RunPlots, SetAndMeasuredRatesAdvanceTogether) {
   EXPECT_EQ(p.measured_hz().size(), 0u);
 }
 
+TEST(RunPlots, AnInterruptionIsMarkedBesideTheLapAndBeforeTheNextRate) {
+  // Issue 26: a stall drew as a slow motor. The cut lap has no rate (the meter starts again), is
+  // marked where its points sit, and the first rate after it carries the mark too.
+  RunPlots p;
+  p.add_lap({9.9, 10.0, 900});
+  p.add_lap({std::nullopt, 10.0, 310, true});  // cut short by a stall
+  p.add_lap({std::nullopt, 10.0, 905});        // the meter needs laps again
+  p.add_lap({10.0, 10.0, 902});
+  p.add_lap({10.0, 10.0, 901});
+  EXPECT_EQ(in_order(p.per_lap_breaks()), (std::vector<float>{0, 1, 0, 0, 0}));
+  EXPECT_EQ(in_order(p.measured_hz()), (std::vector<float>{9.9f, 10.0f, 10.0f}));
+  EXPECT_EQ(in_order(p.rate_breaks()), (std::vector<float>{0, 1, 0}));
+  p.clear();
+  p.add_lap({10.0, 10.0, 900});
+  EXPECT_EQ(in_order(p.rate_breaks()), (std::vector<float>{0})) << "a break outlived clear()";
+}
+
 }  // namespace
 }  // namespace ydscope::ui

@@ -75,8 +75,12 @@ TEST(SourceCloud, BySourceColoursEachCloudItsOwnAndDimsAStoppedOne) {
     EXPECT_EQ(out[i].colour.b, source_colour(0).b);
     EXPECT_EQ(out[i].colour.a, 255);
   }
-  EXPECT_EQ(out[2].colour.g, source_colour(1).g);
-  EXPECT_EQ(out[2].colour.a, static_cast<std::uint8_t>(255 * kDimmedSourceAlpha + 0.5f));
+  // Darker as well as fainter: however many of its old laps overlap, none adds up to bright.
+  const auto dimmed = [](std::uint8_t c) { return static_cast<std::uint8_t>(c * kDimmedSourceAlpha + 0.5f); };
+  EXPECT_EQ(out[2].colour.r, dimmed(source_colour(1).r));
+  EXPECT_EQ(out[2].colour.g, dimmed(source_colour(1).g));
+  EXPECT_EQ(out[2].colour.b, dimmed(source_colour(1).b));
+  EXPECT_EQ(out[2].colour.a, dimmed(255));
 }
 
 TEST(SourceCloud, ByRangeKeepsThePaletteButStillPoses) {

@@ -40,7 +40,8 @@ void draw_frequency_panels(UiModel& m, PanelEdits& e) {
   if (ImGui::CollapsingHeader("Scan frequency", ImGuiTreeNodeFlags_DefaultOpen)) {
     const auto measured = m.scan_rate.hz();
     // Set and measured side by side on one row: the sidebar's Lidar tab must fit 800 px.
-    if (ImGui::BeginTable("scanhz", 4, ImGuiTableFlags_SizingStretchProp)) {
+    // Greyed under "last seen ..." while laps do not arrive; the buttons below stay as they are.
+    if (const StaleValues stale(m); ImGui::BeginTable("scanhz", 4, ImGuiTableFlags_SizingStretchProp)) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextDisabled("set (A5 0D)");

@@ -25,20 +25,24 @@ void row(const char* name, const char* value) {
 }
 
 // A round lamp in the current line: red when the bit is set (amber when untrusted), green when clear,
-// grey when unknown.
-void lamp(std::optional<bool> set, bool trusted) {
+// grey when unknown. A stale one is a ring of its last colour: what it was, plainly not what it is.
+void lamp(std::optional<bool> set, bool trusted, bool stale = false) {
   const float r = ImGui::GetTextLineHeight() * 0.32f;
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const ImVec2 c{p.x + r + 2.0f, p.y + ImGui::GetTextLineHeight() * 0.5f};
   ImU32 colour = IM_COL32(90, 95, 105, 255);
   if (set)
     colour = *set ? (trusted ? IM_COL32(255, 80, 70, 255) : IM_COL32(230, 160, 60, 255)) : IM_COL32(70, 200, 110, 255);
-  ImGui::GetWindowDrawList()->AddCircleFilled(c, r, colour, 16);
+  if (stale)
+    ImGui::GetWindowDrawList()->AddCircle(c, r, colour, 16, 1.5f);
+  else
+    ImGui::GetWindowDrawList()->AddCircleFilled(c, r, colour, 16);
   ImGui::Dummy({2.0f * r + 4.0f, ImGui::GetTextLineHeight()});
 }
 
 // G1: one row per module bit, with the live CT value and the A5 92 answer side by side.
-void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std::optional<std::uint8_t> answer) {
+void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std::optional<std::uint8_t> answer,
+               bool stale) {
   if (!ImGui::BeginTable("bits", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) return;
   ImGui::TableSetupColumn("module");
   ImGui::TableSetupColumn("CT");
@@ -50,9 +54,9 @@ void bit_table(Model model, std::optional<std::uint8_t> ct, bool ct_trusted, std
     ImGui::Text("%u %s", static_cast<unsigned>(info.bit), std::string(info.name).c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("when set: %s", std::string(info.meaning).c_str());
     ImGui::TableSetColumnIndex(1);
-    lamp(ct ? std::optional<bool>(((*ct >> info.bit) & 1u) != 0) : std::nullopt, ct_trusted);
+    lamp(ct ? std::optional<bool>(((*ct >> info.bit) & 1u) != 0) : std::nullopt, ct_trusted, stale);
     ImGui::TableSetColumnIndex(2);
-    lamp(answer ? std::optional<bool>(((*answer >> info.bit) & 1u) != 0) : std::nullopt, true);
+    lamp(answer ? std::optional<bool>(((*answer >> info.bit) & 1u) != 0) : std::nullopt, true, stale);
   }
   ImGui::EndTable();
   // Spell out what is wrong, so nobody has to hover to find out.
@@ -137,11 +141,12 @@ void draw_health_panel(UiModel& m) {
   if (!ImGui::CollapsingHeader("Health", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const SessionSnapshot& s = m.snap;
   const Model model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
+  const StaleValues stale(m);
 
   if (reports_health_bits(model)) {
     std::optional<std::uint8_t> answer;
     if (s.health) answer = s.health->status;
-    bit_table(model, m.ct_health, m.ct_health_trusted, answer);
+    bit_table(model, m.ct_health, m.ct_health_trusted, answer, stale.stale());
     if (m.ct_health && !m.ct_health_trusted) {
       ImGui::TextColored({1.0f, 0.7f, 0.3f, 1.0f}, "CT health untrusted: the lap's CRC8 failed");
       help_marker(
@@ -152,11 +157,12 @@ void draw_health_panel(UiModel& m) {
   } else if (s.health) {
     const HealthReport& h = *s.health;
     const HealthStatusInfo info = health_status_info(h.status);
-    lamp(info.is_problem, true);
+    lamp(info.is_problem, true, stale.stale());
     ImGui::SameLine();
-    ImGui::TextColored(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f},
-                       "%s status %u: %s", h.command == Command::HealthStatusBits ? "A5 92" : "A5 91",
-                       static_cast<unsigned>(h.status), std::string(info.name).c_str());
+    ImGui::TextColored(
+        stale.colour(info.is_problem ? ImVec4{1.0f, 0.4f, 0.35f, 1.0f} : ImVec4{0.35f, 0.9f, 0.55f, 1.0f}),
+        "%s status %u: %s", h.command == Command::HealthStatusBits ? "A5 92" : "A5 91", static_cast<unsigned>(h.status),
+        std::string(info.name).c_str());
     // What the status means: in the panel when it is a problem, one hover away when it is not.
     if (info.is_problem)
       wrapped_text(std::string(info.meaning).c_str());

@@ -1,5 +1,7 @@
 #pragma once
 // The ImGui panels of the sidebar. Each draws one collapsing section; draw_sidebar lays them out.
+#include <optional>
+
 #include <imgui.h>
 
 #include "ui/panels/panel_edits.h"
@@ -38,6 +40,22 @@ void draw_booth_overlay(const UiModel& model, float view_left, float view_width,
 // When model.view_state says the picture is not live: dim the view and say why in large type.
 void draw_view_overlay(const UiModel& model, float view_left, float view_width, float view_height,
                        float view_top = 0.0f);
+
+// While it lives, a panel's values are drawn greyed under "last seen 10 s ago" if the source's
+// newest lap is stale (UiModel::stale_for_s); live, it draws nothing and changes nothing.
+class StaleValues {
+ public:
+  explicit StaleValues(const UiModel& model);
+  ~StaleValues();
+  StaleValues(const StaleValues&) = delete;
+  StaleValues& operator=(const StaleValues&) = delete;
+  bool stale() const { return age_s_.has_value(); }
+  // A colour a value would be drawn in when live; grey once stale.
+  ImVec4 colour(const ImVec4& live) const;
+
+ private:
+  std::optional<double> age_s_;
+};
 
 // Small helpers shared by the panels.
 // The colour of words of this severity over the view: green, blue, amber, red.

@@ -31,6 +31,19 @@ void plot_lines(const char* id, const MetricHistory& h, const char* overlay, flo
                    {0.0f, kPlotHeight});
 }
 
+// A red tick across the plot just drawn wherever `breaks` holds 1: an interruption, so a line that
+// runs on across it is not read as the motor slowing.
+void mark_breaks(const MetricHistory& breaks) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const std::size_t n = breaks.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (breaks.data()[(breaks.offset() + i) % n] < 0.5f) continue;
+    const float x = sample_x(a, b, i, n);
+    draw->AddLine({x, a.y + 1.0f}, {x, b.y - 1.0f}, IM_COL32(255, 90, 80, 230), 2.0f);
+  }
+}
+
 // Measured scan rate per lap with the set value drawn over it as a second (green) line.
 void scan_rate_plot(const RunPlots& plots) {
   const MetricHistory& measured = plots.measured_hz();
@@ -45,6 +58,7 @@ void scan_rate_plot(const RunPlots& plots) {
     std::snprintf(overlay, sizeof overlay, "measured %.2f Hz, set %.2f Hz", *now, set.last().value_or(*now));
   }
   plot_lines("##scan_rate", measured, overlay, lo, hi);
+  mark_breaks(plots.rate_breaks());
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const std::size_t n = set.size();
@@ -54,7 +68,7 @@ void scan_rate_plot(const RunPlots& plots) {
                   {sample_x(a, b, i, n), sample_y(a, b, v1, lo, hi)}, IM_COL32(90, 210, 120, 200), 1.5f);
   }
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextDisabled("last %zu laps: blue measured, green set", n);
+  ImGui::TextDisabled("last %zu laps: blue measured, green set, red an interruption", n);
   ImGui::PopTextWrapPos();
 }
 
@@ -88,6 +102,7 @@ void draw_plots_panel(const UiModel& m) {
   ImGui::PushItemWidth(-1.0f);
   scan_rate_plot(p);
   value_plot("##points", p.points(), "%.0f points per lap", "points per lap");
+  mark_breaks(p.per_lap_breaks());
   value_plot("##latency", p.latency_ms(), "lap to screen %.1f ms", "latency");
   value_plot("##bytes", p.bytes_per_s(), "%.0f bytes/s", "bytes/s");
   error_plot("##checksum", p.checksum_errors_per_s(), "checksum errors");

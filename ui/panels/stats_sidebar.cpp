@@ -12,16 +12,17 @@ namespace ydscope::ui {
 void draw_stats_panel(const UiModel& m) {
   if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const CounterSnapshot& c = m.snap.counters;
+  const StaleValues stale(m);
   if (!ImGui::BeginTable("stats", 4, ImGuiTableFlags_SizingStretchProp)) return;
   // Two name/value pairs per row keeps the panel short.
-  auto pair = [](const char* name, const char* format, double value, bool warn) {
+  auto pair = [&stale](const char* name, const char* format, double value, bool warn) {
     ImGui::TableNextColumn();
     ImGui::TextDisabled("%s", name);
     ImGui::TableNextColumn();
     char text[48];
     std::snprintf(text, sizeof text, format, value);
     if (warn)
-      ImGui::TextColored({1.0f, 0.6f, 0.35f, 1.0f}, "%s", text);
+      ImGui::TextColored(stale.colour({1.0f, 0.6f, 0.35f, 1.0f}), "%s", text);
     else
       ImGui::TextUnformatted(text);
   };

@@ -81,7 +81,8 @@ struct UiModel {
   std::vector<std::string> source_warnings;  // wrong with the source but not stopping it
   std::vector<PortEntry> ports;
   bool sim_active = false;
-  double now_s = 0.0;  // since start, for the health timeline
+  double now_s = 0.0;                       // since start, for the health timeline
+  std::optional<double> seconds_since_lap;  // empty until this source's first lap
   ScanRateMeter scan_rate;
   RunningMean frame_ms;
   RunningMean frame_interval_ms;  // start to start of frames: how often the view redraws
@@ -115,6 +116,9 @@ struct UiModel {
   int show_source_tab = -1;
   // Opens a sidebar tab once (SidebarTab); -1 none.
   int show_sidebar_tab = -1;
+
+  // How old the values shown are once laps stopped arriving; empty while live or before any lap.
+  std::optional<double> stale_for_s() const { return view_state.live ? std::nullopt : seconds_since_lap; }
 
   // A .ydrec or an MCAP recording runs (the REC badge).
   bool recording() const { return snap.recording || mcap_recording.active; }

@@ -13,6 +13,7 @@ struct LapSample {
   std::optional<double> measured_hz;  // ScanRateMeter's, once it has enough laps
   std::optional<double> set_hz;       // the device's set value (A5 0D), when known
   std::size_t points = 0;
+  bool interrupted = false;  // cut short or held up by a stall (Lap::whole() false)
 };
 
 // The session's running totals, sampled about once a frame.
@@ -42,9 +43,16 @@ class RunPlots {
   const MetricHistory& bytes_per_s() const { return bytes_per_s_; }
   const MetricHistory& checksum_errors_per_s() const { return checksum_per_s_; }
   const MetricHistory& crc8_failures_per_s() const { return crc8_per_s_; }
+  // 1 where the stream was interrupted, 0 elsewhere: per_lap_breaks() beside points(), and
+  // rate_breaks() beside measured_hz() (the first rate measured after an interruption), so the
+  // panel marks the gap instead of drawing straight across it.
+  const MetricHistory& per_lap_breaks() const { return lap_breaks_; }
+  const MetricHistory& rate_breaks() const { return rate_breaks_; }
 
  private:
   MetricHistory measured_hz_{kLaps}, set_hz_{kLaps}, points_{kLaps}, latency_ms_{kLaps};
+  MetricHistory lap_breaks_{kLaps}, rate_breaks_{kLaps};
+  bool rate_break_pending_ = false;
   MetricHistory bytes_per_s_{kSeconds}, checksum_per_s_{kSeconds}, crc8_per_s_{kSeconds};
   std::optional<CounterSample> last_second_;
 };

@@ -32,7 +32,10 @@ PointCloudStats build_source_clouds(std::span<const SourceLayer> layers, const C
         v.colour.g = layer.colour.g;
         v.colour.b = layer.colour.b;
       }
-      v.colour.a = static_cast<std::uint8_t>(static_cast<float>(v.colour.a) * strength + 0.5f);
+      // Darkened as well as made transparent: alpha alone let a dead lidar's overlapping laps
+      // add back up to nearly full brightness (255 fell only to 221).
+      for (std::uint8_t* channel : {&v.colour.r, &v.colour.g, &v.colour.b, &v.colour.a})
+        *channel = static_cast<std::uint8_t>(static_cast<float>(*channel) * strength + 0.5f);
       out.push_back(v);
     }
   }

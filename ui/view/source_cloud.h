@@ -19,7 +19,7 @@ struct SourceLayer {
   const MotionBackground* motion = nullptr;  // its own room, for ColourMode::Motion
 };
 
-// How much of its strength a dimmed source keeps.
+// How much of its strength (each colour channel and its opacity) a dimmed source keeps.
 inline constexpr float kDimmedSourceAlpha = 0.3f;
 
 // Clears `out` and fills it, layers in order (later ones on top). `scratch` holds one source's
