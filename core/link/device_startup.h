@@ -3,8 +3,9 @@
 // which the device answers device info (A5 90) and the model profile that goes with its answer;
 // then read health, the set scan frequency and the ranging frequency, and put back the settings
 // the user gave it (device_settings.h): a unit that lost power is back at its power-on values.
-// Only device info is required: a device that does not answer the rest still scans. A replay asks nothing and takes the device from its recording.
-// What it learns is posted as it learns it; the Session then starts the stream. I/O thread only.
+// Only device info is required: a device that does not answer the rest still scans. A replay
+// asks nothing and takes the device from its recording. What it learns is posted as it learns
+// it; the Session then starts the stream. I/O thread only.
 #include <cstdint>
 #include <functional>
 #include <optional>
