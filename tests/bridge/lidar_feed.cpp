@@ -1,5 +1,6 @@
 #include "bridge/lidar_feed.h"
 
+#include <algorithm>
 #include <memory>
 
 #include "core/bridge/ros_topic_channels.h"
@@ -40,10 +41,13 @@ void LidarFeed::run(foxglove::FoxgloveServer& server, double speed) {
     encoder.device_bytes(bytes, device_ns,
                          [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
                            // Noted before it is published, so no client can have a lap the test does not know of.
-                           if (topic == RosTopic::Scan) {
+                           {
                              std::lock_guard lock(mutex_);
-                             scan_times_.push_back(log_time);
-                             published_.notify_all();
+                             largest_message_ = std::max(largest_message_, cdr.size());
+                             if (topic == RosTopic::Scan) {
+                               scan_times_.push_back(log_time);
+                               published_.notify_all();
+                             }
                            }
                            server.publish(foxglove::channel_id(topic), log_time,
                                           std::make_shared<const std::vector<std::uint8_t>>(cdr.begin(), cdr.end()));
@@ -56,6 +60,11 @@ void LidarFeed::run(foxglove::FoxgloveServer& server, double speed) {
 std::vector<std::uint64_t> LidarFeed::scan_times() const {
   std::lock_guard lock(mutex_);
   return scan_times_;
+}
+
+std::size_t LidarFeed::largest_message() const {
+  std::lock_guard lock(mutex_);
+  return largest_message_;
 }
 
 bool LidarFeed::wait_for_scans(std::size_t count, std::chrono::milliseconds timeout) const {

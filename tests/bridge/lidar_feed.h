@@ -26,6 +26,8 @@ class LidarFeed {
   void stop();
   // Log times of the /scan messages published so far, in order.
   std::vector<std::uint64_t> scan_times() const;
+  // The largest message (CDR bytes) published so far on any topic: what one queued lap can pin.
+  std::size_t largest_message() const;
   // True once at least `count` /scan messages were published; false after `timeout`.
   bool wait_for_scans(std::size_t count, std::chrono::milliseconds timeout) const;
 
@@ -35,6 +37,7 @@ class LidarFeed {
   mutable std::mutex mutex_;
   mutable std::condition_variable published_;
   std::vector<std::uint64_t> scan_times_;
+  std::size_t largest_message_ = 0;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -36,6 +36,11 @@ class ScanCollector {
     std::lock_guard lock(mutex_);
     return times_;
   }
+  // Laps received so far (read while it runs, to compare with the laps published meanwhile).
+  std::size_t count() const {
+    std::lock_guard lock(mutex_);
+    return times_.size();
+  }
   bool failed() const {
     std::lock_guard lock(mutex_);
     return failed_;

@@ -92,6 +92,12 @@ bool WsTestClient::send_text(std::string_view json, std::chrono::milliseconds ti
                      timeout);
 }
 
+bool WsTestClient::send_binary(std::string_view bytes, std::chrono::milliseconds timeout) {
+  ws_.binary(true);
+  return run_bounded(
+      [&](auto handler) { ws_.async_write(asio::buffer(bytes.data(), bytes.size()), std::move(handler)); }, timeout);
+}
+
 std::optional<WsMessage> WsTestClient::read(std::chrono::milliseconds timeout) {
   buffer_.clear();
   if (!run_bounded([&](auto handler) { ws_.async_read(buffer_, std::move(handler)); }, timeout)) return std::nullopt;

@@ -43,6 +43,8 @@ class WsTestClient {
   // send failed.
   bool subscribe(std::uint32_t subscription_id, std::string_view topic, std::chrono::milliseconds timeout = 10s);
   bool send_text(std::string_view json, std::chrono::milliseconds timeout = 10s);
+  // A binary message (which a Foxglove server without client publishing refuses).
+  bool send_binary(std::string_view bytes, std::chrono::milliseconds timeout = 10s);
 
   // The next message; empty when none came within `timeout` or the connection ended.
   std::optional<WsMessage> read(std::chrono::milliseconds timeout = 10s);
