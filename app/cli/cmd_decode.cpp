@@ -217,7 +217,7 @@ int run_decode(std::span<const std::string> raw) {
                        *mcap);
     print_recording_warnings("ydscope-cli decode", recording->warnings());
     const std::atomic<bool> never{false};
-    print_source_laps(path, *recording, format, /*speed=*/0, filter, never);
+    print_source_laps(path, *recording, format, Pacing{}, filter, never);
     return kExitOk;
   }
   const auto scale =

@@ -27,7 +27,7 @@ namespace {
 
 constexpr std::string_view kHelpText =
     R"(usage: ydscope-cli replay FILE [--speed X] [--format jsonl|csv|summary] [--model MODEL]
-                          [--distance-scale X]
+                          [--distance-scale X] [--keep-gaps]
 
 Plays back the bytes the lidar sent in a recording made by `ydscope-cli record` (or the app),
 with their original timing, and decodes them into laps exactly as `ydscope-cli decode` does.
@@ -43,6 +43,11 @@ with their original timing, and decodes them into laps exactly as `ydscope-cli d
   --distance-scale X   mm per raw distance unit, instead of the one used while recording
   --conventions C      field or manual, instead of the conventions the recording was made with
                        (recordings without them were read as the manuals say)
+  --keep-gaps          wait out a gap in the recording as recorded. By default a gap of more than
+                       5 s without a byte from the lidar (an outage the recorder waited out) is
+                       skipped; either way stderr says where it is and how long it lasts:
+                       "the recording has a gap of 59.0 s at 12.3 s without a byte from the
+                       lidar; skipped to 71.3 s"
 
 Ctrl-C stops early; the summary of what was played is still printed. A recording cut off by a
 killed recorder plays up to its last complete record, with a warning on stderr. A record time
@@ -63,7 +68,8 @@ std::atomic<bool> interrupted{false};
 extern "C" void replay_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
 
 int run_replay(std::span<const std::string> raw) {
-  const Arguments args(raw, {"speed", "format", "model", "distance-scale", "conventions"}, {}, /*max_positionals=*/1);
+  const Arguments args(raw, {"speed", "format", "model", "distance-scale", "conventions"}, {"keep-gaps"},
+                       /*max_positionals=*/1);
   const std::string path = args.single_positional("FILE (a .ydrec recording)");
   require_existing_file(path, "recording");
   const double speed = args.number("speed", 0, kMaxReplaySpeed).value_or(1.0);
@@ -78,7 +84,7 @@ int run_replay(std::span<const std::string> raw) {
   print_recording_warnings("ydscope-cli replay", plan.warnings());
   if (plan.several_sources()) {
     end_on_signals(replay_on_signal);
-    print_source_laps(path, plan, format, speed, {}, interrupted);
+    print_source_laps(path, plan, format, {speed, args.has("keep-gaps")}, {}, interrupted);
     return kExitOk;
   }
   const ModelProfile& profile = *plan.profile;
@@ -86,7 +92,9 @@ int run_replay(std::span<const std::string> raw) {
 
   boost::asio::io_context io;
   std::string error;
-  auto link = ReplayLink::open(io, path, {.speed = speed}, error);
+  ReplayOptions options{.speed = speed, .skip_gaps = !args.has("keep-gaps")};
+  options.on_gap = [](const RecordingGap& gap, bool skipped) { print_gap("ydscope-cli replay", gap, skipped); };
+  auto link = ReplayLink::open(io, path, options, error);
   if (!link) throw std::runtime_error(error);  // the file changed since the plan read it
 
   ScanDecoder decoder(profile, *plan.conventions, scale);

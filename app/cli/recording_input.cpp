@@ -28,6 +28,11 @@ void print_recording_warnings(const char* program, const std::vector<std::string
   for (const std::string& warning : warnings) std::fprintf(stderr, "%s: warning: %s\n", program, warning.c_str());
 }
 
+void print_gap(const char* program, const RecordingGap& gap, bool skipped) {
+  std::fprintf(stderr, "%s: %s (%s)\n", program, gap_sentence(gap, skipped).c_str(),
+               skipped ? "--keep-gaps waits gaps out" : "skipped without --keep-gaps");
+}
+
 void read_recording_device_bytes(const std::string& path,
                                  FunctionRef<void(std::span<const std::uint8_t>, std::int64_t t_ns)> on_chunk) {
   std::string error;

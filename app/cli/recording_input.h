@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/protocol/function_ref.h"
+#include "core/record/recording_gap.h"
 #include "core/record/recording_plan.h"
 
 namespace ydscope::cli {
@@ -22,6 +23,10 @@ RecordingPlan recording_plan_or_throw(const std::string& path, RecordingUse use,
 
 // Each of `warnings` on stderr: "PROGRAM: warning: SENTENCE".
 void print_recording_warnings(const char* program, const std::vector<std::string>& warnings);
+
+// A long gap that playback reached, on stderr: "PROGRAM: SENTENCE" (core/record/recording_gap.h),
+// with the option that does the other thing.
+void print_gap(const char* program, const RecordingGap& gap, bool skipped);
 
 // Calls on_chunk with every device->host record's bytes and recorded time, in order (damage is
 // the plan's to tell). Throws std::runtime_error when the file cannot be read.

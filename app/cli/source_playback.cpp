@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/cli/recording_input.h"
 #include "core/record/recording_reader.h"
 #include "core/record/source_decoders.h"
 
@@ -25,8 +26,9 @@ bool wait_until(Clock::time_point due, const std::atomic<bool>& stop) {
 
 }  // namespace
 
-void print_source_laps(const std::string& path, const RecordingPlan& plan, LapFormat format, double speed,
+void print_source_laps(const std::string& path, const RecordingPlan& plan, LapFormat format, Pacing pacing,
                        InterferenceFilter filter, const std::atomic<bool>& stop) {
+  const double speed = pacing.speed;
   std::string error;
   auto reader = RecordingReader::open(path, error);
   if (!reader) throw std::runtime_error(error);  // the file changed since the plan read it
@@ -48,11 +50,18 @@ void print_source_laps(const std::string& path, const RecordingPlan& plan, LapFo
   };
 
   const auto start = Clock::now();
+  std::int64_t last_device_t = 0;
+  std::int64_t skipped_ns = 0;  // gaps skipped so far: later records play that much earlier
   RecordView record;
   while (!stop.load() && reader->next(record)) {
     if (speed > 0 && record.type == RecordType::DeviceToHost) {
-      const auto due =
-          start + std::chrono::nanoseconds(static_cast<std::int64_t>(static_cast<double>(record.t_ns) / speed));
+      if (const auto gap = long_gap(last_device_t, record.t_ns)) {
+        if (!pacing.keep_gaps) skipped_ns += gap->length_ns;
+        print_gap("ydscope-cli replay", *gap, !pacing.keep_gaps);
+      }
+      last_device_t = record.t_ns;
+      const auto due = start + std::chrono::nanoseconds(
+                                   static_cast<std::int64_t>(static_cast<double>(record.t_ns - skipped_ns) / speed));
       if (!wait_until(due, stop)) break;
     }
     decoders.feed(record, on_lap);

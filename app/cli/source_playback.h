@@ -11,10 +11,17 @@
 
 namespace ydscope::cli {
 
-// speed 0: as fast as the file reads (decode); otherwise the records are paced by their recorded
-// times (replay: 1 as recorded, 2 twice as fast). `stop` (Ctrl-C) ends early; the summaries of
-// what was played are still printed. Throws std::runtime_error when the file cannot be read.
-void print_source_laps(const std::string& path, const RecordingPlan& plan, LapFormat format, double speed,
+struct Pacing {
+  // 0: as fast as the file reads (decode); otherwise the records are paced by their recorded
+  // times (replay: 1 as recorded, 2 twice as fast).
+  double speed = 0;
+  // Paced: a gap longer than kLongGapNs is waited out instead of skipped (said on stderr either way).
+  bool keep_gaps = false;
+};
+
+// `stop` (Ctrl-C) ends early; the summaries of what was played are still printed. Throws
+// std::runtime_error when the file cannot be read.
+void print_source_laps(const std::string& path, const RecordingPlan& plan, LapFormat format, Pacing pacing,
                        InterferenceFilter filter, const std::atomic<bool>& stop);
 
 }  // namespace ydscope::cli

@@ -1,5 +1,7 @@
 #include "app/gui/replay_source.h"
 
+#include <cstdio>
+
 #include "core/record/recording_plan.h"
 
 namespace ydscope::gui {
@@ -71,6 +73,10 @@ std::optional<SessionConfig> replay_config(const std::string& path, const std::o
   // A replay never reconnects: a file that does not open now will not open in 4 s either (once
   // it retried forever), and one that played to its end is finished.
   config.reconnect = false;
+  // As ydscope-cli replay says it; the view shows it too (SourceSlot::describe_view).
+  options.on_gap = [](const RecordingGap& gap, bool skipped) {
+    std::fprintf(stderr, "ydscope: %s\n", gap_sentence(gap, skipped).c_str());
+  };
   config.open_link = [path, options, handle](boost::asio::io_context& io, std::uint32_t,
                                              std::string& open_error) -> std::unique_ptr<ByteLink> {
     std::shared_ptr<ReplayLink> link = ReplayLink::open(io, path, options, open_error);

@@ -50,6 +50,8 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
         speed_(bounded_replay_speed(options.speed)),
         paused_(options.paused),
         loop_(options.loop),
+        skip_gaps_(options.skip_gaps),
+        on_gap_(options.on_gap),
         anchor_wall_(Clock::now()) {
     status_duration_.store(duration_ns);
     publish();
@@ -91,6 +93,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   }
   void restart() {
     reader_->rewind();
+    last_device_t_ = 0;
     have_chunk_ = false;
     finished_ = false;
     anchor_position_ = 0;
@@ -112,6 +115,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     status.finished = status_finished_.load(std::memory_order_relaxed);
     status.loops = status_loops_.load(std::memory_order_relaxed);
     status.bytes = status_bytes_.load(std::memory_order_relaxed);
+    status.gaps = status_gaps_.load(std::memory_order_relaxed);
+    status.last_gap = {status_gap_at_.load(std::memory_order_relaxed), status_gap_ns_.load(std::memory_order_relaxed)};
+    status.skip_gaps = skip_gaps_;
     return status;
   }
 
@@ -138,6 +144,8 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     RecordView record;
     while (reader_->next(record)) {
       if (record.type != RecordType::DeviceToHost || record.payload.empty() || record.source != source_) continue;
+      if (const auto gap = long_gap(last_device_t_, record.t_ns); gap && speed_ > 0.0) meet_gap(*gap);
+      last_device_t_ = record.t_ns;
       chunk_.assign(record.payload.begin(), record.payload.end());
       chunk_offset_ = 0;
       chunk_t_ = record.t_ns;
@@ -147,11 +155,24 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     return false;
   }
 
+  // Playback reaches a long gap: past it at once (the playback point jumps its length), or not.
+  void meet_gap(const RecordingGap& gap) {
+    if (skip_gaps_) {
+      rebase();
+      anchor_position_ = saturated_ns(static_cast<double>(anchor_position_) + static_cast<double>(gap.length_ns));
+    }
+    status_gap_at_.store(gap.at_ns, std::memory_order_relaxed);
+    status_gap_ns_.store(gap.length_ns, std::memory_order_relaxed);
+    status_gaps_.fetch_add(1, std::memory_order_relaxed);
+    if (on_gap_) on_gap_(gap, skip_gaps_);
+  }
+
   void pump() {
     if (!read_handler_ || closed_) return;
     if (!have_chunk_ && !finished_ && !load_next()) {
       if (loop_ && pass_bytes_ > 0) {  // a recording without device bytes would spin
         reader_->rewind();
+        last_device_t_ = 0;
         pass_bytes_ = 0;
         anchor_position_ = 0;
         anchor_wall_ = Clock::now();
@@ -225,6 +246,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   double speed_;
   bool paused_;
   bool loop_;
+  const bool skip_gaps_;
+  const std::function<void(const RecordingGap&, bool)> on_gap_;
+  std::int64_t last_device_t_ = 0;  // recording time of the last device record loaded, for gaps
   bool finished_ = false;
   bool closed_ = false;
   std::int64_t anchor_position_ = 0;
@@ -240,6 +264,9 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   std::atomic<bool> status_finished_{false};
   std::atomic<std::uint64_t> status_loops_{0};
   std::atomic<std::uint64_t> status_bytes_{0};
+  std::atomic<std::uint64_t> status_gaps_{0};
+  std::atomic<std::int64_t> status_gap_at_{0};
+  std::atomic<std::int64_t> status_gap_ns_{0};
 };
 
 ReplayLink::ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata,

@@ -11,6 +11,7 @@
 // io_context's thread), as long as the io_context outlives it.
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include <boost/asio/io_context.hpp>
 
 #include "core/link/byte_link.h"
+#include "core/record/recording_gap.h"
 #include "core/record/recording_metadata.h"
 #include "core/record/recording_reader.h"
 
@@ -37,6 +39,11 @@ struct ReplayOptions {
   // A recording of several lidars (format version 2): the one whose bytes play; the others' are
   // passed over, so one link never mixes two lidars' streams. Version 1 has only source 0.
   std::uint16_t source = 0;
+  // A gap longer than kLongGapNs (core/record/recording_gap.h) is skipped, or with false waited
+  // out as recorded; either way on_gap hears of it (I/O thread) when playback reaches it. A gap
+  // means nothing at speed 0, where nothing waits.
+  bool skip_gaps = true;
+  std::function<void(const RecordingGap&, bool skipped)> on_gap = nullptr;
 };
 
 struct ReplayStatus {
@@ -48,6 +55,9 @@ struct ReplayStatus {
   bool finished = false;    // reached the end without loop (reads now see end-of-file)
   std::uint64_t loops = 0;  // times playback wrapped around
   std::uint64_t bytes = 0;  // device->host bytes delivered
+  std::uint64_t gaps = 0;   // long gaps reached so far (this pass and earlier ones)
+  RecordingGap last_gap;    // the latest of them
+  bool skip_gaps = true;
 };
 
 class ReplayLink final : public ByteLink {

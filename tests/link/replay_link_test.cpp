@@ -88,6 +88,40 @@ TEST_F(ReplayLinkTest, OfSeveralLidarsOnlyTheChosenOnesBytesPlay) {
   EXPECT_EQ(error, path_ + " has no source 2 (it holds 2)");
 }
 
+// Issue 26: a legal 59 s gap paused a replay for 59 s without a word. At speed 1 it is skipped
+// (the read guard is 10 s, so waiting it out would fail here), and whoever plays hears of it.
+TEST_F(ReplayLinkTest, ALongGapIsSkippedAndSaidUnlessItIsToBeWaitedOut) {
+  RecordingMetadata metadata;
+  metadata.model = "G6";
+  std::string error;
+  auto writer = RecordingWriter::create(path_, metadata, 0, error);
+  ASSERT_TRUE(writer) << error;
+  const std::int64_t gap_at = 2'000'000, gap = 59'000'000'000;
+  for (const std::int64_t t : {std::int64_t{1'000'000}, gap_at, gap_at + gap, gap_at + gap + 1'000'000})
+    writer->append(Direction::DeviceToHost, Bytes{static_cast<std::uint8_t>(t % 251)}, t);
+  writer->close();
+  for (const bool skip : {true, false}) {
+    std::vector<std::pair<RecordingGap, bool>> heard;
+    ReplayOptions options{.speed = skip ? 1.0 : 1000.0, .skip_gaps = skip};  // waited out: 59 ms
+    options.on_gap = [&](const RecordingGap& g, bool skipped) { heard.emplace_back(g, skipped); };
+    boost::asio::io_context io;
+    auto link = ReplayLink::open(io, path_, options, error);
+    ASSERT_TRUE(link) << error;
+    const auto [bytes, end] = read_until(io, *link, SIZE_MAX, 8);
+    EXPECT_EQ(bytes.size(), 4u) << "skip " << skip;
+    EXPECT_EQ(end, boost::asio::error::eof) << "skip " << skip;
+    ASSERT_EQ(heard.size(), 1u);
+    EXPECT_EQ(heard[0].first.at_ns, gap_at);
+    EXPECT_EQ(heard[0].first.length_ns, gap);
+    EXPECT_EQ(heard[0].second, skip);
+    const ReplayStatus status = link->status();
+    EXPECT_EQ(status.gaps, 1u);
+    EXPECT_EQ(status.last_gap.length_ns, gap);
+    EXPECT_EQ(status.skip_gaps, skip);
+    EXPECT_EQ(status.position_ns, status.duration_ns) << "the playback point jumps the gap";
+  }
+}
+
 TEST_F(ReplayLinkTest, FastestSpeedReturnsExactlyTheDeviceBytesThenEof) {
   const Bytes device = write_recording(40);
   boost::asio::io_context io;
@@ -205,10 +239,10 @@ TEST_F(ReplayLinkTest, WritesAreAcceptedAndIgnored) {
 }
 
 TEST_F(ReplayLinkTest, CloseAbortsAWaitingRead) {
-  write_recording(2, 60'000'000'000);  // first bytes a minute in
+  write_recording(2, 60'000'000'000);  // first bytes a minute in, waited out
   boost::asio::io_context io;
   std::string error;
-  auto link = ReplayLink::open(io, path_, {.speed = 1.0}, error);
+  auto link = ReplayLink::open(io, path_, {.speed = 1.0, .skip_gaps = false}, error);
   ASSERT_TRUE(link) << error;
   std::array<std::uint8_t, 8> buffer{};
   boost::system::error_code seen;
