@@ -16,6 +16,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
+#include "app/cli/link_loss_notes.h"
 #include "app/cli/line_quality.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
@@ -73,6 +74,9 @@ options:
                    docs/conventions.md lists every value and its source
   --seconds S      stop after S seconds of scanning (default: until Ctrl-C)
   --force          overwrite FILE and OUT.mcap
+  --no-reconnect   end the recording at the first link fault; by default a lidar that drops
+                   (a pulled cable, a stall) is reconnected, its settings put back, and the
+                   gap marked in the files (link_fault metadata, /diagnostics), said on stderr
 )" YDSCOPE_MCAP_OPTIONS_HELP R"(
 On a terminal, progress (time, bytes, laps) is shown on stderr and updated in place. Ctrl-C ends
 the recording cleanly: the file is closed, the lidar stopped and the summary printed.
@@ -149,7 +153,7 @@ CommandResult run_and_wait(const std::function<void(CommandCallback)>& post) {
 
 int run_record(std::span<const std::string> raw) {
   const Arguments args(raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap", "name", "pose"})),
-                       with_mcap_flags({"force"}), 0, source_repeatable_options());
+                       with_mcap_flags({"force", "no-reconnect"}), 0, source_repeatable_options());
   if (args.values("port").size() > 1) {
     if (const auto out = args.value("out")) refuse_to_overwrite(*out, args, "--out");
     end_on_signals(record_on_signal);
@@ -172,9 +176,12 @@ int run_record(std::span<const std::string> raw) {
   if (out_option) refuse_to_overwrite(out, args, "--out");
   if (mcap_option) refuse_to_overwrite(*mcap_option, args, "--mcap");
   McapExportOptions mcap_options = mcap_options_from(args);
-  const SessionConfig config = session_config_from(args, /*scan=*/true);
+  SessionConfig config = session_config_from(args, /*scan=*/true);
+  // An unattended recording outlives a USB glitch: the session reconnects, the file marks the gap.
+  config.reconnect = !args.has("no-reconnect");
   mcap_options.ros.model = config.model;
   const bool tty = ::isatty(STDERR_FILENO) == 1;
+  LinkLossNotes notes("ydscope-cli record", config.address, "recording on; the gap is marked in the file");
 
   Session session(4);
   end_on_signals(record_on_signal);
@@ -209,9 +216,13 @@ int run_record(std::span<const std::string> raw) {
   const auto connect_start = Clock::now();
   Lap lap;
   SessionSnapshot s = session.snapshot();
-  while (!interrupted.load()) {  // until scanning (or failed)
+  while (!interrupted.load()) {  // until scanning; a first connect that fails ends the run at once
     s = session.snapshot();
     if (s.state == LinkState::Scanning || s.state == LinkState::Failed) break;
+    if (s.state == LinkState::Reconnecting) {
+      failure = s.message;
+      break;
+    }
     if (seconds_since(connect_start) > 60) {
       failure = "gave up after 60 s waiting for " + config.address + " (" + describe_snapshot(s) + ")";
       break;
@@ -219,6 +230,7 @@ int run_record(std::span<const std::string> raw) {
     idle(std::chrono::milliseconds(50));
   }
   if (s.state == LinkState::Failed) failure = s.message;
+  if (failure.empty()) notes.follow(s, tty);
 
   const auto scan_start = Clock::now();
   const std::uint64_t bytes_at_scan_start = s.counters.bytes_received;
@@ -232,7 +244,8 @@ int run_record(std::span<const std::string> raw) {
       failure = s.message.empty() ? "recording stopped" : s.message;
       break;
     }
-    if (s.state != LinkState::Scanning && s.state != LinkState::CommandInProgress) {
+    notes.follow(s, tty);
+    if (s.state == LinkState::Failed || (!config.reconnect && !scanning(s.state))) {
       failure = s.message.empty() ? "the scan stopped (" + describe_snapshot(s) + ")" : s.message;
       break;
     }

@@ -9,6 +9,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
+#include "app/cli/link_loss_notes.h"
 #include "app/cli/lap_bell.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/lap_output.h"
@@ -34,6 +35,9 @@ options:
   --format FORMAT       jsonl (default): one JSON object per lap, then the summary; csv: a header,
                         then one row per point (see `decode --help`); summary: only the summary
   --distance-scale MM   mm per distance count, overriding the model's (see `decode --help`)
+  --no-reconnect        end at the first link fault; by default a lidar that drops after it
+                        scanned (a pulled cable, a stall) is reconnected, its settings put back,
+                        and the loss and return said on stderr; laps go on (their index from 0)
   --conventions C       field (default): read the unit as real units of its model and firmware write
                         (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
                         docs/conventions.md lists every value and its source
@@ -65,11 +69,14 @@ std::atomic<bool> interrupted{false};
 extern "C" void on_signal(int) { interrupted.store(true); }
 
 int run_scan(std::span<const std::string> raw) {
-  const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {});
+  const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {"no-reconnect"});
   const auto laps_wanted = args.integer("laps", 1, 1'000'000);
   if (!laps_wanted) throw UsageError("--laps N is required (how many laps to print)");
   const LapFormat format = parse_lap_format(args.value("format"), LapFormat::Jsonl);
   SessionConfig config = session_config_from(args, /*scan=*/true);
+  // A lidar back a second after a USB glitch goes on printing; the first connect still fails fast
+  // (connect_or_throw).
+  config.reconnect = !args.has("no-reconnect");
   config.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
 
   LapBell bell;
@@ -79,6 +86,7 @@ int run_scan(std::span<const std::string> raw) {
   // the write fails instead, and the loop ends as for Ctrl-C.
   std::signal(SIGPIPE, SIG_IGN);
   const SessionSnapshot started = connect_or_throw(session, config);
+  LinkLossNotes notes("ydscope-cli scan", config.address, "laps go on once it is back");
   if (config.distance_scale) session.set_distance_scale(config.distance_scale);
   const bool g1_info = started.device && started.device->profile && started.device->profile->ct_carries_info;
 
@@ -113,7 +121,8 @@ int run_scan(std::span<const std::string> raw) {
     }
     const SessionSnapshot s = session.snapshot();
     health.observe_answer(s.health);
-    if (s.state != LinkState::Scanning && s.state != LinkState::CommandInProgress) {
+    notes.follow(s, false);
+    if (s.state == LinkState::Failed || (!config.reconnect && !scanning(s.state))) {
       failure = s.message.empty() ? "the scan stopped (" + describe_snapshot(s) + ")" : s.message;
       break;
     }

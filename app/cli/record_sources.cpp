@@ -17,6 +17,7 @@
 #include "app/cli/health_watch.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
+#include "app/cli/link_loss_notes.h"
 #include "app/cli/source_options.h"
 #include "core/record/recorded_conventions.h"
 #include "core/bridge/live_topics.h"
@@ -33,16 +34,12 @@ using Clock = std::chrono::steady_clock;
 // before the recording waits on without it; it keeps trying all along.
 constexpr std::chrono::seconds kSettlePatience{60};
 
-bool scanning(LinkState state) { return state == LinkState::Scanning || state == LinkState::CommandInProgress; }
-
 // One lidar of the recording, as the CLI watches it.
 struct Source {
   SourceSpec spec;
   std::unique_ptr<Session> session;
   std::unique_ptr<HealthWatch> health;
-  bool ever_scanned = false;
-  bool down_said = false;  // its stop was said; its return will be
-  std::string last_problem;
+  LinkLossNotes notes;
 };
 
 CommandResult wait_for(const std::function<void(CommandCallback)>& post) {
@@ -54,27 +51,6 @@ CommandResult wait_for(const std::function<void(CommandCallback)>& post) {
 
 // "NAME (PORT)": how every line names a lidar.
 std::string who(const SourceSpec& spec) { return spec.name + " (" + spec.config.address + ")"; }
-
-// Says a lidar's stop once, and its return once.
-void watch(Source& source, const SessionSnapshot& s, bool tty) {
-  const char* clear = tty ? "\r\033[K" : "";
-  if (scanning(s.state)) {
-    if (source.down_said)
-      std::fprintf(stderr, "%sydscope-cli record: %s is scanning again\n", clear, who(source.spec).c_str());
-    source.ever_scanned = true;
-    source.down_said = false;
-    return;
-  }
-  const bool trouble =
-      s.state == LinkState::Stalled || s.state == LinkState::Reconnecting || s.state == LinkState::Failed;
-  if (!trouble) return;
-  if (!s.message.empty()) source.last_problem = s.message;
-  if (source.down_said) return;
-  source.down_said = true;
-  std::fprintf(stderr, "%sydscope-cli record: %s %s: %s; the other lidars keep recording\n", clear,
-               who(source.spec).c_str(), source.ever_scanned ? "stopped" : "is not scanning",
-               s.message.empty() ? std::string(link_state_name(s.state)).c_str() : s.message.c_str());
-}
 
 void show_progress(const std::string& out, double seconds, const std::vector<Source>& sources) {
   std::string line;
@@ -140,7 +116,8 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   for (SourceSpec& spec : source_specs_from(args, /*scan=*/true)) {
     spec.config.reconnect = true;  // one lidar's fault must not end the others' recording
     metadata.push_back(source_metadata(spec));
-    sources.emplace_back().spec = std::move(spec);
+    LinkLossNotes notes("ydscope-cli record", who(spec), "the other lidars keep recording");
+    sources.push_back({std::move(spec), nullptr, nullptr, std::move(notes)});
   }
   if (out)
     if (const std::string problem = recording_output_problem(*out); !problem.empty()) throw UsageError(problem);
@@ -198,8 +175,8 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
       if (source.session->laps().drain_newest(lap) > 0) source.health->observe_lap(lap);
       const SessionSnapshot s = source.session->snapshot();
       source.health->observe_answer(s.health);
-      watch(source, s, tty);
-      settled = settled && (source.ever_scanned || source.down_said);
+      source.notes.follow(s, tty);
+      settled = settled && (source.notes.ever_scanned() || source.notes.down());
     }
     // --seconds counts from when every lidar scans (or was said to be in trouble).
     if (!scan_start && (settled || Clock::now() - start > kSettlePatience)) scan_start = Clock::now();
@@ -262,9 +239,9 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   std::fflush(stdout);
   if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + shown);
   for (const Source& source : sources)
-    if (!source.ever_scanned)
+    if (!source.notes.ever_scanned())
       throw std::runtime_error(who(source.spec) + " never scanned (" +
-                               (source.last_problem.empty() ? "no reason given" : source.last_problem) +
+                               (source.notes.last_problem().empty() ? "no reason given" : source.notes.last_problem()) +
                                "); the other lidars are in " + shown);
   return health_error ? kExitLidarFault : kExitOk;
 }

@@ -69,15 +69,19 @@ SessionConfig session_config_for(const std::string& address, const std::optional
 SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config) {
   session.connect(config);
   const LinkState goal = config.scan ? LinkState::Scanning : LinkState::Ready;
+  // A session that would reconnect reports its first failure too: the user is there to read it.
   const SessionSnapshot s = session.wait_until(
-      [goal](const SessionSnapshot& x) { return x.state == goal || x.state == LinkState::Failed; }, kConnectPatience);
+      [goal](const SessionSnapshot& x) {
+        return x.state == goal || x.state == LinkState::Failed || x.state == LinkState::Reconnecting;
+      },
+      kConnectPatience);
   if (s.state == goal) {
     // A session that reached its goal still explains anything odd on the way (a forced model the
     // device disagrees with, a health question it did not answer): show it, as a warning.
     if (!s.message.empty()) std::fprintf(stderr, "ydscope-cli: warning: %s\n", s.message.c_str());
     return s;
   }
-  if (s.state == LinkState::Failed) throw std::runtime_error(s.message);
+  if (s.state == LinkState::Failed || s.state == LinkState::Reconnecting) throw std::runtime_error(s.message);
   throw std::runtime_error("gave up after " + std::to_string(kConnectPatience.count()) + " s waiting for " +
                            config.address + " (" + describe_snapshot(s) + ")");
 }

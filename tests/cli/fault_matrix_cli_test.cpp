@@ -132,6 +132,8 @@ TEST_P(FaultMatrix, EndsWithItsSentenceAndDeliversEveryUntouchedLap) {
     args = {"scan", "--port", sim.port(), "--laps", event ? "100000" : "8"};
   else
     args = {"record", "--port", sim.port(), "--out", path("run.ydrec"), "--seconds", event ? "60" : "1"};
+  // A link event ends the run only when asked to; riding it out is RideOutALinkFault's.
+  if (event) args.push_back("--no-reconnect");
   CliProcess cli(args, path("stdout"), path("stderr"));
   ASSERT_TRUE(cli.started());
   apply_event(sim, [&] {
@@ -186,6 +188,61 @@ std::vector<MatrixParam> matrix() {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryFault, FaultMatrix, ::testing::ValuesIn(matrix()), param_name);
+
+// Issue 26: a single-lidar scan or record ended on any link drop, even with the unit back a
+// second later. By default they now reconnect, say the loss and the return, and go on; a
+// recording marks the gap in the file.
+class RideOutALinkFault : public ::testing::TestWithParam<Command> {
+ protected:
+  test::TempDir dir_{"ride-out"};
+};
+
+TEST_P(RideOutALinkFault, APulledAndReturnedCableCostsOnlyTheGap) {
+  const bool scan = GetParam() == Command::Scan;
+  SimOnPty sim(Model::G6);
+  const std::string out = dir_.file("out"), err_path = dir_.file("err"), recording = dir_.file("run.ydrec");
+  std::vector<std::string> args;
+  if (scan)
+    args = {"scan", "--port", sim.port(), "--laps", "40"};
+  else
+    args = {"record", "--port", sim.port(), "--out", recording, "--seconds", "4"};
+  CliProcess cli(args, out, err_path);
+  ASSERT_TRUE(cli.started());
+  const auto give_up = std::chrono::steady_clock::now() + kPatience;
+  const auto going = [&] {
+    if (scan) return lap_lines(slurp(out)) >= 3;
+    std::string error;
+    const auto summary = fs::exists(recording) ? summarize_recording(recording, error) : std::nullopt;
+    return summary && summary->device_bytes >= 12000;
+  };
+  while (!going() && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(going()) << "the run never got going: " << slurp(err_path);
+  sim.server().unplug();
+  sim.server().replug();
+
+  const int status = cli.wait(kRunPatience);
+  const std::string err = cli.err();
+  ASSERT_NE(status, -1) << "ydscope-cli hung; stderr: " << err;
+  EXPECT_EQ(status, 0) << err;
+  EXPECT_NE(err.find(" stopped: "), std::string::npos) << "the loss was not said: " << err;
+  EXPECT_NE(err.find(" is scanning again after "), std::string::npos) << "the return was not said: " << err;
+  if (scan) {
+    EXPECT_EQ(lap_lines(cli.out()), 40u) << "laps did not go on after the return";
+    return;
+  }
+  const CliResult decoded = run_cli_apart("decode '" + recording + "'");
+  ASSERT_EQ(decoded.status, 0) << decoded.err;
+  EXPECT_GE(lap_lines(decoded.out), 10u);
+  // The gap is marked in the file: a link_fault metadata record when the link went, an empty one
+  // when it came back.
+  const std::string bytes = slurp(recording);
+  EXPECT_NE(bytes.find("link_fault=reconnecting to " + sim.port()), std::string::npos)
+      << "the file does not mark the gap";
+}
+
+INSTANTIATE_TEST_SUITE_P(Commands, RideOutALinkFault, ::testing::Values(Command::Scan, Command::Record),
+                         [](const auto& info) { return std::string(info.param == Command::Scan ? "scan" : "record"); });
 
 }  // namespace
 }  // namespace ydscope
