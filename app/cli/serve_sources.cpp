@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/cli/link_loss_notes.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/source_options.h"
 #include "core/link/session_io.h"
@@ -16,10 +17,6 @@ namespace ydscope::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-bool link_in_trouble(LinkState state) {
-  return state == LinkState::Failed || state == LinkState::Reconnecting || state == LinkState::Stalled;
-}
 
 }  // namespace
 
@@ -34,24 +31,19 @@ void warn_if_not_loopback(const SessionShare& share) {
 void serve_until_stopped(SessionShare& share, const std::vector<ServedLidar>& lidars, std::optional<double> seconds,
                          const std::atomic<bool>& stop) {
   const auto start = Clock::now();
-  std::vector<LinkState> last_state(lidars.size(), LinkState::Idle);
-  std::vector<bool> troubled(lidars.size(), false);  // until it scans again, which is said too
+  // A lidar's loss and its return ("scanning again after 1.6 s; reconnected; re-applied ..."),
+  // as record and scan say them.
+  std::vector<LinkLossNotes> notes;
+  for (const ServedLidar& lidar : lidars)
+    notes.emplace_back("ydscope-cli serve", lidar.name.empty() ? "the lidar" : lidar.name,
+                       "serving on; the clients see the outage on /diagnostics");
   Lap lap;
   while (!stop.load() && (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (const std::string failed = share.topics().error(); !failed.empty()) throw std::runtime_error(failed);
     for (std::size_t id = 0; id < lidars.size(); ++id) {
       lidars[id].session->laps().drain_newest(lap);  // the served laps come from the tap; keep the queue empty
-      const SessionSnapshot s = lidars[id].session->snapshot();
-      if (s.state == last_state[id]) continue;
-      last_state[id] = s.state;
-      // The recovery too ("reconnected; re-applied scan 10.00 Hz"), so a log shows the outage end.
-      const bool trouble = link_in_trouble(s.state);
-      const bool back = troubled[id] && s.state == LinkState::Scanning;
-      troubled[id] = trouble || (troubled[id] && !back);
-      if (trouble || back)
-        std::fprintf(stderr, "ydscope-cli serve: %s%s\n",
-                     lidars[id].name.empty() ? "" : (lidars[id].name + ": ").c_str(), describe_snapshot(s).c_str());
+      notes[id].follow(lidars[id].session->snapshot(), /*tty=*/false);
     }
   }
 
