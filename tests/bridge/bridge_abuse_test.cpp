@@ -162,12 +162,14 @@ TEST(BridgeAbuse, ClientsThatNeverReadHoldNoMoreThanTheirQueueAndTheOthersKeepFu
   for (WsTestClient* slow : {&silent, &asking})
     ASSERT_TRUE(slow->subscribe(1, "/scan") && slow->subscribe(2, "/points"));
 
+  const std::string bad_op = R"({"op":")" + std::string(60'000, 'z') + R"("})";
   std::size_t most_queued = 0;
   std::size_t most_queued_bytes = 0;
   expect_full_rate_while(feed, steady, [&](int) {
-    // Once a lap: what the slow ones hold, and another request from the asking one.
+    // Once a lap: what the slow ones hold, and a burst of bad requests from the asking one.
     feed.wait_for_scans(feed.scan_times().size() + 1, 5s);
-    EXPECT_TRUE(asking.send_text(R"({"op":"unsubscribe","subscriptionIds":[99]})"));
+    for (int i = 0; i < 50; ++i)
+      EXPECT_TRUE(asking.send_text(i % 10 ? R"({"op":"unsubscribe","subscriptionIds":[99]})" : bad_op));
     bool both_dropped = true;
     for (const WsTestClient* slow : {&silent, &asking}) {
       const auto stats = stats_of(*server, slow->local_port());
