@@ -168,8 +168,8 @@ TEST(BridgeAbuse, ClientsThatNeverReadHoldNoMoreThanTheirQueueAndTheOthersKeepFu
   expect_full_rate_while(feed, steady, [&](int) {
     // Once a lap: what the slow ones hold, and a burst of bad requests from the asking one.
     feed.wait_for_scans(feed.scan_times().size() + 1, 5s);
-    for (int i = 0; i < 50; ++i)
-      EXPECT_TRUE(asking.send_text(i % 10 ? R"({"op":"unsubscribe","subscriptionIds":[99]})" : bad_op));
+    for (int i = 0; i < 20; ++i)
+      EXPECT_TRUE(asking.send_text(i ? R"({"op":"unsubscribe","subscriptionIds":[99]})" : bad_op));
     bool both_dropped = true;
     for (const WsTestClient* slow : {&silent, &asking}) {
       const auto stats = stats_of(*server, slow->local_port());
