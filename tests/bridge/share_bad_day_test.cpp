@@ -100,6 +100,38 @@ TEST(ShareBadDay, AfterAReplugTheClientsAreToldTheValuesInForce) {
   EXPECT_TRUE(lidar.share->stop());
 }
 
+TEST(ShareBadDay, OneOfSeveralLidarsIsToldUnderItsOwnName) {
+  SimOnPty front_sim(Model::G6), back_sim(Model::G6);
+  Session front(4), back(4);
+  ShareOptions options;
+  options.server.port = 0;
+  std::string error;
+  auto share =
+      SessionShare::start({{&front, McapSource{"front", {}, {}}}, {&back, McapSource{"back", {}, {}}}}, options, error);
+  ASSERT_TRUE(share) << error;
+  front.connect(config_for(front_sim.port(), Model::G6));
+  back.connect(config_for(back_sim.port(), Model::G6));
+  ASSERT_EQ(wait_for_state(front, LinkState::Scanning).state, LinkState::Scanning);
+  ASSERT_EQ(wait_for_state(back, LinkState::Scanning).state, LinkState::Scanning);
+  WsTestClient client(share->port());
+  ASSERT_TRUE(
+      client.send_text(R"({"op":"setParameters","parameters":[{"name":"back/ranging_khz","value":4}],"id":"set"})"));
+  ASSERT_TRUE(answer_to(client, "set"));
+  ASSERT_TRUE(client.send_text(R"({"op":"subscribeParameterUpdates","parameterNames":[]})"));
+
+  back_sim.server().unplug();
+  ASSERT_EQ(wait_for_state(back, LinkState::Reconnecting).state, LinkState::Reconnecting);
+  back_sim.server().replug();
+  const auto told = read_until(client, [](const WsMessage& m) {
+    return m.text && has(m.json, R"("op":"parameterValues")") && !has(m.json, R"("id")");
+  });
+  ASSERT_TRUE(told) << "the clients were not told back's values: " << describe_snapshot(back.snapshot());
+  EXPECT_TRUE(has(told->json, R"({"name":"back/ranging_khz","value":4,)")) << told->json;
+  EXPECT_FALSE(has(told->json, R"("name":"ranging_khz")")) << "a name without its lidar: " << told->json;
+  EXPECT_FALSE(has(told->json, R"("name":"front/)")) << "front did not reconnect: " << told->json;
+  EXPECT_TRUE(share->stop());
+}
+
 TEST(ShareBadDay, DiagnosticsFollowTheLidarsStateNowAndKeepComingThroughAnOutage) {
   TempDir dir("bad-day");
   const std::string mcap = (dir.path() / "run.mcap").string();
