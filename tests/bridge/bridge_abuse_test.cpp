@@ -105,6 +105,12 @@ std::optional<Status> next_status(WsTestClient& client, std::chrono::millisecond
   }
 }
 
+// Every byte of a literal, NULs included.
+template <std::size_t N>
+std::string bytes(const char (&literal)[N]) {
+  return std::string(literal, N - 1);
+}
+
 // A masked client frame (RFC 6455 5.2) with the FIN bit, opcode `opcode` and a mask key of zero
 // (a legal key that leaves the payload as it is), for frames a WebSocket library would not send.
 // Payloads under 64 KiB.
@@ -205,7 +211,9 @@ TEST(BridgeAbuse, ClientsResetMidStreamLeaveTheOthersAtFullRate) {
     WsTestClient client(server->port(), round % 2 ? 4096 : 0);
     EXPECT_TRUE(client.subscribe(1, "/scan") && client.subscribe(2, "/points"));
     // Gone part way through a frame the server is sending, or before the first one.
-    if (round % 3 != 2) EXPECT_GT(client.read_raw(1000), 0u);
+    if (round % 3 != 2) {
+      EXPECT_GT(client.read_raw(1000), 0u);
+    }
     client.reset_socket();
     return ++reset >= 30;
   });
@@ -243,7 +251,7 @@ TEST(BridgeAbuse, OversizedMessagesAreRefusedWithAnErrorStatusAndTheOthersKeepFu
     if (round % 2)
       huge.send_text(beyond_any_limit, 30s);
     else  // a frame that announces 2^40 bytes
-      huge.write_raw("\x82\xFF" + std::string("\x00\x00\x01\x00\x00\x00\x00\x00", 8) + std::string(4, '\0') + "abc");
+      huge.write_raw("\x82\xFF" + bytes("\x00\x00\x01\x00\x00\x00\x00\x00") + std::string(4, '\0') + "abc");
     // What the server sent before (serverInfo, advertise) still comes; then the connection ends.
     bool ended = false;
     for (int i = 0; i < 100 && !ended; ++i) ended = !huge.read(30s);
@@ -277,7 +285,7 @@ std::vector<Malformed> malformed_messages() {
        false, "4242"},
       {"unsubscribe of an unknown subscription", R"({"op":"unsubscribe","subscriptionIds":[4242]})", false, "4242"},
       {"nested 10 000 deep", std::string(10'000, '['), false, "nested"},
-      {"binary garbage", std::string("\x01\xFF\x00\x13garbage\x00\x00", 14), true, "binary"},
+      {"binary garbage", bytes("\x01\xFF\x00\x13garbage\x00\x00"), true, "binary"},
   };
 }
 
@@ -322,8 +330,8 @@ TEST(BridgeAbuse, BytesThatAreNoWebSocketEndOnlyTheirConnection) {
   ASSERT_TRUE(steady.subscribed());
 
   const std::vector<std::pair<const char*, std::string>> cases = {
-      {"random bytes", std::string("\x13\x37\xC0\xFF\xEE\x00\x42 not a frame at all \xFF\xFE", 33)},
-      {"an unmasked client frame", std::string("\x81\x05hello", 7)},
+      {"random bytes", bytes("\x13\x37\xC0\xFF\xEE\x00\x42 not a frame at all \xFF\xFE")},
+      {"an unmasked client frame", bytes("\x81\x05hello")},
       {"a reserved opcode", masked_frame(0x3, "abc")},
       {"a text frame that is not UTF-8", masked_frame(0x1, "{\"op\":\"\xC3\x28\"}")},
       {"a control frame of 200 bytes", masked_frame(0x9, std::string(200, 'p'))},
@@ -339,7 +347,7 @@ TEST(BridgeAbuse, BytesThatAreNoWebSocketEndOnlyTheirConnection) {
       EXPECT_TRUE(ended) << what << ": the connection stayed open";
     }
     // Not even HTTP.
-    EXPECT_TRUE(closed_after_bytes_before_handshake(server->port(), "\x16\x03\x01\x02\x00 hello\r\n\r\n"));
+    EXPECT_TRUE(closed_after_bytes_before_handshake(server->port(), bytes("\x16\x03\x01\x02\x00 hello\r\n\r\n")));
     EXPECT_TRUE(closed_after_bytes_before_handshake(server->port(), std::string(100'000, 'G')));
     return round >= 3;
   });
