@@ -8,7 +8,7 @@
 
 namespace ydscope::cli {
 
-// Exit codes of every subcommand (DESIGN.md): 0 success, 1 device or I/O failure, 2 usage error.
+// Exit codes of every subcommand (docs/architecture.md): 0 success, 1 device or I/O failure, 2 usage error.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;

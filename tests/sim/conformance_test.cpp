@@ -69,7 +69,7 @@ TEST_P(Conformance, DeviceInfoCarriesModelFirmwareHardwareSerial) {
   const std::vector<std::uint8_t> head(reply.begin(), reply.begin() + 11);
   EXPECT_EQ(head, single(0x14, 0x04, {profile().model_code, 2, 5, 3}));
   for (std::size_t i = 11; i < reply.size(); ++i) EXPECT_LT(reply[i], 10) << "serial digit " << i - 11;
-  // The model codes seen in the field (DESIGN.md): G1 19, G6 13, TG15/30/50 100/101/102.
+  // The model codes seen in the field (docs/conventions.md): G1 19, G6 13, TG15/30/50 100/101/102.
   const std::map<Model, int> codes{
       {Model::G1, 19}, {Model::G6, 13}, {Model::TG15, 100}, {Model::TG30, 101}, {Model::TG50, 102}};
   EXPECT_EQ(reply[7], codes.at(GetParam()));
