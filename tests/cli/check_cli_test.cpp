@@ -243,16 +243,17 @@ TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {
 }
 
 TEST(CheckCli, AReportThatCannotBeWrittenIsRefusedBeforeConnecting) {
-  // The port does not exist: reaching it would be exit 1, so exit 2 shows the report was checked first.
-  const CliResult run = run_cli("check --port /nonexistent/ttyUSB9 --report /nonexistent-folder/unit.html");
+  // /dev/null is no serial port: reaching it would be exit 1, so exit 2 shows the report was checked first.
+  const CliResult run = run_cli("check --port /dev/null --report /nonexistent-folder/unit.html");
   EXPECT_EQ(run.status, 2) << run.out;
   EXPECT_NE(run.out.find("the folder /nonexistent-folder does not exist"), std::string::npos) << run.out;
 }
 
-TEST(CheckCli, AMissingPortIsADeviceFailure) {
+// As from every command that opens a port (bad_input_cli_test.cpp), and as the help says.
+TEST(CheckCli, AMissingPortIsAUsageError) {
   const CliResult run = run_cli("check --port /nonexistent/ttyUSB9 --seconds 1");
-  EXPECT_EQ(run.status, 1) << run.out;
-  EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << run.out;
+  EXPECT_EQ(run.status, 2) << run.out;
+  EXPECT_NE(run.out.find("ydscope-cli check: there is no port /nonexistent/ttyUSB9"), std::string::npos) << run.out;
 }
 
 TEST(CheckCli, CtrlCStopsTheMotorAndPrintsWhatWasMeasured) {

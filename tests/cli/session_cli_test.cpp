@@ -97,7 +97,7 @@ TEST(SessionCli, SetExitsOneWhenTheTargetCannotBeReached) {
 
 TEST(SessionCli, FailuresAreOneSentenceAndANonZeroExit) {
   const CliResult missing = run_cli("info --port /dev/ydscope-no-such-port");
-  EXPECT_EQ(missing.status, 1);
+  EXPECT_EQ(missing.status, 2);  // a port that does not exist is a usage error, as the help says
   EXPECT_EQ(count(missing.out, "\n"), 1u) << missing.out;
   EXPECT_NE(missing.out.find("/dev/ydscope-no-such-port"), std::string::npos) << missing.out;
   EXPECT_EQ(run_cli("info --port tcp://nowhere").status, 2);
