@@ -259,6 +259,7 @@ int run_decode(std::span<const std::string> raw) {
   if (printer.wants_summary())
     write_summary(out, decoder.counters(), recording ? recording->summary.metadata.start_wall_time : std::nullopt);
   out.flush();
+  say_why_no_lap("ydscope-cli decode", profile->name, decoder.counters());
   if (mcap) write_mcap(args, path, recording.has_value(), *profile, scale, reading);
   if (std::fflush(stdout) != 0)
     throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <boost/asio/error.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/signal_set.hpp>
 
@@ -110,11 +111,13 @@ int run_replay(std::span<const std::string> raw) {
     if (!ec) link->close();
   });
   std::vector<std::uint8_t> buffer(kReadBuffer);
+  bool played_to_end = false;  // not stopped by Ctrl-C: a missing lap is then news
   std::function<void()> read_next = [&] {
     link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t n) {
       // Stamped with the recorded time, not the playback's: t is the same at any speed.
       if (n > 0) decoder.feed({buffer.data(), n}, link->recorded_time_of_last_read(), on_lap);
       if (ec) {
+        played_to_end = ec == boost::asio::error::eof;
         signals.cancel();
         return;  // end of the recording, or Ctrl-C
       }
@@ -127,6 +130,7 @@ int run_replay(std::span<const std::string> raw) {
   decoder.finish(on_lap);
   if (printer.wants_summary()) write_summary(out, decoder.counters(), plan.summary.metadata.start_wall_time);
   out.flush();
+  if (played_to_end) say_why_no_lap("ydscope-cli replay", profile.name, decoder.counters());
   return kExitOk;
 }
 

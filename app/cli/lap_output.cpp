@@ -1,7 +1,10 @@
 #include "app/cli/lap_output.h"
 
+#include <cstdio>
+
 #include "app/common/arguments.h"
 #include "core/export/lap_text.h"
+#include "core/protocol/no_lap_reason.h"
 
 namespace ydscope::cli {
 namespace {
@@ -65,6 +68,12 @@ void LapPrinter::print(const Lap& lap, bool g1_info, std::optional<std::uint8_t>
     }
   }
   out_.maybe_flush();
+}
+
+void say_why_no_lap(const char* program, std::string_view model, const DecoderCounters& counters) {
+  if (counters.laps > 0 || counters.bytes == 0) return;
+  const std::string why = no_lap_reason(model, {counters.bytes, counters.packets, counters.zero_packets});
+  std::fprintf(stderr, "%s: no complete lap: %s\n", program, why.c_str());
 }
 
 }  // namespace ydscope::cli

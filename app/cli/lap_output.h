@@ -47,4 +47,9 @@ class LapPrinter {
   std::optional<std::int64_t> origin_ns_;
 };
 
+// Input read to its end without one complete lap: why, on stderr ("PROGRAM: no complete lap:
+// its 3 G6 scan packets (72 bytes) are too short for a lap, ..."; core/protocol/no_lap_reason.h).
+// Nothing when a lap came, or when nothing was read.
+void say_why_no_lap(const char* program, std::string_view model, const DecoderCounters& counters);
+
 }  // namespace ydscope::cli

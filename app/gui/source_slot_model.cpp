@@ -48,6 +48,7 @@ void SourceSlot::describe_view() {
   in.replay_paused = model.replay.available && model.replay.paused;
   in.replay_passes = model.replay.passes;
   if (s.device && s.device->profile) in.model = s.device->profile->name;
+  in.decoded = {s.counters.bytes_received, s.counters.packets, s.counters.zero_packets};
   // A long gap the replay skipped (or waits out) is news beside the recording's other notices.
   std::vector<std::string> notices = model.source_warnings;
   if (const auto status = model.replay.available ? source.replay().status() : std::nullopt)

@@ -157,6 +157,22 @@ TEST(ViewState, AReplayThatWentRoundWithoutALapGivesUp) {
   EXPECT_FALSE(describe_view_state(in).give_up);
 }
 
+// Issue 26: a recording of G6 packets too short for a lap was "not G6 scan packets".
+TEST(ViewState, AReplayOfPacketsTooShortForALapSaysSo) {
+  ViewStateInput in = scanning(0.0);
+  in.seconds_since_lap.reset();
+  in.replay = true;
+  in.replay_passes = 1;
+  in.address = "recording short.ydrec";
+  in.model = "G6";
+  in.decoded = {72, 3, 1};
+  const ViewState v = describe_view_state(in);
+  EXPECT_TRUE(v.give_up);
+  EXPECT_EQ(v.detail,
+            "its 3 G6 scan packets (72 bytes) are too short for a lap, which runs from a zero packet to the next zero "
+            "packet; they hold 1 zero packet (counted over every pass so far); record at least one whole turn");
+}
+
 TEST(ViewState, AReplayThatFailedBeforeItsFirstLapCouldNotPlay) {
   ViewStateInput in = scanning(0.0);
   in.seconds_since_lap.reset();

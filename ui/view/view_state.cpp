@@ -59,10 +59,12 @@ ViewState describe_link(const ViewStateInput& in) {
   if (in.replay && in.replay_passes > 0 && !in.seconds_since_lap) {
     // Going round again cannot help: its bytes hold no lap for this model.
     const std::string model = in.model.empty() ? std::string("the model chosen") : std::string(in.model);
-    ViewState v = dimmed(
-        Severity::Error, "No laps", where + " played through without one complete lap",
-        "its bytes are not " + model + " scan packets; open it as another model in the Connection panel (Replay)",
-        "no laps");
+    const bool packets = in.decoded.packets > 0;  // then the model is right and the recording short
+    ViewState v = dimmed(Severity::Error, "No laps", where + " played through without one complete lap",
+                         no_lap_reason(model, in.decoded) +
+                             (packets ? " (counted over every pass so far); record at least one whole turn"
+                                      : "; open it as another model in the Connection panel (Replay)"),
+                         "no laps");
     v.give_up = true;
     return v;
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/link/link_state.h"
+#include "core/protocol/no_lap_reason.h"
 
 namespace ydscope::ui {
 
@@ -25,6 +26,7 @@ struct ViewStateInput {
   bool replay_paused = false;
   std::uint64_t replay_passes = 0;  // times the replay went round to its start (loop)
   std::string_view model;           // the model the bytes are decoded as: "G6"
+  LaplessCounts decoded;            // what the decoder counted so far: why no lap came, if none did
   // What is wrong with the source but does not stop it, one sentence each (a recording cut off
   // at its end): said whatever the state, since a live picture may rest on damaged data.
   std::span<const std::string> source_warnings;
