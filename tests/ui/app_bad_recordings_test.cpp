@@ -3,6 +3,7 @@
 // warning. Now the app says what ydscope-cli replay says, in the same words (both ask
 // core/record/recording_plan.h): on stderr and, for a refusal, in the large overlay words.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <iterator>
@@ -139,6 +140,48 @@ TEST_F(AppBadRecordings, BytesWithoutALapGiveUpAfterOnePass) {
             std::string::npos)
       << shown.err;
   EXPECT_GT(overlay_words("junk.png"), 1500) << "no large overlay words saying why";
+}
+
+// Issue 26: corrupt before its model record, or a FIFO nobody writes to (which once blocked the
+// app without a word): refused at once in the CLI's words.
+TEST_F(AppBadRecordings, DamageBeforeTheModelAndAFifoAreRefusedInTheCLIsWords) {
+  RawRecording commands(1, 16, "port=/dev/pts/1\n");
+  commands.add(RecordType::HostToDevice, 1000, {0xA5, 0x90});
+  std::vector<std::uint8_t> bytes = commands.bytes();
+  bytes.insert(bytes.end(), {1, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0xFF, 0, 0, 0, 0, 0, 0, 0, 0});
+  write_file_bytes(path("corrupt.ydrec"), bytes);
+  const std::string fifo = path("lidar.fifo");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& file : {path("corrupt.ydrec"), fifo}) {
+    const ProgramRun cli = cli_replay(file);
+    EXPECT_EQ(cli.status, 1) << cli.err;
+    const ProgramRun shown = app("--replay '" + file + "'", "refused.png");
+    EXPECT_EQ(shown.status, 1) << shown.err;
+    EXPECT_NE(shown.err.find("ydscope: " + cli_sentence(cli)), std::string::npos) << shown.err << "\nCLI: " << cli.err;
+    EXPECT_GT(overlay_words("refused.png"), 1500) << "no large overlay words saying why";
+  }
+}
+
+// Issue 26: a legal gap (59 s) froze the replay without a word. The app says it and plays on.
+TEST_F(AppBadRecordings, ALongGapIsSaidAndSkipped) {
+  std::string error;
+  auto reader = RecordingReader::open((assets_dir() / "demo-g6.ydrec").string(), error);
+  ASSERT_TRUE(reader) << error;
+  RawRecording late(1, 16, "model=G6\n");  // the demo's bytes, a minute late
+  RecordView record;
+  while (reader->next(record))
+    if (record.type == RecordType::DeviceToHost)
+      late.add(record.type, record.t_ns + 59'000'000'000,
+               std::vector<std::uint8_t>(record.payload.begin(), record.payload.end()));
+  const std::string file = path("late.ydrec");
+  late.write(file);
+  const ProgramRun shown = app("--replay '" + file + "'", "late.png");
+  EXPECT_EQ(shown.status, 0) << shown.err;
+  EXPECT_NE(shown.err.find("ydscope: the recording has a gap of 59.0 s at 0.0 s without a byte from the lidar; "
+                           "skipped to 59.0 s\n"),
+            std::string::npos)
+      << shown.err;
+  EXPECT_GT(points("late.png"), 300) << "waited the gap out instead of skipping it";
 }
 
 #endif
