@@ -28,8 +28,8 @@ ProgramRun run_program(const std::filesystem::path& dir, const std::string& prog
   return test::run_program(program, arguments, {.working_dir = dir.string(), .config_home = dir.string()});
 }
 
-// The demo recording's device bytes under other metadata.
-RawRecording demo_with_metadata(const std::string& metadata) {
+// The demo recording's device bytes under other metadata, `late_ns` later than recorded.
+RawRecording demo_with_metadata(const std::string& metadata, std::int64_t late_ns = 0) {
   std::string error;
   auto reader = RecordingReader::open((assets_dir() / "demo-g6.ydrec").string(), error);
   EXPECT_TRUE(reader) << error;
@@ -37,7 +37,8 @@ RawRecording demo_with_metadata(const std::string& metadata) {
   RecordView record;
   while (reader && reader->next(record))
     if (record.type == RecordType::DeviceToHost)
-      recording.add(record.type, record.t_ns, std::vector<std::uint8_t>(record.payload.begin(), record.payload.end()));
+      recording.add(record.type, record.t_ns + late_ns,
+                    std::vector<std::uint8_t>(record.payload.begin(), record.payload.end()));
   return recording;
 }
 
@@ -164,17 +165,8 @@ TEST_F(AppBadRecordings, DamageBeforeTheModelAndAFifoAreRefusedInTheCLIsWords) {
 
 // Issue 26: a legal gap (59 s) froze the replay without a word. The app says it and plays on.
 TEST_F(AppBadRecordings, ALongGapIsSaidAndSkipped) {
-  std::string error;
-  auto reader = RecordingReader::open((assets_dir() / "demo-g6.ydrec").string(), error);
-  ASSERT_TRUE(reader) << error;
-  RawRecording late(1, 16, "model=G6\n");  // the demo's bytes, a minute late
-  RecordView record;
-  while (reader->next(record))
-    if (record.type == RecordType::DeviceToHost)
-      late.add(record.type, record.t_ns + 59'000'000'000,
-               std::vector<std::uint8_t>(record.payload.begin(), record.payload.end()));
   const std::string file = path("late.ydrec");
-  late.write(file);
+  demo_with_metadata("model=G6\n", 59'000'000'000).write(file);  // the demo's bytes, a minute late
   const ProgramRun shown = app("--replay '" + file + "'", "late.png");
   EXPECT_EQ(shown.status, 0) << shown.err;
   EXPECT_NE(shown.err.find("ydscope: the recording has a gap of 59.0 s at 0.0 s without a byte from the lidar; "
