@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/bridge/foxglove_protocol.h"
+
 namespace ydscope::foxglove {
 namespace {
 
@@ -102,8 +104,9 @@ void SessionParameters::set(const Parameter& parameter, SetDone done) {
       done(std::move(read_back), r.ok ? "" : r.message);
     });
   }
-  done({}, "there is no parameter '" + parameter.name +
-               "'; this server has scan_hz, ranging_khz, power_down_protection, filter_specular and filter_ambient");
+  // Quoted short: a client's 64 KiB name must not come back whole.
+  done({}, "there is no parameter " + quoted_client_text(parameter.name) +
+               "; this server has scan_hz, ranging_khz, power_down_protection, filter_specular and filter_ambient");
 }
 
 }  // namespace ydscope::foxglove

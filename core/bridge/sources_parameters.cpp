@@ -1,5 +1,7 @@
 #include "core/bridge/sources_parameters.h"
 
+#include "core/bridge/foxglove_protocol.h"
+
 namespace ydscope::foxglove {
 
 std::vector<Parameter> SourcesParameters::current() {
@@ -21,7 +23,8 @@ void SourcesParameters::set(const Parameter& parameter, SetDone done) {
   }
   std::string names;
   for (const auto& source : sources_) names += (names.empty() ? "" : ", ") + source.first;
-  done({}, "there is no parameter '" + parameter.name + "'; this server's are NAME/scan_hz and the like for " + names);
+  done({}, "there is no parameter " + quoted_client_text(parameter.name) +
+               "; this server's are NAME/scan_hz and the like for " + names);
 }
 
 }  // namespace ydscope::foxglove
