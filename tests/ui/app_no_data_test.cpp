@@ -49,6 +49,9 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
 
   // A crash, not a clean exit: the pseudo-terminal's other end vanishes mid-stream.
   stop_process(sim, SIGKILL);
+  // At once: the killed sim's link names a pty number that another test's lidar may take next,
+  // and the app, reconnecting to the link, would show that one live (seen under ctest -j2).
+  std::filesystem::remove(link);
   const auto dimmed = [&](const Reading& r) { return r.points < before.points / 10 && r.overlay_words > 1500; };
   const Reading dead = screenshot_until(app, dir, seen, read, dimmed, std::chrono::seconds(20));
   EXPECT_LT(dead.points, before.points / 10) << "the old scan stays bright after the lidar died";
@@ -60,9 +63,7 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
       << "the panels still say all is well in green while no data comes (" << dead.sidebar_green << " green pixels, "
       << before.sidebar_green << " while live)";
 
-  // The same port comes back and the app reconnects by itself. The killed sim left its link; it
-  // may point at a pty number another program now holds, which the new sim would refuse to replace.
-  std::filesystem::remove(link);
+  // The same port comes back and the app reconnects by itself.
   sim = spawn_in(dir, sim_argv);
   const bool back = wait_for_path(link, std::chrono::seconds(15));
   EXPECT_TRUE(back) << "the virtual lidar did not come back at " << link;

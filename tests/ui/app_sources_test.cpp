@@ -188,6 +188,8 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   EXPECT_LT(before.amber, 30) << "amber legend words while both scan";
 
   running.stop(right_sim, SIGKILL);  // a crash: the pty's other end vanishes mid-stream
+  // Its link names a pty number another test's lidar may take next; the app would show that one.
+  std::filesystem::remove(right_link);
   // Bright is measured against the live twin (the same model and scene) in the same picture: the
   // first picture may come before either cloud is whole, on a slow machine.
   const auto right_dimmed = [&](const Reading& r) {
