@@ -39,7 +39,7 @@ PASS or FAIL:
   (std-dev) of the sector's points against a flat target square to the sector's middle.
 
 Limits come from the manuals where they give one, otherwise from documented defaults (the table
-is in the README, "Acceptance limits"); every limit has an option below.
+is in docs/check.md, "Acceptance limits"); every limit has an option below.
 
 options:
   --port PATH            serial port (see `ydscope-cli ports`) or tcp://host:port

@@ -3,7 +3,7 @@
 // value it is taken from them (the ranging frequencies, hence the sample rate); the scan-frequency
 // span comes from the model profile (the datasheets' 5-12 Hz); everything else is a documented
 // default of ours, because neither the manuals nor the datasheets we have give one. Each limit has
-// a command-line flag; kLimitSources lists value, source and flag for the README and --help.
+// a command-line flag; kLimitSources lists value, source and flag for docs/check.md and --help.
 #include <optional>
 #include <span>
 #include <string_view>

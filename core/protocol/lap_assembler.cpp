@@ -111,7 +111,7 @@ bool LapAssembler::add_packet(const PacketView& packet) {
     if (in_lap_) {
       if (lap_crc8_) {
         // Without a LastCRC byte there is nothing to compare with: the verdict is unknown, not
-        // a failure (the README's schema: null where absent).
+        // a failure (docs/cli.md, decode's output: null where absent).
         if (!packet.last_crc) {
           building_.crc = CrcVerdict::Unknown;
           ++counters_.crc_unknown;

@@ -5,7 +5,7 @@
 //
 // HostCompat::YdlidarSdk follows what YDLIDAR's own SDK (YDLidar-SDK 1.2.19, which its ROS 2
 // driver links) sends at start-up and what its source checks in each reply (facts read from its
-// source, see README "The virtual lidar as a vendor-SDK test double"):
+// source, see docs/virtual-lidar.md, "As a vendor-SDK test double"):
 //   A5 00  sent before every A5 65 ("force stop"); it waits for nothing, so nothing is answered.
 //   A5 92  its only health request, on every model; G6/TG answer it as their A5 91 (type 06,
 //          status 0/1/2 + u16 error code); without it the SDK waits 1 s and logs an error.

@@ -1,7 +1,8 @@
 // Writes a long .ydrec of the virtual lidar scanning as fast as the CPU allows (device time, no
 // waiting), as `ydscope-cli record` would have written it from a live session: the host's A5 60,
 // then the device bytes in 5 ms reads. The input for timing `ydscope-cli export --mcap` on an
-// hour of G6 (README, "MCAP and the Foxglove bridge"); the file is large, keep it out of the repo.
+// hour of G6 (docs/performance.md, "MCAP and the Foxglove bridge"); the file is large, keep it out
+// of the repo.
 // Not a Google Benchmark and not run by ctest. Usage:
 //   bench_sim_recording --out OUT.ydrec [--minutes 60] [--model G6] [--scene demo]
 #include <cstdio>

@@ -248,7 +248,7 @@ TEST(G1, MissingLastCrcByteIsAnUnknownVerdict) {
 }
 
 // Issue 17 asked which byte counts when several lie between a lap's last packet and its closing
-// zero packet: the one right before the zero packet (README, decode's output). Junk before the
+// zero packet: the one right before the zero packet (docs/cli.md, decode's output). Junk before the
 // true LastCRC leaves the verdict Ok; junk after it (so it is no longer right before) is a Mismatch.
 TEST(G1, WithSeveralBytesBeforeAZeroPacketTheLastOneIsTheLastCrc) {
   test::G1LapSpec spec;

@@ -58,7 +58,7 @@ void port_section(UiModel& m, PanelEdits& e) {
   if (ImGui::Button("Disconnect")) m.requests.push_back(Disconnect{});
 }
 
-// For testing other host software against the virtual lidar (README, "The virtual lidar as a
+// For testing other host software against the virtual lidar (docs/virtual-lidar.md, "As a
 // vendor-SDK test double"); applies when the virtual lidar starts.
 void host_section(PanelEdits& e) {
   if (!ImGui::TreeNode("host")) return;
