@@ -142,7 +142,7 @@ std::string check_report_html(const CheckRecord& record) {
   html += "<h2>Criteria</h2>" + criteria_table(record);
   html += charts(record);
   html += "<footer>Written by ydscope-cli check " + std::string(kVersion) +
-          ". Limits and where they come from: the README's \"Acceptance limits\".</footer></body></html>\n";
+          ". Limits and where they come from: docs/check.md, \"Acceptance limits\".</footer></body></html>\n";
   return html;
 }
 

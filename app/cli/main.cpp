@@ -21,7 +21,8 @@ void print_overview(std::ostream& out) {
   for (const auto& command : ydscope::cli::registered_commands())
     out << "  " << command.name << std::string(10 - std::min<std::size_t>(9, command.name.size()), ' ')
         << command.summary << "\n";
-  out << "\nexit status: 0 success, 1 device or I/O failure, 2 usage error.\n";
+  out << "\nexit status: 0 success, 1 device or I/O failure, 2 usage error, 3 the command ran to the end but the\n"
+         "lidar is not right (scan, record: it reported a health error; check: a criterion failed).\n";
 }
 
 const CliCommand* find_command(const std::string& name) {
