@@ -28,10 +28,16 @@ channel CDR with a ros2msg schema) that Foxglove, `ros2 bag play` and the MCAP t
 
   /scan                   sensor_msgs/msg/LaserScan, one per lap, binned like the official ROS 2
                           driver (angle_min -pi, angle_max pi, one bin per point, ROS angles
-                          counter-clockwise with the driver's 180-degree turn); stamp = receive
-                          time of the lap's closing byte
-  /points                 sensor_msgs/msg/PointCloud2, every point of the lap: x y z (m), range (m),
-                          angle (the corrected device angle in degrees) and the G1 flag
+                          counter-clockwise with the driver's 180-degree turn), with REP-117's
+                          values: +Inf no return or beyond range_max, -Inf below range_min, NaN a
+                          bin no point fell in; no intensities (no unit here measures return
+                          strength); stamp = receive time of the lap's first byte (its first ray),
+                          scan_time = first byte to closing byte, time_increment = that / points;
+                          logged when the closing byte came
+  /points                 sensor_msgs/msg/PointCloud2, every return of the lap (a point without a
+                          return is left out, so is_dense holds): x y z (m), range (m), angle (the
+                          corrected device angle in degrees), and on a G1 interference_flag (uint8,
+                          2 specular reflection, 3 ambient light); stamped and logged as /scan
   /diagnostics            diagnostic_msgs/msg/DiagnosticArray once per recorded second: device,
                           health, set and measured scan rate, ranging frequency, error counters
   /ydscope/device_bytes   std_msgs/msg/UInt8MultiArray, the bytes exactly as recorded, both ways,

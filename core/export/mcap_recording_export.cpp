@@ -1,5 +1,6 @@
 #include "core/export/mcap_recording_export.h"
 
+#include <algorithm>
 #include <string_view>
 
 #include "core/export/ros_tf.h"
@@ -150,11 +151,13 @@ void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_
   writer_.write_metadata(lane.metadata_name, merged);
 }
 
-void McapRecordingExport::lap(const Lap& lap, Model model, std::uint64_t stamp_ns, double scan_time_s) {
-  encode_laser_scan(lap, frame_, range_limits(model), stamp_ns, scan_time_s, scan_scratch_, message_);
-  emit(lanes_.front(), RosTopic::Scan, stamp_ns, message_);
-  encode_point_cloud(lap, frame_, stamp_ns, message_);
-  emit(lanes_.front(), RosTopic::Points, stamp_ns, message_);
+void McapRecordingExport::lap(const Lap& lap, Model model, std::int64_t rx_to_epoch_ns) {
+  const ScanTimes times = scan_times(lap, rx_to_epoch_ns);
+  const auto logged = static_cast<std::uint64_t>(std::max<std::int64_t>(0, lap.last_rx_ns + rx_to_epoch_ns));
+  encode_laser_scan(lap, frame_, range_limits(model), times, scan_scratch_, message_);
+  emit(lanes_.front(), RosTopic::Scan, logged, message_);
+  encode_point_cloud(lap, frame_, profile_for(model).flag_bits > 0, times.stamp_ns, message_);
+  emit(lanes_.front(), RosTopic::Points, logged, message_);
 }
 
 bool McapRecordingExport::flush() { return writer_.flush_chunk(); }

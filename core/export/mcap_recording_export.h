@@ -63,10 +63,11 @@ class McapRecordingExport {
   void metadata(const RecordingMetadata& changes, std::int64_t t_ns, std::uint16_t source = 0);
   // No record of `source` came until `t_ns` (a live tap): see RosTopicEncoder::idle.
   void idle(std::int64_t t_ns, std::uint16_t source = 0);
-  // A lap decoded elsewhere (the app's shown laps): its /scan and /points, stamped `stamp_ns`
-  // (ns since the Unix epoch); `scan_time_s` is the time since the previous lap's close (0: unknown).
+  // A lap decoded elsewhere (the app's shown laps): its /scan and /points, stamped and timed
+  // from its own receive times as RosTopicEncoder does (scan_times), logged at its closing byte.
+  // `rx_to_epoch_ns` turns its receive times into ns since the Unix epoch.
   // One lidar's export only: source 0's channels.
-  void lap(const Lap& lap, Model model, std::uint64_t stamp_ns, double scan_time_s);
+  void lap(const Lap& lap, Model model, std::int64_t rx_to_epoch_ns);
   // Closes the open chunk so what was written so far is readable (call at least once a second live).
   bool flush();
   // Last laps and diagnostics, summary and footer. False plus error() if anything failed.

@@ -155,9 +155,9 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
   if (!window_first_close_ns_) window_first_close_ns_ = decoded.last_rx_ns;
   window_last_close_ns_ = decoded.last_rx_ns;
   ++window_laps_;
-  const double scan_time_s =
-      previous_close_ns_ ? static_cast<double>(decoded.last_rx_ns - *previous_close_ns_) / 1e9 : 0.0;
-  previous_close_ns_ = decoded.last_rx_ns;
+  // Stamped at the first ray (REP-117), logged when the lap was complete: at its closing byte.
+  const ScanTimes times = scan_times(decoded, static_cast<std::int64_t>(wall_start_ns_));
+  const std::uint64_t logged = log_time(decoded.last_rx_ns);
 
   const Lap* lap = &decoded;
   if (options_.filter.any()) {
@@ -165,11 +165,10 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
     filter_interference(filtered_, options_.filter);
     lap = &filtered_;
   }
-  const std::uint64_t stamp = log_time(decoded.last_rx_ns);
-  encode_laser_scan(*lap, options_.frame, range_limits(profile_->model), stamp, scan_time_s, scan_scratch_, message_);
-  emit(RosTopic::Scan, stamp, message_);
-  encode_point_cloud(*lap, options_.frame, stamp, message_);
-  emit(RosTopic::Points, stamp, message_);
+  encode_laser_scan(*lap, options_.frame, range_limits(profile_->model), times, scan_scratch_, message_);
+  emit(RosTopic::Scan, logged, message_);
+  encode_point_cloud(*lap, options_.frame, profile_->flag_bits > 0, times.stamp_ns, message_);
+  emit(RosTopic::Points, logged, message_);
 }
 
 void RosTopicEncoder::maybe_diagnostics(std::int64_t t_ns, MessageFn emit) {

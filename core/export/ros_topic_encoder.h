@@ -12,7 +12,8 @@
 // (std_msgs/msg/UInt8MultiArray), so the file can be decoded again exactly like a .ydrec.
 //
 // Times: a record at t_ns (since the recording started) is logged at start_wall_time + t_ns,
-// in ns since the Unix epoch; a lap at the time of its closing byte. Not thread-safe.
+// in ns since the Unix epoch; a lap's /scan and /points are logged at its closing byte and
+// stamped (header.stamp) at its first byte, the first ray's time (REP-117). Not thread-safe.
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -118,7 +119,6 @@ class RosTopicEncoder {
   std::uint64_t recent_checksum_errors_ = 0;
   std::uint64_t recent_crc_mismatches_ = 0;
   std::uint64_t laps_ = 0;
-  std::optional<std::int64_t> previous_close_ns_;
   // Lap closes of the current diagnostics window, for the measured scan rate.
   std::optional<std::int64_t> window_first_close_ns_;
   std::int64_t window_last_close_ns_ = 0;

@@ -1,13 +1,16 @@
 #pragma once
 // The points of a sensor_msgs/PointCloud2 as ydscope writes it (core/export/ros_encoding.h: one
-// row, point_step 24, x y z range angle as float32, then the flag byte), read with the tests'
-// own CDR reader, so a test can compare an MCAP's /points with the laps it should hold.
+// row of the lap's returns, x y z range angle as float32, then the interference_flag byte where
+// the unit has one), read with the tests' own CDR reader by the fields the message names, so a
+// test can compare an MCAP's /points with the laps it should hold.
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/protocol/lap.h"
 #include "export/cdr_test_reader.h"
 #include "export/mcap_test_reader.h"
 
@@ -16,32 +19,65 @@ namespace ydscope::test {
 struct CloudPoint {
   float angle_deg = 0;
   float range_m = 0;
-  std::uint8_t flag = 0;
+  std::uint8_t flag = 0;  // interference_flag; 0 where the cloud has no such field
   bool operator==(const CloudPoint&) const = default;
 };
 
-inline std::vector<CloudPoint> point_cloud_points(const std::vector<std::uint8_t>& cdr) {
-  constexpr std::size_t kStep = 24;
+struct CloudSeen {
+  std::uint64_t stamp_ns = 0;
+  std::vector<std::string> fields;
+  std::uint32_t point_step = 0;
+  bool is_dense = false;
+  std::vector<CloudPoint> points;
+};
+
+inline CloudSeen point_cloud(const std::vector<std::uint8_t>& cdr) {
   CdrReader r(cdr);
-  r.i32();  // stamp
-  r.u32();
+  CloudSeen cloud;
+  cloud.stamp_ns = static_cast<std::uint64_t>(r.i32()) * 1'000'000'000u;
+  cloud.stamp_ns += r.u32();
   r.str();  // frame_id
-  r.u32();  // height
+  if (r.u32() != 1) throw std::runtime_error("height is not 1");
   const std::uint32_t width = r.u32();
   const std::uint32_t fields = r.u32();
-  for (std::uint32_t i = 0; i < fields; ++i) r.str(), r.u32(), r.u8(), r.u32();
-  r.u8();  // is_bigendian
-  if (r.u32() != kStep) throw std::runtime_error("point_step is not 24");
-  r.u32();  // row_step
-  if (r.u32() != width * kStep) throw std::runtime_error("data is not width * point_step bytes");
-  const std::uint8_t* data = r.take(width * kStep);
-  std::vector<CloudPoint> points(width);
-  for (std::size_t i = 0; i < width; ++i) {
-    std::memcpy(&points[i].range_m, data + i * kStep + 12, 4);
-    std::memcpy(&points[i].angle_deg, data + i * kStep + 16, 4);
-    points[i].flag = data[i * kStep + 20];
+  std::optional<std::uint32_t> range_at, angle_at, flag_at;
+  for (std::uint32_t i = 0; i < fields; ++i) {
+    const std::string name = r.str();
+    const std::uint32_t offset = r.u32();
+    r.u8();
+    r.u32();
+    cloud.fields.push_back(name);
+    if (name == "range") range_at = offset;
+    if (name == "angle") angle_at = offset;
+    if (name == "interference_flag") flag_at = offset;
   }
-  return points;
+  if (!range_at || !angle_at) throw std::runtime_error("no range or angle field");
+  r.u8();  // is_bigendian
+  cloud.point_step = r.u32();
+  const std::uint32_t step = cloud.point_step;
+  r.u32();  // row_step
+  if (r.u32() != width * step) throw std::runtime_error("data is not width * point_step bytes");
+  const std::uint8_t* data = r.take(width * step);
+  cloud.is_dense = r.u8() != 0;
+  cloud.points.resize(width);
+  for (std::size_t i = 0; i < width; ++i) {
+    std::memcpy(&cloud.points[i].range_m, data + i * step + *range_at, 4);
+    std::memcpy(&cloud.points[i].angle_deg, data + i * step + *angle_at, 4);
+    if (flag_at) cloud.points[i].flag = data[i * step + *flag_at];
+  }
+  return cloud;
+}
+
+inline std::vector<CloudPoint> point_cloud_points(const std::vector<std::uint8_t>& cdr) {
+  return point_cloud(cdr).points;
+}
+
+// The points of a lap /points carries: its returns (a sample without one is left out).
+inline std::vector<LapPoint> returns_of(const std::vector<LapPoint>& points) {
+  std::vector<LapPoint> returns;
+  for (const LapPoint& p : points)
+    if (p.range_mm != 0.0f) returns.push_back(p);
+  return returns;
 }
 
 // The id of the channel on `topic`, or 0.

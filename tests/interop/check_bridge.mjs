@@ -1,7 +1,7 @@
 // ydscope-cli serve, checked with Foxglove's own WebSocket client (@foxglove/ws-protocol) and
 // ROS 2 deserialiser. Usage: node check_bridge.mjs ws://HOST:PORT
 // Connects, expects serverInfo and the advertised topics, subscribes to /scan and decodes 20
-// laps, sets scan_hz through parameters and sees the read-back and the lap rate follow, and checks
+// laps (REP-117's values, no intensities, stamped at the first ray), sets scan_hz through parameters and sees the read-back and the lap rate follow, and checks
 // that malformed and oversized client messages get a status message while the stream goes on.
 import wsProtocol from "@foxglove/ws-protocol";
 import WebSocket from "ws";
@@ -31,7 +31,7 @@ client.on("error", (e) => fail(`client error: ${e}`));
 client.on("advertise", (advertised) => (channels = advertised));
 client.on("message", ({ timestamp, data }) => {
   const scan = reader.readMessage(data);
-  scans.push({ at: Number(timestamp) / 1e9, scan });
+  scans.push({ at: Number(timestamp) / 1e9, timestamp: BigInt(timestamp), scan });
 });
 const parameterReplies = [];
 client.on("parameterValues", (p) => parameterReplies.push(p));
@@ -54,11 +54,23 @@ const scanChannel = channels.find((c) => c.topic === "/scan");
 reader = new MessageReader(parseMessageDefinition(scanChannel.schema, { ros2: true }));
 client.subscribe(scanChannel.id);
 await until("20 laps on /scan", () => scans.length >= 20);
-for (const { scan } of scans) {
+for (const { timestamp, scan } of scans) {
   if (scan.ranges.length < 2 || Math.abs(scan.angle_min + Math.PI) > 1e-6) fail("a /scan message is not a full turn");
-  if (scan.ranges.filter((r) => r > 0).length < scan.ranges.length / 4) fail("a /scan message has almost no returns");
+  // +Inf is REP-117's "no return", NaN an empty bin: neither is a return.
+  const returns = scan.ranges.filter((r) => Number.isFinite(r) && r > 0).length;
+  if (returns < scan.ranges.length / 4) fail("a /scan message has almost no returns");
+  if (scan.ranges.some((r) => r === 0)) fail("a /scan range is 0, which reads as a return at the sensor");
+  if (scan.intensities.length !== 0) fail(`a /scan message of the G6 has ${scan.intensities.length} intensities; it measures no return strength`);
+  if (!(scan.range_min > 0 && scan.range_max === 25)) fail(`/scan range ${scan.range_min}..${scan.range_max} m is not the G6's`);
+  // Stamped at the first ray, sent when the closing byte came: one lap's scan_time apart.
+  const stamp = BigInt(scan.header.stamp.sec) * 1000000000n + BigInt(scan.header.stamp.nanosec);
+  if (!(scan.scan_time > 0)) fail(`a /scan message's scan_time is ${scan.scan_time}`);
+  const sinceStamp = Number(timestamp - stamp) / 1e9;
+  if (Math.abs(sinceStamp - scan.scan_time) > 1e-6) fail(`a /scan stamp is ${sinceStamp} s before its message, scan_time ${scan.scan_time} s`);
+  if (Math.abs(scan.time_increment * scan.ranges.length - scan.scan_time) > 1e-6) fail(`time_increment ${scan.time_increment} does not divide scan_time ${scan.scan_time} among the samples`);
 }
-ok(`/scan: ${scans.length} laps decoded, ${scans[0].scan.ranges.length} bins each`);
+ok(`/scan: ${scans.length} laps decoded, ${scans[0].scan.ranges.length} bins each, no intensities, ` +
+  `stamped at the first ray (${scans[0].scan.scan_time.toFixed(4)} s before the closing byte)`);
 
 // Malformed, unknown and oversized messages: a status each, and the stream goes on.
 const before = statuses.length;

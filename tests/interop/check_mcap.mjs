@@ -4,8 +4,10 @@
 //   node check_mcap.mjs --cli YDSCOPE_CLI --mcap FILE --source REC.ydrec|RAW [--model MODEL] [--killed yes]
 //                       [--sources NAME,NAME...]
 // It checks that every message decodes, that the summary agrees with the messages, that /points
-// equals what `ydscope-cli decode SOURCE` prints, that /scan is /points binned as the official
-// ROS 2 driver bins, and that the raw channel decodes again to the same laps.
+// equals the returns of what `ydscope-cli decode SOURCE` prints (G1's flag as interference_flag),
+// that /scan is decode's laps binned as the official ROS 2 driver bins with REP-117's values
+// (+Inf no return, NaN an empty bin, no intensities) and stamped at each lap's first ray, and
+// that the raw channel decodes again to the same laps.
 // --killed yes: FILE is what a killed recorder left (no summary): a streaming reader must recover
 // its flushed chunks, and their laps must be the first laps of SOURCE (also cut off by the kill).
 // --sources: FILE holds several lidars; each one's /NAME/points, /NAME/scan and /NAME/diagnostics
@@ -149,25 +151,36 @@ if (killed) {
 }
 if (clouds.length !== expected.length) fail(`/points has ${clouds.length} messages, decode printed ${expected.length} laps`);
 if (scans.length !== expected.length) fail(`/scan has ${scans.length} messages, decode printed ${expected.length} laps`);
+// The lidar's model, as its /diagnostics name it: only a G1 flags interference.
+const diagnostics = byTopic.get(`${prefix}/diagnostics`) ?? [];
+if (diagnostics.length === 0) fail(`no ${prefix}/diagnostics messages`);
+const values = Object.fromEntries(diagnostics.at(-1).decoded.status[0].values.map((kv) => [kv.key, kv.value]));
+const flagged = (args.model ?? values.model) === "G1";
 const cloudPoints = (cloud) => {
   const view = new DataView(cloud.data.buffer, cloud.data.byteOffset, cloud.data.byteLength);
   const field = Object.fromEntries(cloud.fields.map((f) => [f.name, f.offset]));
+  const names = cloud.fields.map((f) => f.name).join(",");
+  const want = `x,y,z,range,angle${flagged ? ",interference_flag" : ""}`;
+  if (names !== want) fail(`/points fields are ${names}, expected ${want}`);
+  if (!cloud.is_dense) fail("/points is not dense");
   const points = [];
   for (let i = 0; i < cloud.width; i++) {
     const at = i * cloud.point_step;
     points.push({
       x: view.getFloat32(at + field.x, true), y: view.getFloat32(at + field.y, true),
       range: view.getFloat32(at + field.range, true), angle: view.getFloat32(at + field.angle, true),
-      flag: view.getUint8(at + field.flag),
+      flag: flagged ? view.getUint8(at + field.interference_flag) : 0,
     });
   }
   return points;
 };
-let pointCount = 0;
+let pointCount = 0, noReturns = 0;
 for (let i = 0; i < expected.length; i++) {
   const points = cloudPoints(clouds[i].decoded);
-  const want = expected[i].points;
-  if (points.length !== want.length) fail(`lap ${i}: /points has ${points.length} points, decode ${want.length}`);
+  // A sample without a return is no point: /points holds decode's returns, in order.
+  const want = expected[i].points.filter(([, rangeMm]) => rangeMm !== 0);
+  noReturns += expected[i].points.length - want.length;
+  if (points.length !== want.length) fail(`lap ${i}: /points has ${points.length} points, decode ${want.length} returns`);
   for (let j = 0; j < want.length; j++) {
     const [angle, rangeMm, flag] = want[j];
     const p = points[j];
@@ -175,42 +188,82 @@ for (let i = 0; i < expected.length; i++) {
     if (Math.abs(p.angle - angle) > 0.00005 + 1e-6 * Math.abs(angle)) fail(`lap ${i} point ${j}: angle ${p.angle} vs decode ${angle}`);
     if (Math.abs(p.range * 1000 - rangeMm) > 0.005 + 1e-6 * rangeMm) fail(`lap ${i} point ${j}: range ${p.range} m vs decode ${rangeMm} mm`);
     if (p.flag !== flag) fail(`lap ${i} point ${j}: flag ${p.flag} vs decode ${flag}`);
+    if (!(p.range > 0)) fail(`lap ${i} point ${j}: a point at the origin in a dense cloud`);
   }
   pointCount += want.length;
 }
-ok(`${prefix}/points: ${expected.length} laps, ${pointCount} points equal to ydscope-cli decode`);
+ok(`${prefix}/points: ${expected.length} laps, ${pointCount} points equal to the returns of ydscope-cli decode ` +
+  `(${noReturns} samples without a return left out), dense, ${flagged ? "with" : "without"} interference_flag`);
 
-// 4. /scan is /points binned as the official driver bins (YDLidar-SDK + ydlidar_ros2_driver):
+// 4. /scan is decode's laps binned as the official driver bins (YDLidar-SDK + ydlidar_ros2_driver):
 // ROS angle = normalize(2pi - (deg + pi)), increment 2pi/(n-1), bin ceil((angle + pi)/increment),
-// later points overwrite, ranges outside [range_min, range_max] are 0.
+// later points overwrite; where the driver writes 0, REP-117's values: +Inf no return or beyond
+// range_max, -Inf below range_min, NaN a bin no sample fell in. Returns are binned by /points'
+// exact angles; a sample without a return has only decode's 4 decimals, so a bin it may fall in
+// either side of is not compared (counted below).
 const rosAngle = (deg) => {
   let a = (deg * Math.PI) / 180 + Math.PI;
   a = 2 * Math.PI - a;
   a = ((a % (2 * Math.PI)) + 2 * Math.PI) % (2 * Math.PI);
   return a > Math.PI ? a - 2 * Math.PI : a;
 };
+const stampNs = (header) => BigInt(header.stamp.sec) * 1000000000n + BigInt(header.stamp.nanosec);
+let unsure = 0, infinite = 0, empty = 0;
 for (let i = 0; i < expected.length; i++) {
   const scan = scans[i].decoded;
-  const points = cloudPoints(clouds[i].decoded);
-  const bins = Math.max(points.length, 2);
+  const returns = cloudPoints(clouds[i].decoded);
+  const samples = expected[i].points;
+  const bins = Math.max(samples.length, 2);
   const increment = (2 * Math.PI) / (bins - 1);
-  const ranges = new Array(bins).fill(0);
-  for (const p of points) {
-    const index = Math.ceil((rosAngle(p.angle) + Math.PI) / increment);
-    if (index >= 0 && index < bins) ranges[index] = p.range >= scan.range_min && p.range <= scan.range_max ? p.range : 0;
+  const binOf = (deg) => Math.ceil((rosAngle(deg) + Math.PI) / increment);
+  const ranges = new Array(bins).fill(NaN);
+  const skip = new Set();
+  let next = 0;
+  for (const [angle, rangeMm] of samples) {
+    if (rangeMm === 0) {
+      const [low, high] = [binOf(angle - 0.00006), binOf(angle + 0.00006)];
+      if (low !== high) [low, high].forEach((b) => skip.add(b));
+      const index = binOf(angle);
+      if (index >= 0 && index < bins) ranges[index] = Infinity;
+      continue;
+    }
+    const p = returns[next++];
+    const index = binOf(p.angle);
+    if (index >= 0 && index < bins)
+      ranges[index] = p.range > scan.range_max ? Infinity : p.range < scan.range_min ? -Infinity : p.range;
   }
   if (Math.abs(scan.angle_min + Math.PI) > 1e-6 || Math.abs(scan.angle_max - Math.PI) > 1e-6) fail(`lap ${i}: /scan angle range is not -pi..pi`);
   if (Math.fround(increment) !== scan.angle_increment) fail(`lap ${i}: angle_increment ${scan.angle_increment}, expected ${increment}`);
   if (scan.ranges.length !== bins) fail(`lap ${i}: ${scan.ranges.length} bins, expected ${bins}`);
-  for (let b = 0; b < bins; b++) if (scan.ranges[b] !== ranges[b]) fail(`lap ${i} bin ${b}: /scan ${scan.ranges[b]}, binned /points ${ranges[b]}`);
-  if (scans[i].decoded.header.stamp.sec !== clouds[i].decoded.header.stamp.sec || scans[i].logTime !== clouds[i].logTime) fail(`lap ${i}: /scan and /points stamps differ`);
+  for (let b = 0; b < bins; b++) {
+    if (skip.has(b)) continue;
+    if (!Object.is(scan.ranges[b], Math.fround(ranges[b]))) fail(`lap ${i} bin ${b}: /scan ${scan.ranges[b]}, binned decode ${ranges[b]}`);
+    if (scan.ranges[b] === Infinity) infinite++;
+    if (Number.isNaN(scan.ranges[b])) empty++;
+  }
+  unsure += skip.size;
+  if (scan.ranges.some((r) => r === 0)) fail(`lap ${i}: a /scan range is 0, which reads as a return at the sensor`);
+  if (scan.intensities.length !== 0) fail(`lap ${i}: /scan has ${scan.intensities.length} intensities; no unit here measures return strength`);
+  // Stamped at the first ray: the lap's first receive time, one lap before its closing byte (the
+  // log time), and the previous lap's closing byte is the first byte of this lap's zero packet.
+  const stamp = stampNs(scan.header);
+  if (stamp !== stampNs(clouds[i].decoded.header) || scans[i].logTime !== clouds[i].logTime) fail(`lap ${i}: /scan and /points stamps differ`);
+  if (!(scan.scan_time > 0)) fail(`lap ${i}: scan_time ${scan.scan_time}, not the lap's duration`);
+  const sinceStamp = Number(scans[i].logTime - stamp) / 1e9;
+  if (Math.abs(sinceStamp - scan.scan_time) > 1e-6) fail(`lap ${i}: stamp is ${sinceStamp} s before the closing byte, scan_time says ${scan.scan_time}`);
+  if (Math.abs(scan.time_increment * samples.length - scan.scan_time) > 1e-6) fail(`lap ${i}: time_increment ${scan.time_increment} x ${samples.length} samples is not scan_time ${scan.scan_time}`);
+  if (i > 0 && !killed) {
+    const closeToDecode = Number(scans[i].logTime - scans[0].logTime) / 1e9 - (expected[i].t - expected[0].t);
+    if (Math.abs(closeToDecode) > 2e-6) fail(`lap ${i}: logged ${closeToDecode} s off decode's closing time`);
+    const gap = Number(stamp - scans[i - 1].logTime) / 1e9;
+    if (expected[i].index === expected[i - 1].index + 1 && (gap > 0 || gap < -0.1 * scan.scan_time))
+      fail(`lap ${i}: stamped ${gap} s from the previous lap's closing byte, not at the first byte of the zero packet that closed it`);
+  }
 }
-ok(`${prefix}/scan: ${scans.length} scans binned exactly as the official driver would`);
+ok(`${prefix}/scan: ${scans.length} scans binned as the official driver would, with ${infinite} +Inf (no return) and ` +
+  `${empty} NaN (empty) bins, ${unsure} bins too close to call; no intensities; stamped at each lap's first ray`);
 
 // 5. /diagnostics: decodes, names the device and its counters.
-const diagnostics = byTopic.get(`${prefix}/diagnostics`) ?? [];
-if (diagnostics.length === 0) fail(`no ${prefix}/diagnostics messages`);
-const values = Object.fromEntries(diagnostics.at(-1).decoded.status[0].values.map((kv) => [kv.key, kv.value]));
 for (const key of ["model", "health", "scan_hz_set", "scan_hz_measured", "ranging_khz", "checksum_errors", "laps"])
   if (!(key in values)) fail(`/diagnostics lacks ${key}`);
 if (!killed && Number(values.laps) !== expected.length) fail(`/diagnostics says ${values.laps} laps, decode ${expected.length}`);

@@ -57,11 +57,12 @@ std::vector<std::vector<CloudPoint>> clouds_in(const McapContents& contents) {
   return clouds;
 }
 
+// /points holds a lap's returns: a sample without one is no point.
 bool same_points(const std::vector<CloudPoint>& cloud, const Lap& lap) {
-  if (cloud.size() != lap.points.size()) return false;
+  const std::vector<LapPoint> returns = returns_of(lap.points);
+  if (cloud.size() != returns.size()) return false;
   for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (cloud[i].angle_deg != lap.points[i].angle_deg || cloud[i].range_m != lap.points[i].range_mm / 1000.0f)
-      return false;
+    if (cloud[i].angle_deg != returns[i].angle_deg || cloud[i].range_m != returns[i].range_mm / 1000.0f) return false;
   return true;
 }
 
@@ -106,13 +107,19 @@ TEST(AppMcap, RecordingBothFormatsGivesTheSameLapsInEach) {
   if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 
-// The lap indices of a CSV export's rows with the points of each.
+// The lap indices of a CSV export's rows with the returns of each (the rows whose range_mm is
+// not 0: what /points holds).
 std::map<std::uint64_t, std::size_t> csv_laps(const std::filesystem::path& path) {
   std::map<std::uint64_t, std::size_t> laps;
   std::ifstream in(path);
   std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) ++laps[std::stoull(line.substr(0, line.find(',')))];
+  std::getline(in, line);  // header: lap,t,angle_deg,range_mm,flag
+  while (std::getline(in, line)) {
+    std::size_t& returns = laps[std::stoull(line.substr(0, line.find(',')))];
+    std::size_t at = 0;
+    for (int comma = 0; comma < 3; ++comma) at = line.find(',', at) + 1;
+    returns += std::stod(line.substr(at)) != 0.0 ? 1 : 0;
+  }
   return laps;
 }
 
@@ -145,7 +152,7 @@ TEST(AppMcap, ExportOfTheShownLapsHoldsEveryFrozenLap) {
   const auto clouds = clouds_in(contents);
   ASSERT_EQ(clouds.size(), shown.size());
   std::size_t i = 0;
-  for (const auto& [lap, points] : shown) EXPECT_EQ(clouds[i++].size(), points) << "lap " << lap;
+  for (const auto& [lap, returns] : shown) EXPECT_EQ(clouds[i++].size(), returns) << "lap " << lap;
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
   if (!HasFailure()) std::filesystem::remove_all(dir);
 }

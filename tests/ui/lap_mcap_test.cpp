@@ -1,5 +1,6 @@
 // The MCAP export of the shown laps writes what is on screen: the laps the view holds, oldest
-// first, each as one /scan and one /points message stamped with its close time on the wall clock,
+// first, each as one /scan and one /points message logged at its close time on the wall clock
+// and stamped at its first ray's,
 // every point exactly; and the Record tab's names for .ydrec, .mcap or both.
 #include "ui/view/lap_mcap.h"
 #include "ui/view/whole_file.h"
@@ -66,6 +67,8 @@ TEST(LapMcap, WritesEveryShownLapOldestFirstWithEveryPoint) {
       EXPECT_FLOAT_EQ(cloud[i].range_m, shown.points[i].range_mm / 1000.0f);
     }
     cloud_times.push_back(m.log_time);
+    EXPECT_EQ(test::point_cloud(m.data).stamp_ns, static_cast<std::uint64_t>(to_wall + shown.first_rx_ns))
+        << "stamped at the lap's first ray, logged at its closing byte";
   }
   EXPECT_EQ(scans, 4u);
   EXPECT_EQ(cloud_times,

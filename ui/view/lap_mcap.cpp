@@ -19,17 +19,13 @@ ShownLapsMcap save_shown_laps_mcap(const LapHistory& history, std::size_t laps, 
   file->metadata(metadata, 0);
   result.laps = std::min(laps, history.size());
   Lap lap;
-  std::optional<std::int64_t> previous_close;
   for (std::size_t age = result.laps; age-- > 0;) {
     const HistoryLap& shown = history.at_age(age);
     lap.index = shown.index;
     lap.points = shown.points;
     lap.first_rx_ns = shown.first_rx_ns;
     lap.last_rx_ns = shown.last_rx_ns;
-    const double scan_time_s = previous_close ? static_cast<double>(shown.last_rx_ns - *previous_close) * 1e-9 : 0.0;
-    previous_close = shown.last_rx_ns;
-    file->lap(lap, model, static_cast<std::uint64_t>(std::max<std::int64_t>(0, shown.last_rx_ns + rx_to_wall_ns)),
-              scan_time_s);
+    file->lap(lap, model, rx_to_wall_ns);
   }
   if (!file->finish()) result.error = "writing " + path + " failed: " + file->error();
   result.messages = file->statistics().message_count;

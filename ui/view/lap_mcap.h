@@ -2,7 +2,8 @@
 // What the View panel's MCAP export writes: the laps on screen (frozen or live), never a newer
 // lap the view has not shown, oldest first, as /scan (sensor_msgs/LaserScan) and /points
 // (sensor_msgs/PointCloud2) in the same schemas `ydscope-cli export --mcap` uses, so Foxglove and
-// `ros2 bag` open it. Each lap is stamped with the wall-clock time its closing byte arrived.
+// `ros2 bag` open it. Each lap is logged at the wall-clock time its closing byte arrived and
+// stamped at its first byte's, as the recorded topics are (McapRecordingExport::lap).
 #include <cstddef>
 #include <cstdint>
 #include <string>
