@@ -99,9 +99,9 @@ int run_scan(std::span<const std::string> raw) {
   std::int64_t printed = 0;
   std::string failure;
   bool reader_gone = false;
-  const auto deliver = [&](const Lap& lap) {
+  const auto deliver = [&](const Lap& shown) {
     try {
-      printer.print(lap, health.lap_health(lap, g1_info));
+      printer.print(shown, health.lap_health(shown, g1_info));
       out.flush();  // a program reading the pipe gets each lap as it arrives
     } catch (const std::runtime_error&) {
       reader_gone = true;

@@ -242,7 +242,9 @@ TEST_P(RideOutALinkFault, APulledAndReturnedCableCostsOnlyTheGap) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Commands, RideOutALinkFault, ::testing::Values(Command::Scan, Command::Record),
-                         [](const auto& info) { return std::string(info.param == Command::Scan ? "scan" : "record"); });
+                         [](const auto& command) {
+                           return std::string(command.param == Command::Scan ? "scan" : "record");
+                         });
 
 }  // namespace
 }  // namespace ydscope
