@@ -18,23 +18,41 @@ std::string source_topic_name(std::span<const McapSource> sources, std::size_t i
   return (sources.empty() ? std::string() : "/" + sources[id].name) + std::string(topic);
 }
 
+namespace {
+
+// One offered QoS profile in rosbag2's YAML (rosbag2_storage/qos.cpp, the integer enums of its
+// metadata versions before 9, which every rosbag2 since Humble reads): history 1 keep-last and
+// 3 unknown, reliability 1 reliable, durability 1 transient-local and 2 volatile; the durations
+// are rmw's "infinite" as a recording shows it.
+std::string offered_qos_yaml(int history, int depth, int durability) {
+  return "- history: " + std::to_string(history) + "\n  depth: " + std::to_string(depth) +
+         "\n"
+         "  reliability: 1\n"
+         "  durability: " +
+         std::to_string(durability) +
+         "\n"
+         "  deadline:\n"
+         "    sec: 9223372036\n"
+         "    nsec: 854775807\n"
+         "  lifespan:\n"
+         "    sec: 9223372036\n"
+         "    nsec: 854775807\n"
+         "  liveliness: 1\n"
+         "  liveliness_lease_duration:\n"
+         "    sec: 9223372036\n"
+         "    nsec: 854775807\n"
+         "  avoid_ros_namespace_conventions: false";
+}
+
+}  // namespace
+
 const McapMetadataMap& ros2_channel_metadata() {
-  static const McapMetadataMap metadata{{"offered_qos_profiles",
-                                         "- history: 3\n"
-                                         "  depth: 0\n"
-                                         "  reliability: 1\n"
-                                         "  durability: 2\n"
-                                         "  deadline:\n"
-                                         "    sec: 9223372036\n"
-                                         "    nsec: 854775807\n"
-                                         "  lifespan:\n"
-                                         "    sec: 9223372036\n"
-                                         "    nsec: 854775807\n"
-                                         "  liveliness: 1\n"
-                                         "  liveliness_lease_duration:\n"
-                                         "    sec: 9223372036\n"
-                                         "    nsec: 854775807\n"
-                                         "  avoid_ros_namespace_conventions: false"}};
+  static const McapMetadataMap metadata{{"offered_qos_profiles", offered_qos_yaml(3, 0, 2)}};
+  return metadata;
+}
+
+const McapMetadataMap& ros2_latched_channel_metadata() {
+  static const McapMetadataMap metadata{{"offered_qos_profiles", offered_qos_yaml(1, 1, 1)}};
   return metadata;
 }
 
@@ -77,6 +95,7 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
     lane.metadata_name = std::string(kMcapRecordingMetadataName) + (sources_.empty() ? "" : "." + sources_[id].name);
     for (const RosTopicInfo& topic : ros_topics()) {
       const auto i = static_cast<std::size_t>(topic.topic);
+      if (!options.ros.link_bytes && is_link_bytes(topic.topic)) continue;  // not advertised at all
       lane.channel[i] = writer_.add_channel(schema_ids[i], source_topic_name(sources_, id, topic.name), "cdr",
                                             ros2_channel_metadata());
     }
@@ -86,14 +105,62 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
     const RosSchema& tf = tf_message_schema();
     const std::uint16_t schema =
         writer_.add_schema(tf.name, "ros2msg", {reinterpret_cast<const std::uint8_t*>(tf.text.data()), tf.text.size()});
-    tf_channel_ = writer_.add_channel(schema, "/tf_static", "cdr", ros2_channel_metadata());
+    // Latched, as tf2's static broadcaster offers it: a late subscriber on replay still gets it.
+    tf_channel_ = writer_.add_channel(schema, "/tf_static", "cdr", ros2_latched_channel_metadata());
   }
 }
 
 void McapRecordingExport::emit(Lane& lane, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
   const auto i = static_cast<std::size_t>(topic);
+  // The bridge gets it now; the file when it is due.
   if (observer_) observer_(static_cast<std::size_t>(&lane - lanes_.data()), topic, log_time, cdr);
-  writer_.write_message(lane.channel[i], lane.sequence[i]++, log_time, log_time, cdr);
+  if (lane.channel[i]) hold(lane.channel[i], lane.sequence[i]++, log_time, cdr);
+}
+
+namespace {
+bool later(const auto& a, const auto& b) {
+  return a.log_time != b.log_time ? a.log_time > b.log_time : a.order > b.order;
+}
+}  // namespace
+
+void McapRecordingExport::hold(std::uint16_t channel, std::uint32_t sequence, std::uint64_t log_time,
+                               std::span<const std::uint8_t> cdr) {
+  std::vector<std::uint8_t> buffer;
+  if (!spare_.empty()) {
+    buffer = std::move(spare_.back());
+    spare_.pop_back();
+  }
+  buffer.assign(cdr.begin(), cdr.end());
+  held_.push_back({log_time, arrivals_++, channel, sequence, std::move(buffer)});
+  std::push_heap(held_.begin(), held_.end(), [](const Held& a, const Held& b) { return later(a, b); });
+}
+
+void McapRecordingExport::write_held(std::uint64_t up_to) {
+  while (!held_.empty() && held_.front().log_time <= up_to) {
+    std::pop_heap(held_.begin(), held_.end(), [](const Held& a, const Held& b) { return later(a, b); });
+    Held& m = held_.back();
+    writer_.write_message(m.channel, m.sequence, m.log_time, m.log_time, m.cdr);
+    spare_.push_back(std::move(m.cdr));
+    held_.pop_back();
+  }
+}
+
+void McapRecordingExport::reached(Lane& lane, std::uint64_t log_time) {
+  lane.reached = std::max(lane.reached.value_or(0), log_time);
+  write_due();
+}
+
+void McapRecordingExport::write_due() {
+  std::uint64_t slowest = UINT64_MAX, newest = 0;
+  for (const Lane& lane : lanes_) {
+    if (!lane.reached) continue;
+    slowest = std::min(slowest, *lane.reached);
+    newest = std::max(newest, *lane.reached);
+  }
+  if (newest == 0) return;
+  const std::uint64_t by_all = slowest > kHoldBackNs ? slowest - kHoldBackNs : 0;
+  const std::uint64_t by_newest = newest > kHoldLimitNs ? newest - kHoldLimitNs : 0;
+  write_held(std::max(by_all, by_newest));
 }
 
 void McapRecordingExport::write_tf_static() {
@@ -107,7 +174,7 @@ void McapRecordingExport::write_tf_static() {
   const std::uint64_t stamp = start ? parse_iso8601_utc_ns(*start).value_or(0) : 0;
   std::vector<std::uint8_t> cdr;
   encode_tf_message(transforms, stamp, cdr);
-  writer_.write_message(tf_channel_, 0, stamp, stamp, cdr);
+  hold(tf_channel_, 0, stamp, cdr);
 }
 
 void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> payload, std::int64_t t_ns,
@@ -122,6 +189,7 @@ void McapRecordingExport::record(RecordType type, std::span<const std::uint8_t> 
                        [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
                          emit(lane, topic, log_time, cdr);
                        });
+  reached(lane, lane.encoder->log_time(t_ns));
 }
 
 void McapRecordingExport::idle(std::int64_t t_ns, std::uint16_t source) {
@@ -130,6 +198,7 @@ void McapRecordingExport::idle(std::int64_t t_ns, std::uint16_t source) {
   lane.encoder->idle(t_ns, [&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
     emit(lane, topic, log_time, cdr);
   });
+  reached(lane, lane.encoder->log_time(t_ns));  // its time passes even when nothing is sent
 }
 
 void McapRecordingExport::metadata(const RecordingMetadata& changes, std::int64_t, std::uint16_t source) {
@@ -158,9 +227,13 @@ void McapRecordingExport::lap(const Lap& lap, Model model, std::int64_t rx_to_ep
   emit(lanes_.front(), RosTopic::Scan, logged, message_);
   encode_point_cloud(lap, frame_, profile_for(model).flag_bits > 0, times.stamp_ns, message_);
   emit(lanes_.front(), RosTopic::Points, logged, message_);
+  reached(lanes_.front(), logged);
 }
 
-bool McapRecordingExport::flush() { return writer_.flush_chunk(); }
+bool McapRecordingExport::flush() {
+  write_due();
+  return writer_.flush_chunk();
+}
 
 bool McapRecordingExport::finish() {
   if (!finished_) {
@@ -170,6 +243,7 @@ bool McapRecordingExport::finish() {
       lane.encoder->finish([&](RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr) {
         emit(lane, topic, log_time, cdr);
       });
+    write_held(UINT64_MAX);
   }
   const bool written = writer_.close();
   const bool closed = !file_ || file_->close();

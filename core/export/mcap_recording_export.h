@@ -11,6 +11,12 @@
 // as frame_id, its metadata is the MCAP Metadata record "ydscope.recording.NAME", and /tf_static
 // (tf2_msgs/msg/TFMessage) holds every pose as a transform from the common frame "ydscope" to the
 // source's frame (core/export/ros_tf.h), written once before the first lap.
+//
+// Order: the file holds its messages in log-time order, as readers that stream a file expect
+// (a lap is logged at its closing byte, after the bytes that came since; and several live lidars
+// arrive from their taps in turns). Each message waits until every source's records have
+// reached kHoldBackNs past its log time (or the newest source kHoldLimitNs past it, so a silent
+// source holds nothing up for long); flush() and finish() write what is due.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -49,6 +55,9 @@ std::string source_topic_name(std::span<const McapSource> sources, std::size_t i
 
 class McapRecordingExport {
  public:
+  static constexpr std::uint64_t kHoldBackNs = 500'000'000;
+  static constexpr std::uint64_t kHoldLimitNs = 5'000'000'000;
+
   // Creates `path`; null plus one sentence in `error` when it cannot be created.
   // `sources`: empty for one lidar (topics as ever), else several, by source id.
   static std::unique_ptr<McapRecordingExport> create(const std::string& path, const McapExportOptions& options,
@@ -90,14 +99,28 @@ class McapRecordingExport {
   // One source's encoder and channels.
   struct Lane {
     std::unique_ptr<RosTopicEncoder> encoder;
-    std::uint16_t channel[kRosTopicCount] = {};
+    std::uint16_t channel[kRosTopicCount] = {};  // 0: not in the file (link bytes left out)
     std::uint32_t sequence[kRosTopicCount] = {};
     std::string metadata_name;
+    std::optional<std::uint64_t> reached;  // the log time its records have come up to
+  };
+  // A message not yet written; held_ is a min-heap on (log_time, order).
+  struct Held {
+    std::uint64_t log_time;
+    std::uint64_t order;
+    std::uint16_t channel;
+    std::uint32_t sequence;
+    std::vector<std::uint8_t> cdr;
   };
   McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options,
                       std::vector<McapSource> sources);
   void emit(Lane& lane, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
   void write_tf_static();
+  void hold(std::uint16_t channel, std::uint32_t sequence, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
+  // `lane`'s records came up to `log_time`: writes the messages that are now due.
+  void reached(Lane& lane, std::uint64_t log_time);
+  void write_due();
+  void write_held(std::uint64_t up_to);
 
   std::unique_ptr<McapFileSink> file_;  // when the export owns its file
   McapWriter writer_;
@@ -110,10 +133,16 @@ class McapRecordingExport {
   std::vector<std::uint8_t> message_;
   bool finished_ = false;
   Observer observer_;
+  std::vector<Held> held_;
+  std::vector<std::vector<std::uint8_t>> spare_;  // held buffers to reuse
+  std::uint64_t arrivals_ = 0;
 };
 
 // The channel metadata the ros2 profile requires: offered_qos_profiles as rosbag2 writes it
-// (keep-last, reliable, volatile), so `ros2 bag play` republishes with a matching QoS.
+// (reliable, volatile), so `ros2 bag play` republishes with a matching QoS.
 const McapMetadataMap& ros2_channel_metadata();
+// /tf_static's: reliable, transient-local, keep-last 1 (latched, as tf2's static broadcaster
+// offers it), so tf2's static listener gets the poses from `ros2 bag play` whenever it starts.
+const McapMetadataMap& ros2_latched_channel_metadata();
 
 }  // namespace ydscope

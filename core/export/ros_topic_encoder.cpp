@@ -212,8 +212,11 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
     return it->second;
   };
   const std::string model = profile_ ? std::string(profile_->name) : metadata_.model.value_or("unknown model");
-  report.name = "ydscope: " + model + " lidar";
-  report.hardware_id = metadata_.serial.value_or(metadata_.port.value_or(""));
+  // Keyed by what is known from the first report on and never changes: the lidar's name (its
+  // frame) and its port. A name from the model or serial would file the reports before the
+  // device info came under a lidar of their own ("unknown model lidar").
+  report.name = "ydscope: " + options_.frame.frame_id;
+  report.hardware_id = metadata_.port.value_or(metadata_.serial.value_or(""));
   const auto health = extra("health");
   LidarCondition condition;
   if (link_down()) {

@@ -35,6 +35,9 @@ namespace ydscope {
 
 enum class RosTopic : std::uint8_t { Scan, Points, Diagnostics, DeviceBytes, HostBytes };
 inline constexpr std::size_t kRosTopicCount = 5;
+inline constexpr bool is_link_bytes(RosTopic topic) {
+  return topic == RosTopic::DeviceBytes || topic == RosTopic::HostBytes;
+}
 
 struct RosTopicInfo {
   RosTopic topic;
@@ -83,6 +86,8 @@ class RosTopicEncoder {
 
   const RecordingMetadata& recording_metadata() const { return metadata_; }
   const RosFrameOptions& frame() const { return options_.frame; }
+  // A record at `t_ns` is logged at this time (ns since the Unix epoch).
+  std::uint64_t log_time(std::int64_t t_ns) const;
   // Empty before the model is known.
   std::optional<DecoderCounters> counters() const;
   std::uint64_t laps() const { return laps_; }
@@ -97,7 +102,6 @@ class RosTopicEncoder {
   void maybe_diagnostics(std::int64_t t_ns, MessageFn emit);
   void count_recent_errors(std::int64_t t_ns);
   bool link_down() const;
-  std::uint64_t log_time(std::int64_t t_ns) const;
 
   RosExportOptions options_;
   RecordingMetadata metadata_;

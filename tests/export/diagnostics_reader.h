@@ -11,7 +11,9 @@ namespace ydscope::test {
 
 struct DiagnosticSeen {
   std::uint8_t level = 0;
+  std::string name;
   std::string message;
+  std::string hardware_id;
 };
 
 inline DiagnosticSeen diagnostic_status(const std::vector<std::uint8_t>& cdr) {
@@ -22,8 +24,9 @@ inline DiagnosticSeen diagnostic_status(const std::vector<std::uint8_t>& cdr) {
   if (r.u32() != 1) throw std::runtime_error("not one diagnostic status");
   DiagnosticSeen status;
   status.level = r.u8();
-  r.str();  // name
+  status.name = r.str();
   status.message = r.str();
+  status.hardware_id = r.str();
   return status;
 }
 
