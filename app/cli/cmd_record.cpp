@@ -185,18 +185,21 @@ int run_record(std::span<const std::string> raw) {
 
   Session session(4);
   end_on_signals(record_on_signal);
-  // Recording starts right after the connect intent, so the start-up exchange is in the file too.
-  session.connect(config);
   // The MCAP side is written from the session's tap on a thread of its own.
   std::unique_ptr<LiveTopics> live;
   if (mcap_option) {
     LiveTopicsOptions options;
     options.topics = mcap_options;
     options.mcap_path = *mcap_option;
+    options.attach = false;  // tapped right after the connect intent, below
     std::string error;
     live = LiveTopics::start(session, std::move(options), error);
     if (!live) throw std::runtime_error(error);
   }
+  // Recording starts right after the connect intent, so the start-up exchange is in the files
+  // too: creating the MCAP file first would give the I/O thread time to send the first command.
+  session.connect(config);
+  if (live) live->attach_source(0);
   if (out_option) {
     const CommandResult start =
         run_and_wait([&](CommandCallback done) { session.start_recording(out, std::move(done)); });

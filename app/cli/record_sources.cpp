@@ -130,16 +130,10 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
     recording = SourcesRecording::create(*out, std::move(metadata), error);
     if (!recording) throw std::runtime_error(error);
   }
-  for (std::size_t id = 0; id < sources.size(); ++id) {
-    Source& source = sources[id];
+  for (Source& source : sources) {
     source.session = std::make_unique<Session>(4);
     source.health = std::make_unique<HealthWatch>("ydscope-cli record: " + source.spec.name);
     source.health->clear_line_first(tty);
-    // The tap right after the connect intent (both run in order on its I/O thread), so the
-    // start-up exchange is in the file too.
-    source.session->connect(source.spec.config);
-    if (recording)
-      wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
   }
   // The MCAP file is written from taps of its own, on a thread of its own (/NAME/scan ...).
   std::unique_ptr<LiveTopics> live;
@@ -150,8 +144,19 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
     LiveTopicsOptions options;
     options.topics = mcap_options_from(args);
     options.mcap_path = *mcap_path;
+    options.attach = false;  // each session's tap right after its connect, below
     live = LiveTopics::start(std::move(live_sources), std::move(options), error);
     if (!live) throw std::runtime_error(error);
+  }
+  for (std::size_t id = 0; id < sources.size(); ++id) {
+    Source& source = sources[id];
+    // Both taps right after the connect intent (they run in order on its I/O thread), so the
+    // start-up exchange is in the .ydrec and the MCAP file alike: a tap started after another
+    // lidar's connect missed this one's first command.
+    source.session->connect(source.spec.config);
+    if (live) live->attach_source(id);
+    if (recording)
+      wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
   }
 
   const auto start = Clock::now();

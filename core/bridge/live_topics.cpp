@@ -13,8 +13,6 @@ using Clock = std::chrono::steady_clock;
 // A live MCAP closes its chunk at least this often, so a killed writer loses under a second.
 constexpr auto kFlushEvery = std::chrono::milliseconds(900);
 constexpr auto kTakeWait = std::chrono::milliseconds(20);
-// /tf_static again this often: a client that subscribes late still learns every pose.
-constexpr auto kPosesEvery = std::chrono::seconds(1);
 
 std::uint64_t unix_now_ns() {
   return static_cast<std::uint64_t>(
@@ -49,7 +47,7 @@ std::unique_ptr<LiveTopics> LiveTopics::begin(std::unique_ptr<LiveTopics> live, 
         [p = live.get()](std::size_t source, RosTopic topic, std::uint64_t log_time,
                          std::span<const std::uint8_t> cdr) { p->publish(source, topic, log_time, cdr); });
   }
-  live->attach();
+  if (live->options_.attach) live->attach();
   live->thread_ = std::thread([p = live.get()] { p->run(); });
   return live;
 }
@@ -69,6 +67,19 @@ void LiveTopics::attach() {
     new_taps_ = true;
   }
   for (Lane& lane : lanes_) lane.source.session->start_tap(lane.tap);
+}
+
+void LiveTopics::attach_source(std::size_t id) {
+  Lane& lane = lanes_.at(id);
+  if (lane.tap) lane.source.session->stop_tap(lane.tap);
+  lane.tap = std::make_shared<RecordTap>();
+  {
+    std::lock_guard lock(mutex_);
+    next_taps_.resize(lanes_.size());
+    next_taps_[id] = lane.tap;
+    new_taps_ = true;
+  }
+  lane.source.session->start_tap(lane.tap);
 }
 
 void LiveTopics::detach() {
@@ -150,12 +161,23 @@ void LiveTopics::tell_clients(std::size_t source, Reading& reading) {
     if (!values.empty()) options_.server->broadcast_parameters(std::move(values));
   }
   if (s.state == reading.told_state) return;
+  const auto bad = [](LinkState state) {
+    return state == LinkState::Failed || state == LinkState::Reconnecting || state == LinkState::Stalled;
+  };
+  const bool was_bad = bad(reading.told_state);
   reading.told_state = s.state;
-  const bool bad = s.state == LinkState::Failed || s.state == LinkState::Reconnecting || s.state == LinkState::Stalled;
+  // Foxglove lists every status message under Problems, info too: only trouble is told, and
+  // withdrawn once the link is fine again. Routine states (connecting, scanning, a command in
+  // progress) are no problem and /diagnostics says how the lidar is.
+  const std::string id = "ydscope-link" + (several() ? "-" + lidar.about.name : std::string());
+  if (!bad(s.state)) {
+    if (was_bad) options_.server->remove_status(id);
+    return;
+  }
   const std::string who = several() ? lidar.about.name + ": lidar " : "lidar ";
   options_.server->broadcast_status(
-      bad ? foxglove::StatusLevel::Warning : foxglove::StatusLevel::Info,
-      who + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message));
+      foxglove::StatusLevel::Warning,
+      who + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message), id);
 }
 
 void LiveTopics::publish_poses() {
@@ -174,6 +196,7 @@ void LiveTopics::take_new_taps(std::vector<Reading>& readings, std::uint64_t& la
   if (!new_taps_) return;
   new_taps_ = false;
   for (std::size_t id = 0; id < readings.size(); ++id) {
+    if (readings[id].tap == next_taps_.at(id)) continue;  // attach_source() of another source
     readings[id].tap = next_taps_.at(id);
     readings[id].last_t_ns.reset();  // a new tap counts its own time
     if (mcap_) continue;
@@ -192,14 +215,16 @@ void LiveTopics::run() {
   std::uint64_t laps_before = 0;  // of the encoders before the current ones
   std::vector<TapRecord> records;
   auto last_flush = Clock::now();
-  auto last_poses = Clock::time_point{};
+  bool poses_told = false;
   for (;;) {
     take_new_taps(readings, laps_before);
     if (options_.server) {
       for (std::size_t id = 0; id < readings.size(); ++id) tell_clients(id, readings[id]);
-      if (several() && Clock::now() - last_poses >= kPosesEvery) {
+      // Once: /tf_static is latched (ros_topic_channels), so the server gives it to every client
+      // that subscribes, whenever it does.
+      if (several() && !poses_told) {
         publish_poses();
-        last_poses = Clock::now();
+        poses_told = true;
       }
     }
     bool reading_any = false;

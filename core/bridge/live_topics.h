@@ -8,8 +8,9 @@
 // One lidar's topics are named as ever (/scan ...). Several lidars' are /NAME/scan and so on,
 // with every pose on /tf_static (channel ids: core/bridge/ros_topic_channels.h).
 //
-// With a server it also tells the clients when a lidar's link goes down or comes back (a
-// status message) and the parameter values in force once it is back or when they change
+// With a server it also tells the clients when a lidar's link goes down (a status message of
+// level warning, withdrawn with removeStatus when it is back; routine states are not told: Foxglove
+// lists every status as a problem) and the parameter values in force once it is back or when they change
 // (SessionParameters::updates), and applies the filter the clients set through each
 // SessionParameters.
 //
@@ -38,6 +39,9 @@ struct LiveTopicsOptions {
   std::string mcap_path;                              // empty: no file
   foxglove::FoxgloveServer* server = nullptr;         // publish to its clients (must outlive this)
   foxglove::SessionParameters* parameters = nullptr;  // one lidar: the clients' filter choice
+  // False: start() taps no session; the caller calls attach_source(id) right after connecting
+  // each one, so its start-up exchange (the first A5 65) is in the topics too.
+  bool attach = true;
 };
 
 // One of several lidars.
@@ -69,6 +73,9 @@ class LiveTopics {
   // with new decoders, so a G1 after a G6 is decoded as a G1.
   void detach();
   void attach();
+  // Taps source `id`'s session afresh (each session runs what it is asked in order: asked right
+  // after connect(), the tap sees every byte of the connection).
+  void attach_source(std::size_t id);
   bool attached() const { return !lanes_.empty() && lanes_.front().tap != nullptr; }
 
   // Empty, or the sentence saying why writing the file failed (any thread).

@@ -1,6 +1,7 @@
 // ydscope-cli record with several --port, as a user runs it against three virtual lidars: one
 // recording holds them all, and replay and decode print every lidar's laps tagged with its name.
 // Mistakes in naming or placing the lidars are one sentence and exit status 2.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -11,6 +12,7 @@
 
 #include "core/record/recording_reader.h"
 #include "cli/cli_run_support.h"
+#include "export/cdr_test_reader.h"
 #include "export/mcap_test_reader.h"
 #include "support/raw_recording.h"
 #include "support/session_test_support.h"
@@ -131,6 +133,72 @@ TEST_F(SeveralLidarsCli, RecordsTwoLidarsLiveIntoOneMcapEachUnderItsName) {
   EXPECT_EQ(per_topic.count("/points"), 0u) << "no un-namespaced topic with several lidars";
   const std::size_t laps = per_topic["/front/points"] + per_topic["/back/points"];
   EXPECT_NE(record.out.find(": " + std::to_string(laps) + " laps, "), std::string::npos) << record.out;
+}
+
+// A live two-lidar MCAP decodes back like the .ydrec made beside it: each lidar's host bytes
+// (every command, the first A5 65 included) and device bytes are the file's, and the messages of
+// both lidars are in log-time order in the file.
+TEST_F(SeveralLidarsCli, ALiveTwoLidarMcapHoldsEveryByteOfTheRecordingInLogTimeOrder) {
+  test::SimOnPty g1(Model::G1);
+  test::SimOnPty g6(Model::G6);
+  const std::string out = path("two.ydrec");
+  const std::string mcap = path("two.mcap");
+  const auto record = run_cli_apart("record --port '" + g1.port() + "' --name front --port '" + g6.port() +
+                                    "' --name back --out '" + out + "' --mcap '" + mcap + "' --seconds 2");
+  ASSERT_EQ(record.status, 0) << record.out << record.err;
+
+  // The .ydrec's bytes, per lidar and direction.
+  std::map<std::string, std::vector<std::uint8_t>> recorded;
+  std::string error;
+  auto reader = RecordingReader::open(out, error);
+  ASSERT_TRUE(reader) << error;
+  RecordView view;
+  while (reader->next(view)) {
+    if (view.type == RecordType::Metadata) continue;
+    const std::string key = std::string(view.source == 0 ? "/front" : "/back") +
+                            (view.type == RecordType::HostToDevice ? "/ydscope/host_bytes" : "/ydscope/device_bytes");
+    recorded[key].insert(recorded[key].end(), view.payload.begin(), view.payload.end());
+  }
+
+  std::ifstream in(mcap, std::ios::binary);
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+  const test::McapContents contents = test::read_mcap(bytes);
+  ASSERT_TRUE(contents.complete);
+  std::map<std::string, std::vector<std::uint8_t>> carried;
+  std::uint64_t previous = 0;
+  std::size_t out_of_order = 0;
+  for (const test::ReadMessage& m : contents.messages) {
+    if (m.log_time < previous) ++out_of_order;
+    previous = std::max(previous, m.log_time);
+    const std::string& topic = contents.channels.at(m.channel_id).topic;
+    if (topic.find("/ydscope/") == std::string::npos) continue;
+    test::CdrReader r(m.data);
+    r.u32();  // layout.dim
+    r.u32();  // layout.data_offset
+    const std::uint32_t n = r.u32();
+    const std::uint8_t* data = r.take(n);
+    carried[topic].insert(carried[topic].end(), data, data + n);
+  }
+  EXPECT_EQ(out_of_order, 0u) << "messages written after a later one, in file order";
+  for (const char* topic : {"/front/ydscope/host_bytes", "/back/ydscope/host_bytes"}) {
+    SCOPED_TRACE(topic);
+    ASSERT_GE(carried[topic].size(), 2u);
+    // Every start-up begins with a stop: the first command of each lidar.
+    EXPECT_EQ(carried[topic][0], 0xA5);
+    EXPECT_EQ(carried[topic][1], 0x65);
+    EXPECT_EQ(carried[topic], recorded[topic]);
+  }
+  for (const char* topic : {"/front/ydscope/device_bytes", "/back/ydscope/device_bytes"}) {
+    SCOPED_TRACE(topic);
+    EXPECT_GT(carried[topic].size(), 1000u);
+    // Both start with the connection; the files' taps close one after the other, so one may
+    // hold a last read more than the other.
+    const std::size_t common = std::min(carried[topic].size(), recorded[topic].size());
+    EXPECT_GT(common, 1000u);
+    EXPECT_TRUE(std::equal(carried[topic].begin(), carried[topic].begin() + static_cast<std::ptrdiff_t>(common),
+                           recorded[topic].begin()))
+        << carried[topic].size() << " bytes vs " << recorded[topic].size();
+  }
 }
 
 TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
