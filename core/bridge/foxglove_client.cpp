@@ -146,6 +146,8 @@ void FoxgloveServer::Impl::Client::handle_text(std::string_view text) {
       } else {
         subscriptions_[sub] = channel;
         by_channel_[channel] = sub;
+        if (const auto latched = server_.latched_.find(channel); latched != server_.latched_.end())
+          send_message(channel, latched->second.first, latched->second.second);
       }
     }
   } else if (const auto* unsubscribe = std::get_if<Unsubscribe>(&*request)) {

@@ -138,6 +138,13 @@ std::string status_json(StatusLevel level, std::string_view message, std::string
   return out;
 }
 
+std::string remove_status_json(std::string_view id) {
+  std::string out = R"({"op":"removeStatus","statusIds":[)";
+  append_json_string(out, id);
+  out += "]}";
+  return out;
+}
+
 std::string parameter_values_json(const std::vector<Parameter>& parameters,
                                   const std::optional<std::string>& request_id) {
   std::string out = R"({"op":"parameterValues","parameters":[)";

@@ -37,6 +37,8 @@ struct Parameter {
 std::string server_info_json(std::string_view name, std::string_view session_id);
 std::string advertise_json(const std::vector<ChannelAd>& channels);
 std::string status_json(StatusLevel level, std::string_view message, std::string_view id = {});
+// Withdraws the status sent with `id` (Foxglove lists every status, even info, as a problem).
+std::string remove_status_json(std::string_view id);
 std::string parameter_values_json(const std::vector<Parameter>& parameters,
                                   const std::optional<std::string>& request_id);
 

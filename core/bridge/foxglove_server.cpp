@@ -87,6 +87,9 @@ void FoxgloveServer::publish(std::uint32_t channel_id, std::uint64_t log_time_ns
                              std::shared_ptr<const std::vector<std::uint8_t>> payload) {
   asio::post(impl_->io_, [impl = impl_.get(), channel_id, log_time_ns, payload = std::move(payload)] {
     for (const auto& client : impl->clients_) client->send_message(channel_id, log_time_ns, payload);
+    const auto channel = std::find_if(impl->channels_.begin(), impl->channels_.end(),
+                                      [channel_id](const ServerChannel& c) { return c.id == channel_id; });
+    if (channel != impl->channels_.end() && channel->latched) impl->latched_[channel_id] = {log_time_ns, payload};
   });
 }
 
@@ -96,8 +99,14 @@ void FoxgloveServer::broadcast_parameters(std::vector<Parameter> parameters) {
   });
 }
 
-void FoxgloveServer::broadcast_status(StatusLevel level, std::string message) {
-  asio::post(impl_->io_, [impl = impl_.get(), json = status_json(level, message, "ydscope-link")] {
+void FoxgloveServer::broadcast_status(StatusLevel level, std::string message, std::string id) {
+  asio::post(impl_->io_, [impl = impl_.get(), json = status_json(level, message, id)] {
+    for (const auto& client : impl->clients_) client->send_text(json);
+  });
+}
+
+void FoxgloveServer::remove_status(std::string id) {
+  asio::post(impl_->io_, [impl = impl_.get(), json = remove_status_json(id)] {
     for (const auto& client : impl->clients_) client->send_text(json);
   });
 }

@@ -55,6 +55,9 @@ struct ServerChannel {
   std::string topic;
   std::string schema_name;
   std::string schema;
+  // Latched, as a ROS transient-local topic (/tf_static): the newest message published on it
+  // goes to every client that subscribes later, the moment it subscribes.
+  bool latched = false;
 };
 
 struct ClientStats {
@@ -77,13 +80,16 @@ class FoxgloveServer {
   // Binds and starts serving. False plus one sentence in `error` (address in use, bad host...).
   bool start(std::string& error);
   std::uint16_t port() const;
-  // Sends the message to every client subscribed to `channel_id`. The payload is shared.
+  // Sends the message to every client subscribed to `channel_id`, and on a latched channel keeps
+  // it for those who subscribe later. The payload is shared.
   void publish(std::uint32_t channel_id, std::uint64_t log_time_ns,
                std::shared_ptr<const std::vector<std::uint8_t>> payload);
   // Tells the clients that subscribed to these parameters their new values.
   void broadcast_parameters(std::vector<Parameter> parameters);
-  // A status message to every client (e.g. the lidar's link went down).
-  void broadcast_status(StatusLevel level, std::string message);
+  // A status message to every client (e.g. the lidar's link went down), under `id`.
+  void broadcast_status(StatusLevel level, std::string message, std::string id = "ydscope-link");
+  // Withdraws the status sent under `id` from every client (the link is back).
+  void remove_status(std::string id);
   // Connected clients and their counters (waits for the server's thread).
   std::vector<ClientStats> clients() const;
   void stop();

@@ -46,6 +46,8 @@ class FoxgloveServer::Impl {
   asio::executor_work_guard<asio::io_context::executor_type> work_;
   tcp::acceptor acceptor_;
   std::set<std::shared_ptr<Client>> clients_;  // server thread only
+  // The newest message of each latched channel: (log time, payload). Server thread only.
+  std::map<std::uint32_t, std::pair<std::uint64_t, std::shared_ptr<const std::vector<std::uint8_t>>>> latched_;
   std::thread thread_;
   std::uint16_t port_ = 0;
   bool stopped_ = false;

@@ -32,7 +32,9 @@ inline std::vector<ServerChannel> ros_topic_channels(std::span<const McapSource>
                      std::string(t.schema->text)});
   if (!sources.empty()) {
     const RosSchema& tf = tf_message_schema();
-    out.push_back({tf_static_channel_id(sources.size()), "/tf_static", std::string(tf.name), std::string(tf.text)});
+    // Latched, as in ROS: a client that subscribes at any time gets every pose at once.
+    out.push_back(
+        {tf_static_channel_id(sources.size()), "/tf_static", std::string(tf.name), std::string(tf.text), true});
   }
   return out;
 }

@@ -53,6 +53,36 @@ TEST(SessionShare, FollowsANewSourceWithItsClientsStillConnected) {
   EXPECT_TRUE(share->stop());
 }
 
+// Foxglove lists every status message under Problems, info too: a lidar that connects, probes
+// and scans as it should gives the clients laps and no status at all.
+TEST(SessionShare, RoutineLinkStatesAreNoStatusMessages) {
+  SimOnPty g6(Model::G6);
+  Session session(4);
+  ShareOptions options;
+  options.server.port = 0;
+  std::string error;
+  auto share = SessionShare::start(session, options, error);
+  ASSERT_TRUE(share) << error;
+  WsTestClient client(share->port());
+  ASSERT_TRUE(client.subscribe(1, "/scan"));
+  session.connect(config_for(g6.port()));
+
+  std::vector<std::string> statuses;
+  std::size_t scans = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (scans < 5 && std::chrono::steady_clock::now() < deadline && !client.closed()) {
+    const auto message = client.read(std::chrono::seconds(2));
+    if (!message) continue;
+    if (!message->text)
+      ++scans;
+    else if (message->json.find(R"("op":"status")") != std::string::npos)
+      statuses.push_back(message->json);
+  }
+  EXPECT_GE(scans, 5u);
+  EXPECT_TRUE(statuses.empty()) << statuses.size() << " status messages, the first: " << statuses.front();
+  EXPECT_TRUE(share->stop());
+}
+
 TEST(SessionShare, APortInUseIsOneSentenceNamingTheOption) {
   Session session(4);
   ShareOptions first_options;
