@@ -11,7 +11,8 @@
 // --killed yes: FILE is what a killed recorder left (no summary): a streaming reader must recover
 // its flushed chunks, and their laps must be the first laps of SOURCE (also cut off by the kill).
 // --sources: FILE holds several lidars; each one's /NAME/points, /NAME/scan and /NAME/diagnostics
-// are checked against decode's laps of that source, and /tf_static must place every NAME.
+// are checked against decode's laps of that source, and /tf_static must place every NAME and be
+// offered transient-local. Every file's messages must be in log-time order in file order.
 // Prints one line per check; exits 1 on the first failure with what differed.
 import { execFileSync } from "node:child_process";
 import { mkdtempSync, openSync, readFileSync, readSync, fstatSync, writeFileSync } from "node:fs";
@@ -55,10 +56,12 @@ const readable = {
 const killed = args.killed === "yes";
 const readers = new Map();
 const byTopic = new Map();
+const qosByTopic = new Map();
 const addChannel = (id, channel, schema) => {
   if (channel.messageEncoding !== "cdr") fail(`${channel.topic} is ${channel.messageEncoding}, not cdr`);
   if (!schema || schema.encoding !== "ros2msg") fail(`${channel.topic} has no ros2msg schema`);
   if (!channel.metadata.get("offered_qos_profiles")) fail(`${channel.topic} lacks offered_qos_profiles (ros2 profile)`);
+  qosByTopic.set(channel.topic, channel.metadata.get("offered_qos_profiles"));
   const text = new TextDecoder().decode(schema.data);
   readers.set(id, { topic: channel.topic, type: schema.name, reader: new MessageReader(parseMessageDefinition(text, { ros2: true })) });
 };
@@ -101,14 +104,19 @@ ok(`indexed reader: ${total} messages on ${readers.size} channels in ${indexed.c
 // 2. Streaming reader over the whole file, CRCs validated: the same messages.
 const stream = new McapStreamReader({ decompressHandlers, validateCrcs: true });
 stream.append(readFileSync(args.mcap));
-let streamed = 0n, footer = false;
+let streamed = 0n, footer = false, latest = 0n;
 for (let record; (record = stream.nextRecord()); ) {
-  if (record.type === "Message") streamed += 1n;
+  if (record.type === "Message") {
+    streamed += 1n;
+    // In file order, as a reader streaming the file meets them: never back in log time.
+    if (record.logTime < latest) fail(`message ${streamed} (log time ${record.logTime}) is written after one at ${latest}`);
+    latest = record.logTime;
+  }
   if (record.type === "Footer") footer = true;
 }
 if (!stream.done() || !footer) fail("streaming reader did not reach the footer");
 if (streamed !== total) fail(`streaming reader found ${streamed} messages, the index ${total}`);
-ok(`streaming reader: ${streamed} messages, data/chunk/summary CRCs valid`);
+ok(`streaming reader: ${streamed} messages in log-time order, data/chunk/summary CRCs valid`);
 
 } else {
   // What a killed recorder left: read it as a stream, as far as it goes.
@@ -300,4 +308,9 @@ if (args.sources) {
   const parents = new Set(tf[0].decoded.transforms.map((t) => t.header.frame_id));
   if (parents.size !== 1) fail(`/tf_static transforms hang from ${[...parents]}, not one common frame`);
   ok(`/tf_static: ${children.length} transforms from ${[...parents][0]} to ${children.join(", ")}`);
+  // Latched, as rosbag2 records a transient-local topic, so tf2's static listener gets it on replay.
+  const qos = qosByTopic.get("/tf_static");
+  for (const line of ["- history: 1", "  depth: 1", "  reliability: 1", "  durability: 1"])
+    if (!qos.split("\n").includes(line)) fail(`/tf_static's offered_qos_profiles lacks '${line}':\n${qos}`);
+  ok("/tf_static offered reliable, transient-local, keep-last 1");
 }
