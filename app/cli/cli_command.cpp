@@ -1,7 +1,9 @@
 #include "app/cli/cli_command.h"
 
-#include <csignal>
+#include <pthread.h>
+
 #include <algorithm>
+#include <csignal>
 
 namespace ydscope::cli {
 
@@ -21,8 +23,33 @@ std::span<const CliCommand> registered_commands() {
 
 RegisterCliCommand::RegisterCliCommand(const CliCommand& command) { registry().push_back(command); }
 
-void end_on_signals(void (*handler)(int)) {
-  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, handler);
+void end_on_signals(void (*handler)(int), bool interrupt_writes) {
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction action {};
+    action.sa_handler = handler;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = interrupt_writes ? 0 : SA_RESTART;  // std::signal's restarting semantics otherwise
+    sigaction(signal, &action, nullptr);
+  }
+}
+
+namespace {
+sigset_t end_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, signal);
+  return set;
+}
+}  // namespace
+
+EndSignalsStayHere::EndSignalsStayHere() {
+  const sigset_t set = end_signals();
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+}
+
+EndSignalsStayHere::~EndSignalsStayHere() {
+  const sigset_t set = end_signals();
+  pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
 }
 
 }  // namespace ydscope::cli

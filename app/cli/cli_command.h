@@ -26,8 +26,20 @@ struct CliCommand {
 std::span<const CliCommand> registered_commands();
 
 // The signals that end a command as Ctrl-C does (so a device command stops the lidar and keeps
-// what it recorded): SIGINT, SIGTERM and SIGHUP, a closed terminal or ssh session.
-void end_on_signals(void (*handler)(int));
+// what it recorded): SIGINT, SIGTERM and SIGHUP, a closed terminal or ssh session. With
+// `interrupt_writes` a write the command is blocked in (a reader that stopped reading) fails with
+// EINTR instead of going on waiting, so the command can stop the lidar and end.
+void end_on_signals(void (*handler)(int), bool interrupt_writes = false);
+
+// While it lives, threads this one starts (a session's I/O thread) never take those signals, so
+// they reach this thread and interrupt what it is blocked in.
+class EndSignalsStayHere {
+ public:
+  EndSignalsStayHere();
+  ~EndSignalsStayHere();
+  EndSignalsStayHere(const EndSignalsStayHere&) = delete;
+  EndSignalsStayHere& operator=(const EndSignalsStayHere&) = delete;
+};
 
 struct RegisterCliCommand {
   explicit RegisterCliCommand(const CliCommand& command);

@@ -1,4 +1,7 @@
 // ydscope-cli scan: N laps from a live lidar, as decode prints them.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -80,8 +83,12 @@ int run_scan(std::span<const std::string> raw) {
   config.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
 
   LapBell bell;
+  // Ctrl-C or SIGTERM must reach this thread, to interrupt a write to a reader that stopped
+  // reading (a full pipe): blocked there, the loop would never stop the lidar.
+  std::optional<EndSignalsStayHere> signals_here(std::in_place);
   Session session(64, [&bell] { bell.ring(); });
-  end_on_signals(on_signal);
+  signals_here.reset();
+  end_on_signals(on_signal, /*interrupt_writes=*/true);
   // A reader that goes away (`scan ... | head -1`) must not kill us before the lidar is stopped:
   // the write fails instead, and the loop ends as for Ctrl-C.
   std::signal(SIGPIPE, SIG_IGN);
@@ -99,12 +106,15 @@ int run_scan(std::span<const std::string> raw) {
   std::int64_t printed = 0;
   std::string failure;
   bool reader_gone = false;
+  bool output_stuck = false;  // a signal broke a write its reader was not taking
   const auto deliver = [&](const Lap& shown) {
     try {
       printer.print(shown, health.lap_health(shown, g1_info));
       out.flush();  // a program reading the pipe gets each lap as it arrives
     } catch (const std::runtime_error&) {
-      reader_gone = true;
+      // A signal that broke a blocked write ends the run as Ctrl-C does; anything else is a
+      // reader that went away.
+      (interrupted.load() ? output_stuck : reader_gone) = true;
     }
   };
   while (printed < *laps_wanted && !interrupted.load() && !reader_gone) {
@@ -135,6 +145,13 @@ int run_scan(std::span<const std::string> raw) {
   if (reader_gone) {  // the lidar is stopped; end as a closed pipe ends any program, quietly
     std::signal(SIGPIPE, SIG_DFL);
     std::raise(SIGPIPE);
+  }
+  if (output_stuck) {
+    // The reader still takes nothing: no summary, and nothing left may block the exit either.
+    ::fcntl(STDOUT_FILENO, F_SETFL, ::fcntl(STDOUT_FILENO, F_GETFL) | O_NONBLOCK);
+    std::fputs("ydscope-cli scan: ended while its reader took no output; the lidar is stopped, the summary dropped\n",
+               stderr);
+    return kExitOk;
   }
   DecoderCounters summary;
   summary.bytes = end.counters.bytes_received;

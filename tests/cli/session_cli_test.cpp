@@ -1,8 +1,11 @@
 // ydscope-cli info, scan and set, run as a user would against the virtual lidar on a
 // pseudo-terminal: one JSON object (or N laps and a summary), and a sentence plus exit 1 on failure.
+#include <sys/ioctl.h>
+
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -131,6 +134,49 @@ TEST(SessionCli, AReaderThatGoesAwayStopsTheLidarFirst) {
     FAIL() << "ydscope-cli scan did not end within 10 s of its reader going away";
   }
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGPIPE) << "status " << status;
+  DeviceMode mode = DeviceMode::Scanning;
+  sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
+  EXPECT_EQ(mode, DeviceMode::Idle) << "the lidar was left scanning";
+}
+
+// `scan ... | slow-reader`: the reader stops reading and the pipe fills, so scan is blocked in a
+// write. SIGTERM must still end it with the lidar stopped (issue 26: "a full stdout"); the
+// signal breaks the write instead of waiting behind it.
+TEST(SessionCli, ASignalEndsAScanBlockedOnAFullPipeAndStopsTheLidar) {
+  SimOnPty sim(Model::G6);
+  const StartedCli cli = start_cli({"scan", "--port", sim.port(), "--laps", "100000", "--format", "csv"});
+  ASSERT_GE(cli.pid, 0);
+  const pid_t child = cli.pid;
+  // Until the pipe is full and scan's main thread sits in the write that cannot complete (where
+  // the kernel says; where it does not say, a pipe nearly at its 64 KiB).
+  const auto waiting_in = [child] {
+    std::ifstream wchan("/proc/" + std::to_string(child) + "/wchan");
+    std::string where;
+    std::getline(wchan, where);
+    return where;
+  };
+  const auto blocked = [&] {
+    const std::string where = waiting_in();
+    int queued = 0;
+    ioctl(cli.out_fd, FIONREAD, &queued);
+    return where == "anon_pipe_write" || ((where.empty() || where == "0") && queued > 60000);
+  };
+  for (int i = 0; i < 400 && !blocked(); ++i) std::this_thread::sleep_for(50ms);
+  ASSERT_TRUE(blocked()) << "scan never blocked on its full output (it waits in " << waiting_in() << ")";
+  kill(child, SIGTERM);
+  int status = 0;
+  bool ended = false;
+  for (int i = 0; i < 200 && !ended; ++i) {
+    ended = waitpid(child, &status, WNOHANG) == child;
+    if (!ended) std::this_thread::sleep_for(50ms);
+  }
+  close(cli.out_fd);
+  if (!ended) {
+    kill(child, SIGKILL);
+    waitpid(child, &status, 0);
+    FAIL() << "ydscope-cli scan did not end within 10 s of SIGTERM while its output was blocked";
+  }
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
   DeviceMode mode = DeviceMode::Scanning;
   sim.server().with_device([&](VirtualLidar& d) { mode = d.mode(); });
   EXPECT_EQ(mode, DeviceMode::Idle) << "the lidar was left scanning";
