@@ -22,14 +22,16 @@ inline std::uint32_t tf_static_channel_id(std::size_t sources) {
   return static_cast<std::uint32_t>(sources * kRosTopicCount + 1);
 }
 
-// `sources`: empty for one lidar, else several, by source id.
-inline std::vector<ServerChannel> ros_topic_channels(std::span<const McapSource> sources = {}) {
+// `sources`: empty for one lidar, else several, by source id. Without `link_bytes` (serve
+// --no-link-bytes) the link-byte topics are not advertised at all, as in an MCAP file.
+inline std::vector<ServerChannel> ros_topic_channels(std::span<const McapSource> sources = {}, bool link_bytes = true) {
   std::vector<ServerChannel> out;
   const std::size_t count = sources.empty() ? 1 : sources.size();
   for (std::size_t id = 0; id < count; ++id)
     for (const RosTopicInfo& t : ros_topics())
-      out.push_back({channel_id(t.topic, id), source_topic_name(sources, id, t.name), std::string(t.schema->name),
-                     std::string(t.schema->text)});
+      if (link_bytes || !is_link_bytes(t.topic))
+        out.push_back({channel_id(t.topic, id), source_topic_name(sources, id, t.name), std::string(t.schema->name),
+                       std::string(t.schema->text)});
   if (!sources.empty()) {
     const RosSchema& tf = tf_message_schema();
     // Latched, as in ROS: a client that subscribes at any time gets every pose at once.

@@ -8,8 +8,8 @@ std::unique_ptr<SessionShare> SessionShare::start(Session& session, ShareOptions
   std::unique_ptr<SessionShare> share(new SessionShare());
   share->parameters_.push_back(std::make_unique<foxglove::SessionParameters>(session));
   foxglove::SessionParameters* parameters = share->parameters_.back().get();
-  if (!share->serve(options, foxglove::ros_topic_channels(), parameters, {{&session, {}, parameters}}, error))
-    return nullptr;
+  const auto channels = foxglove::ros_topic_channels({}, options.topics.ros.link_bytes);
+  if (!share->serve(options, channels, parameters, {{&session, {}, parameters}}, error)) return nullptr;
   return share;
 }
 
@@ -24,8 +24,8 @@ std::unique_ptr<SessionShare> SessionShare::start(const std::vector<Source>& sou
     about.push_back(source.about);
     topics.push_back({source.session, source.about, share->parameters_.back().get()});
   }
-  if (!share->serve(options, foxglove::ros_topic_channels(about), &share->named_parameters_, std::move(topics), error))
-    return nullptr;
+  const auto channels = foxglove::ros_topic_channels(about, options.topics.ros.link_bytes);
+  if (!share->serve(options, channels, &share->named_parameters_, std::move(topics), error)) return nullptr;
   return share;
 }
 
