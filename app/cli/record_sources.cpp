@@ -150,13 +150,13 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   }
   for (std::size_t id = 0; id < sources.size(); ++id) {
     Source& source = sources[id];
-    // Both taps right after the connect intent (they run in order on its I/O thread), so the
-    // start-up exchange is in the .ydrec and the MCAP file alike: a tap started after another
-    // lidar's connect missed this one's first command.
-    source.session->connect(source.spec.config);
+    // Both taps before the connect intent (they run in order on its I/O thread), so the start-up
+    // exchange is in the .ydrec and the MCAP file alike: a tap posted after the connect missed
+    // the first A5 65 whenever the connect's first write came before it (seen under ASan).
     if (live) live->attach_source(id);
     if (recording)
       wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
+    source.session->connect(source.spec.config);
   }
 
   const auto start = Clock::now();

@@ -39,6 +39,7 @@ class CdrWriter {
   // A float32 sequence: the count, then the values (already 4-aligned after the count).
   void f32_sequence(std::span<const float> values) {
     u32(static_cast<std::uint32_t>(values.size()));
+    if (values.empty()) return;  // an empty span may hold no pointer, which memcpy must not get
     const std::size_t at = out_.size();
     out_.resize(at + 4 * values.size());
     std::memcpy(out_.data() + at, values.data(), 4 * values.size());  // host is little-endian (static_assert below)
