@@ -28,6 +28,7 @@ class LinkLossNotes {
   bool ever_scanned_ = false;
   bool down_said_ = false;  // its stop was said; its return will be
   std::uint64_t losses_ = 0;
+  std::uint64_t reconnects_seen_ = 0;  // the session's count at the last look
   std::chrono::steady_clock::time_point down_since_;
   std::string last_problem_;
 };
