@@ -61,33 +61,6 @@ struct Args {
   double replace_s = 120;
 };
 
-// Zero packets the virtual lidar wrote within [from_ns, to_ns): the laps it closed then.
-long laps_closed(const fs::path& zero_log, std::int64_t from_ns, std::int64_t to_ns) {
-  std::ifstream in(zero_log);
-  std::uint64_t index = 0;
-  std::int64_t ns = 0;
-  long laps = 0;
-  while (in >> index >> ns) laps += ns >= from_ns && ns < to_ns ? 1 : 0;
-  return laps;
-}
-
-// serve with its stdout on a pipe (for the banner) and its stderr in a file.
-pid_t spawn_serve(const std::vector<std::string>& argv, int stdout_fd, const fs::path& stderr_file) {
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    dup2(stdout_fd, STDOUT_FILENO);
-    const int err = open(stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (err >= 0) dup2(err, STDERR_FILENO);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execv(args[0], args.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 // The first line serve prints: "serving ws://127.0.0.1:PORT for LINK".
 unsigned read_serving_port(int fd) {
   std::string banner;
@@ -180,8 +153,8 @@ int main(int argc, char** argv) {
     fs::remove_all(dir);
     return 1;
   }
-  const pid_t serve =
-      spawn_serve({args.cli, "serve", "--port", link.string(), "--listen", "127.0.0.1:0"}, pipe_fds[1], serve_log);
+  const pid_t serve = bench::spawn({args.cli, "serve", "--port", link.string(), "--listen", "127.0.0.1:0"}, false,
+                                   pipe_fds[1], serve_log);
   close(pipe_fds[1]);
   const auto port = static_cast<std::uint16_t>(read_serving_port(pipe_fds[0]));
   close(pipe_fds[0]);
@@ -239,7 +212,7 @@ int main(int argc, char** argv) {
     const std::int64_t now_ns = bench::monotonic_now_ns();
     const long scans = reader.scans();
     const long kib = bench::resident_kib(serve);
-    const long closed = laps_closed(zero_log, row_from_ns, now_ns);
+    const long closed = bench::laps_closed(zero_log, row_from_ns, now_ns);
     total_closed += closed;
     samples_kib.push_back(kib);
     std::printf("%8.0f %10ld %8.1f%% %13ld %15ld %12ld %14ld\n", row * args.every_s, kib,

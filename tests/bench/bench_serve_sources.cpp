@@ -38,16 +38,6 @@ struct Args {
   double warmup = 3;
 };
 
-// Zero packets a virtual lidar wrote within [from_ns, to_ns): the laps it closed then.
-long laps_closed(const fs::path& zero_log, std::int64_t from_ns, std::int64_t to_ns) {
-  std::ifstream in(zero_log);
-  std::uint64_t index = 0;
-  std::int64_t ns = 0;
-  long laps = 0;
-  while (in >> index >> ns) laps += ns >= from_ns && ns < to_ns ? 1 : 0;
-  return laps;
-}
-
 // The first line serve prints: "serving ws://127.0.0.1:PORT for N lidars: ...".
 unsigned read_serving_port(int fd) {
   std::string banner;
@@ -143,7 +133,7 @@ int main(int argc, char** argv) {
   const double tick = static_cast<double>(sysconf(_SC_CLK_TCK));
   long sent = 0, got = 0, lost = 0;
   for (int i = 0; i < args.lidars; ++i) {
-    const long closed = laps_closed(dir / ("zero_" + std::to_string(i)), from_ns, to_ns);
+    const long closed = bench::laps_closed(dir / ("zero_" + std::to_string(i)), from_ns, to_ns);
     sent += closed;
     got += received[static_cast<std::size_t>(i)].load();
     // One lap either side of the window is timing, not a loss.

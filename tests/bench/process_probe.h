@@ -1,6 +1,7 @@
 #pragma once
 // Another process (or thread) as `top` sees it, for the benchmarks that measure from outside:
 // start it, read its CPU time and resident memory from /proc, stop it as a service manager would.
+#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -37,8 +38,10 @@ inline std::int64_t thread_cpu_ns(pthread_t thread) {
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
 }
 
-// quiet: its stdout and stderr go to /dev/null; stdout_fd >= 0: its stdout goes there instead.
-inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_fd = -1) {
+// quiet: its stdout and stderr go to /dev/null; stdout_fd >= 0: its stdout goes there instead;
+// a stderr_file: its stderr goes to that file.
+inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_fd = -1,
+                   const std::filesystem::path& stderr_file = {}) {
   std::fflush(nullptr);  // the child must not repeat our buffered output
   const pid_t pid = fork();
   if (pid == 0) {
@@ -47,6 +50,10 @@ inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_
       std::freopen("/dev/null", "w", stderr);
     }
     if (stdout_fd >= 0) dup2(stdout_fd, STDOUT_FILENO);
+    if (!stderr_file.empty()) {
+      const int err = open(stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (err >= 0) dup2(err, STDERR_FILENO);
+    }
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
@@ -54,6 +61,17 @@ inline pid_t spawn(const std::vector<std::string>& argv, bool quiet, int stdout_
     _exit(127);
   }
   return pid;
+}
+
+// Zero packets a virtual lidar wrote (its --zero-log: index and ns per line) within
+// [from_ns, to_ns): the laps it closed then.
+inline long laps_closed(const std::filesystem::path& zero_log, std::int64_t from_ns, std::int64_t to_ns) {
+  std::ifstream in(zero_log);
+  std::uint64_t index = 0;
+  std::int64_t ns = 0;
+  long laps = 0;
+  while (in >> index >> ns) laps += ns >= from_ns && ns < to_ns ? 1 : 0;
+  return laps;
 }
 
 // utime + stime in clock ticks from a /proc stat file (a process's or a thread's); -1 when gone.
