@@ -29,16 +29,18 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 }  // namespace
 
-CommonPoint Pose::to_common(const LapPoint& point) const {
+CommonPoint laser_point(const LapPoint& point) {
   const double a = radians(point.angle_deg);
   const double r = point.range_mm;
-  return to_common(CommonPoint{static_cast<float>(r * std::sin(a)), static_cast<float>(r * std::cos(a))});
+  return {static_cast<float>(-r * std::cos(a)), static_cast<float>(r * std::sin(a))};
 }
 
-CommonPoint Pose::to_common(CommonPoint own) const {
-  // The upside-down mount mirrors x (a -> 360 - a).
-  const double lx = upside_down ? -static_cast<double>(own.x_mm) : static_cast<double>(own.x_mm);
-  const double ly = own.y_mm;
+CommonPoint Pose::to_common(const LapPoint& point) const { return to_common(laser_point(point)); }
+
+CommonPoint Pose::to_common(CommonPoint laser) const {
+  // The upside-down mount rolls about the laser's x axis: y -> -y (a -> 360 - a).
+  const double lx = laser.x_mm;
+  const double ly = upside_down ? -static_cast<double>(laser.y_mm) : static_cast<double>(laser.y_mm);
   const double c = std::cos(radians(yaw_deg));
   const double s = std::sin(radians(yaw_deg));
   return {static_cast<float>(lx * c - ly * s + x_m * 1000.0), static_cast<float>(lx * s + ly * c + y_m * 1000.0)};
@@ -49,11 +51,13 @@ void Pose::to_common(const Lap& lap, std::vector<CommonPoint>& out) const {
   for (std::size_t i = 0; i < lap.points.size(); ++i) out[i] = to_common(lap.points[i]);
 }
 
-double Pose::common_angle_deg(double device_angle_deg) const {
-  // Clockwise angles: the counter-clockwise yaw subtracts.
-  const double mirrored = upside_down ? -device_angle_deg : device_angle_deg;
-  const double angle = std::fmod(mirrored - yaw_deg, 360.0);
-  return angle < 0 ? angle + 360.0 : angle;
+CommonPoint Pose::to_laser(CommonPoint common) const {
+  const double dx = static_cast<double>(common.x_mm) - x_m * 1000.0;
+  const double dy = static_cast<double>(common.y_mm) - y_m * 1000.0;
+  const double c = std::cos(radians(yaw_deg));
+  const double s = std::sin(radians(yaw_deg));
+  const double ly = -dx * s + dy * c;
+  return {static_cast<float>(dx * c + dy * s), static_cast<float>(upside_down ? -ly : ly)};
 }
 
 std::optional<Pose> parse_pose(std::string_view text, std::string& error) {

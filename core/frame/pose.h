@@ -3,15 +3,20 @@
 // it is mounted upside down. Plain C++ (no GL), so the app's view, the CLI, recordings and the ROS
 // export use one definition.
 //
-// Frames, as the app's polar view draws a single lidar: x to the right, y forward, millimetres,
-// seen from above. A lap point at device angle a (degrees, clockwise from the lidar's 0) and range
-// r lies at (r sin a, r cos a) in the lidar's own frame. The pose maps that frame into the common
-// one: first the mirror of an upside-down mount (the head then spins the other way as seen from
-// above: a becomes 360 - a), then a rotation by yaw (degrees, counter-clockwise positive as seen
-// from above, as ROS yaw turns), then the shift by (x, y).
+// Frames follow REP-103, seen from above: the common frame is the robot's (x forward, y left,
+// millimetres), and a lidar's own frame is its laser frame as the official ROS driver publishes it
+// (YDLidar-SDK with `reversion` and `inverted`, as the driver's G1, G6 and TG parameter files set):
+// the unit's 0 degrees points along -x, and its clockwise sweep seen from above runs through +y at
+// 90, +x at 180 and -y at 270. A lap point at device angle a and range r lies at (-r cos a, r sin a)
+// in the laser frame. The pose maps that frame into the common one: first the mirror of an
+// upside-down mount (a roll of 180 degrees about the laser's x axis: y becomes -y, a becomes
+// 360 - a), then a rotation by yaw (degrees, counter-clockwise positive), then the shift by (x, y).
+// A lidar at "0,0,0" faces the robot's forward with its 180 degrees.
 //
-// Text form (--pose, recordings' metadata): "x,y,yaw" or "x,y,yaw,flip", x and y in metres, yaw in
-// degrees; "flip" marks the upside-down mount. "0.2,-0.15,90" and "0,0,180,flip" are poses.
+// Text form (--pose, recordings' metadata, settings.ini): "x,y,yaw" or "x,y,yaw,flip", x and y in
+// metres, yaw in degrees; "flip" marks the upside-down mount. "0.2,-0.15,90" and "0,0,180,flip"
+// are poses. Poses written before REP-103 (x right, y forward) are converted on load:
+// core/frame/pose_convention.h.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,10 +29,14 @@ namespace ydscope {
 // Positions beyond this are a typo (a value in mm given as metres), not a robot.
 inline constexpr double kMaxPoseOffsetM = 1000.0;
 
+// A point in a frame seen from above, REP-103 axes: x forward, y left, millimetres.
 struct CommonPoint {
   float x_mm = 0;
   float y_mm = 0;
 };
+
+// A lap point in its lidar's laser frame (see above).
+CommonPoint laser_point(const LapPoint& point);
 
 struct Pose {
   double x_m = 0;
@@ -38,14 +47,12 @@ struct Pose {
   // A point of this lidar's lap in the common frame. A point without a return (range 0) lands on
   // the lidar's own position; callers that draw returns skip those first.
   CommonPoint to_common(const LapPoint& point) const;
-  // A point of the lidar's own frame (x = r sin a, y = r cos a, as a single lidar's view draws
-  // it) in the common frame: the view poses a cloud it has already laid out this way.
-  CommonPoint to_common(CommonPoint own) const;
+  // A point of the lidar's laser frame in the common frame.
+  CommonPoint to_common(CommonPoint laser) const;
   // Every point of `lap`, in order, into `out` (replaced; its capacity is reused).
   void to_common(const Lap& lap, std::vector<CommonPoint>& out) const;
-  // The device angle as the common frame's clockwise-from-forward angle, in [0, 360): what a
-  // polar view around the lidar's position, turned with the common frame, shows it at.
-  double common_angle_deg(double device_angle_deg) const;
+  // The inverse: a common-frame point in the lidar's laser frame.
+  CommonPoint to_laser(CommonPoint common) const;
 
   friend bool operator==(const Pose&, const Pose&) = default;
 };

@@ -7,6 +7,7 @@
 #include <ctime>
 #include <sstream>
 
+#include "core/frame/pose_convention.h"
 #include "core/protocol/model_profile.h"
 #include "core/text/quoted_text.h"
 
@@ -84,7 +85,10 @@ std::string RecordingMetadata::encode() const {
   if (software) line("software", *software);
   if (conventions) line("conventions", *conventions);
   if (name) line("name", *name);
-  if (pose) line("pose", format_pose(*pose));
+  if (pose) {
+    line("pose", format_pose(*pose));
+    line(kPoseConventionKey, kPoseConvention);
+  }
   for (const auto& [key, value] : extra) line(key, value);
   return out;
 }
@@ -94,6 +98,7 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
   const auto warn = [warnings](std::string message) {
     if (warnings) warnings->push_back(std::move(message));
   };
+  bool pose_in_rep103 = false;
   while (!text.empty()) {
     const auto newline = text.find('\n');
     std::string_view line = text.substr(0, newline);
@@ -150,9 +155,15 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
         metadata.pose = parsed;
       else
         warn("metadata pose ignored: " + why);
+    } else if (key == kPoseConventionKey) {
+      pose_in_rep103 = value == kPoseConvention;
     } else {
       metadata.extra[key] = value;
     }
+  }
+  if (metadata.pose && !pose_in_rep103) {
+    metadata.pose = pose_from_pre_rep103(*metadata.pose);
+    warn("metadata pose: " + std::string(kPreRep103Note));
   }
   return metadata;
 }

@@ -28,7 +28,9 @@ struct RecordingMetadata {
   // How the bytes were read when recorded (a UnitConventions id). Older recordings lack it:
   // ydscope then read every unit as its manual says.
   std::optional<std::string> conventions;
-  // Version 2, per source: what the user called it and where it sits in the common frame.
+  // Version 2, per source: what the user called it and where it sits in the common frame. Written
+  // with `pose_convention=rep103`; a pose without it is from before REP-103 and is converted on
+  // parse, with one warning (core/frame/pose_convention.h).
   std::optional<std::string> name;
   std::optional<Pose> pose;
   std::map<std::string, std::string> extra;  // keys this version does not know, kept verbatim

@@ -1,5 +1,4 @@
-// Several lidars in ROS terms: each pose as the /tf_static transform that carries the lidar's own
-// /points onto where the app draws them, and an export of two sources, each under its name.
+// Several lidars in ROS terms: an export of two sources, each under its name, with /tf_static.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,61 +16,6 @@
 
 namespace ydscope {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-// The ROS point a lidar at the origin pose puts at view point (x, y): the common frame is that
-// lidar's laser frame (ros_tf.h), found here through the angle rule alone.
-void view_to_ros(double x, double y, const RosFrameOptions& frame, double& rx, double& ry) {
-  const double r = std::hypot(x, y);
-  const double angle_deg = std::atan2(x, y) * 180.0 / kPi;  // clockwise from forward
-  const double a = ros_angle_rad(static_cast<float>(angle_deg < 0 ? angle_deg + 360.0 : angle_deg), frame);
-  rx = r * std::cos(a);
-  ry = r * std::sin(a);
-}
-
-// p' = q p q* + t, with the rotation written out as a matrix.
-void apply(const RosTransform& t, const double p[3], double out[3]) {
-  const double x = t.rotation[0], y = t.rotation[1], z = t.rotation[2], w = t.rotation[3];
-  const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                          {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                          {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
-  for (int r = 0; r < 3; ++r) out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + t.translation[r];
-}
-
-TEST(RosTf, EachTransformCarriesTheLidarsPointsWhereThePosePutsThem) {
-  const Pose poses[] = {{0, 0, 0, false}, {1.5, -0.5, 30, false}, {-0.2, 0.3, -120, true}, {0, 0, 180, true}};
-  RosFrameOptions frames[4];
-  frames[1].reversion = false;
-  frames[2].inverted = false;
-  frames[3].reversion = frames[3].inverted = false;
-  for (const RosFrameOptions& frame : frames) {
-    for (const Pose& pose : poses) {
-      const RosTransform t = ros_transform_of(pose, frame, kCommonFrameId, "front");
-      EXPECT_NEAR(std::hypot(std::hypot(t.rotation[0], t.rotation[1]), std::hypot(t.rotation[2], t.rotation[3])), 1.0,
-                  1e-12);
-      for (const float angle : {0.0f, 37.5f, 90.0f, 200.0f, 359.0f}) {
-        SCOPED_TRACE(format_pose(pose) + " at " + std::to_string(angle) + (frame.reversion ? " rev" : "") +
-                     (frame.inverted ? " inv" : ""));
-        const LapPoint point{angle, 2000.0f, PointFlag::None};
-        // /points of this lidar: its laser frame, metres.
-        const double a = ros_angle_rad(angle, frame);
-        const double laser[3] = {2.0 * std::cos(a), 2.0 * std::sin(a), 0};
-        double common[3];
-        apply(t, laser, common);
-        // Where the app draws the point, in the common frame's ROS axes.
-        const CommonPoint view = pose.to_common(point);
-        double rx = 0, ry = 0;
-        view_to_ros(view.x_mm / 1000.0, view.y_mm / 1000.0, frame, rx, ry);
-        EXPECT_NEAR(common[0], rx, 1e-5);
-        EXPECT_NEAR(common[1], ry, 1e-5);
-        EXPECT_NEAR(common[2], 0.0, 1e-9);
-      }
-    }
-  }
-  const RosTransform identity = ros_transform_of({}, {}, kCommonFrameId, "front");
-  EXPECT_NEAR(identity.rotation[3], 1.0, 1e-12);
-}
 
 // Two G6 laps' worth of bytes.
 std::vector<std::uint8_t> g6_bytes() {

@@ -171,5 +171,28 @@ TEST_F(RecordingSourcesTest, ADamagedPoseIsAWarningAndTheRestOfTheMetadataStays)
   EXPECT_NE(reader->metadata_warnings()[0].find("'0,0,ninety'"), std::string::npos) << reader->metadata_warnings()[0];
 }
 
+// A recording from before REP-103 (a pose, no pose_convention) keeps its lidars where they were:
+// converted once on reading, said once; one written now carries the marker and reads back as is.
+TEST_F(RecordingSourcesTest, APoseFromBeforeRep103IsConvertedWithOneWarning) {
+  test::RawRecording raw(2, 16, "model=G1\nname=front\npose=-1,0.5,0\n");
+  raw.add(RecordType::Metadata, 0, Bytes{'n', 'a', 'm', 'e', '=', 'b', '\n'}, 1);
+  raw.write(path("old-pose.ydrec"));
+  std::string error;
+  auto reader = RecordingReader::open(path("old-pose.ydrec"), error);
+  ASSERT_TRUE(reader) << error;
+  EXPECT_EQ(reader->source_metadata(0).pose, (Pose{0.5, 1, 180, false}));
+  ASSERT_EQ(reader->metadata_warnings().size(), 1u);
+  EXPECT_NE(reader->metadata_warnings()[0].find("REP-103"), std::string::npos) << reader->metadata_warnings()[0];
+
+  RecordingMetadata now;
+  now.pose = Pose{0.5, 1, 180, false};
+  const std::string text = now.encode();
+  EXPECT_NE(text.find("pose_convention=rep103\n"), std::string::npos) << text;
+  std::vector<std::string> warnings;
+  EXPECT_EQ(RecordingMetadata::parse(text, &warnings).pose, now.pose);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_TRUE(RecordingMetadata::parse(text).extra.empty());  // the marker is no unknown key
+}
+
 }  // namespace
 }  // namespace ydscope
