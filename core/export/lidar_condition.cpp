@@ -28,7 +28,10 @@ LidarVerdict judge_lidar(const LidarCondition& c) {
       warnings.push_back(std::to_string(c.recent_checksum_errors) + " checksum errors" + window);
     if (c.recent_crc_mismatches)
       warnings.push_back(std::to_string(c.recent_crc_mismatches) + " CRC8 mismatches" + window);
-    if (c.no_recent_lap) warnings.push_back("no complete lap in the last second");
+    if (c.settling)
+      warnings.push_back(*c.settling);
+    else if (c.no_recent_lap)
+      warnings.push_back("no complete lap in the last second");
   }
   LidarVerdict verdict;
   verdict.level = !errors.empty() ? 2 : !warnings.empty() ? 1 : 0;

@@ -19,6 +19,9 @@ struct LidarCondition {
   std::uint64_t recent_checksum_errors = 0;  // within kConditionWindowNs
   std::uint64_t recent_crc_mismatches = 0;
   bool no_recent_lap = false;  // bytes came, but no lap closed in the last report period
+  // The unit spins up or a command is in flight (command_watch.h): routine, a warning that says
+  // so, in place of "no complete lap".
+  std::optional<std::string> settling;
 };
 
 struct LidarVerdict {

@@ -124,6 +124,7 @@ void RosTopicEncoder::device_bytes(std::span<const std::uint8_t> bytes, std::int
 
 void RosTopicEncoder::host_bytes(std::span<const std::uint8_t> bytes, std::int64_t t_ns, MessageFn emit) {
   last_t_ns_ = t_ns;
+  commands_.host_bytes(bytes, t_ns);
   if (options_.link_bytes) {
     encode_link_bytes(bytes, message_);
     emit(RosTopic::HostBytes, log_time(t_ns), message_);
@@ -155,6 +156,7 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
   if (!window_first_close_ns_) window_first_close_ns_ = decoded.last_rx_ns;
   window_last_close_ns_ = decoded.last_rx_ns;
   ++window_laps_;
+  commands_.lap_closed();
   // Stamped at the first ray (REP-117), logged when the lap was complete: at its closing byte.
   const ScanTimes times = scan_times(decoded, static_cast<std::int64_t>(wall_start_ns_));
   const std::uint64_t logged = log_time(decoded.last_rx_ns);
@@ -227,6 +229,7 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
   condition.recent_checksum_errors = recent_checksum_errors_;
   condition.recent_crc_mismatches = recent_crc_mismatches_;
   condition.no_recent_lap = !measured_scan_hz_ && seen_bytes_ && profile_;
+  condition.settling = commands_.settling(last_t_ns_);
   const LidarVerdict verdict = judge_lidar(condition);
   report.level = verdict.level;
   report.message = verdict.message;

@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/export/command_watch.h"
 #include "core/export/ros_encoding.h"
 #include "core/export/ros_schemas.h"
 #include "core/protocol/function_ref.h"
@@ -129,6 +130,7 @@ class RosTopicEncoder {
   std::uint64_t window_laps_ = 0;
   std::optional<double> measured_scan_hz_;
   std::optional<double> reported_scan_hz_;  // G1 CT
+  CommandWatch commands_;                   // spinning up, a command in flight
   std::vector<std::pair<std::string, std::string>> extra_;
   Lap filtered_;
   std::vector<float> scan_scratch_;
