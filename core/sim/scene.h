@@ -3,6 +3,7 @@
 // interference flag. The same seed, angle and time always give the same answer.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "core/protocol/lap.h"
@@ -20,6 +21,13 @@ class Scene {
   // angle_deg: direction in the lidar frame, [0, 360); t_ns: time since the device powered on.
   virtual SceneReturn sample(double angle_deg, std::int64_t t_ns) const = 0;
   virtual std::string_view name() const = 0;
+  // The same scene seen from another spot of its floor (x_mm, y_mm in the scene's own coordinates,
+  // where `sample` stands at 0, 0), angle_deg as `sample` reads it. Only scenes built of walls and
+  // objects can be (room, booth); the demo's shapes are drawn round its origin: empty.
+  virtual std::optional<SceneReturn> sample_from(double x_mm, double y_mm, double angle_deg, std::int64_t t_ns) const {
+    (void)x_mm, (void)y_mm, (void)angle_deg, (void)t_ns;
+    return std::nullopt;
+  }
 };
 
 // "room", "demo" or "booth" (case-sensitive); nullptr for any other name.

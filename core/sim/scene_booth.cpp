@@ -46,9 +46,10 @@ Vec visitor(std::uint64_t seed, int i, double t) {
 
 }  // namespace
 
-SceneReturn BoothScene::sample(double angle_deg, std::int64_t t_ns) const {
+std::optional<SceneReturn> BoothScene::sample_from(double x_mm, double y_mm, double angle_deg,
+                                                   std::int64_t t_ns) const {
   const double t = static_cast<double>(t_ns) * 1e-9;
-  const Vec origin{0, 0};
+  const Vec origin{x_mm, y_mm};
   const Vec d = direction(angle_deg);
   double best = hit_segment(origin, d, kHallEndSouth.a, kHallEndSouth.b);
   for (const Segment& w : kWalls) best = std::min(best, hit_segment(origin, d, w.a, w.b));

@@ -80,7 +80,7 @@ Hit nearest(Vec origin, Vec dir, std::span<const Circle> people) {
 
 }  // namespace
 
-SceneReturn RoomScene::sample(double angle_deg, std::int64_t t_ns) const {
+std::optional<SceneReturn> RoomScene::sample_from(double x_mm, double y_mm, double angle_deg, std::int64_t t_ns) const {
   const double t = static_cast<double>(t_ns) * 1e-9;
   // Person A walks back and forth along y = 1.8 m; person B circles the left half of the room.
   const double phase = hash_unit(seed_, 1, 2) * 2 * kPi;
@@ -88,7 +88,7 @@ SceneReturn RoomScene::sample(double angle_deg, std::int64_t t_ns) const {
       {{500 + 2000 * std::cos(2 * kPi * t / 16.0 + phase), 1800}, kPersonRadius},
       {{-1500 + 800 * std::cos(2 * kPi * t / 22.0), 300 + 800 * std::sin(2 * kPi * t / 22.0)}, kPersonRadius},
   }};
-  const Vec origin{0, 0};
+  const Vec origin{x_mm, y_mm};
   const Vec dir = direction(angle_deg);
   const Hit hit = nearest(origin, dir, people);
   const auto angle_key = static_cast<std::int64_t>(std::llround(angle_deg * 1000.0));
@@ -112,7 +112,7 @@ SceneReturn RoomScene::sample(double angle_deg, std::int64_t t_ns) const {
     case Surface::Mirror: {
       // The laser bounces off the mirror (a vertical wall: x flips) and comes back from whatever it
       // hits behind; the sensor reports the whole path, a ghost behind the wall.
-      const Vec p{dir.x * hit.t, dir.y * hit.t};
+      const Vec p{origin.x + dir.x * hit.t, origin.y + dir.y * hit.t};
       const Hit second = nearest(p, {-dir.x, dir.y}, people);
       if (second.t == kNoHit || second.surface != Surface::Matte) return out;
       out.range_mm = hit.t + second.t;

@@ -8,6 +8,7 @@
 #include "core/protocol/scan_packet.h"
 #include "core/sim/line_pacer.h"
 #include "core/sim/scan_stream.h"
+#include "core/sim/posed_scene.h"
 #include "core/sim/scene.h"
 
 namespace ydscope {
@@ -33,6 +34,7 @@ VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns
       now_ns_(now_ns) {
   if (!scene_)
     throw std::invalid_argument("unknown scene '" + config.scene + "'; the scenes are " + std::string(scene_names()));
+  if (config.pose) scene_ = std::make_unique<PosedScene>(std::move(scene_), *config.pose);
   if (!(distance_scale_ > 0.0)) throw std::invalid_argument("the distance scale must be positive");
   stream_ = std::make_unique<ScanStream>(*profile_, *conventions_, distance_scale_, *scene_, now_ns,
                                          config.firmware_major, config.firmware_minor, config.seed);

@@ -36,6 +36,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/frame/pose.h"
 #include "core/protocol/lap.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/reply.h"
@@ -56,6 +57,8 @@ struct VirtualLidarConfig {
   Model model = Model::G6;
   std::string scene = "demo";  // "room", "demo" or "booth" (scene_names())
   std::uint64_t seed = 1;      // scene noise, moving objects, serial number, fault decisions
+  // Where it stands in the scene (core/sim/posed_scene.h); empty: at the scene's origin.
+  std::optional<Pose> pose;
   FaultConfig faults;
   // Field: what a real unit of this model and firmware emits (rates, scale, TG's byte before the
   // zero packet); Manual: the manual's literal reading (unit_conventions.h).
