@@ -9,6 +9,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/lap_bell.h"
 #include "app/cli/session_cli.h"
+#include "core/analysis/dropout_ring.h"
 #include "core/analysis/lap_timing.h"
 #include "core/analysis/text_format.h"
 #include "core/link/device_probe.h"
@@ -160,6 +161,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   o.target_mm = plan.target_mm;
 
   LapTimingAccumulator timing;
+  DropoutRing dropouts;
   std::optional<SectorAccumulator> sector;
   if (plan.sector) sector.emplace(*plan.sector);
   record.sector_region = plan.sector;
@@ -177,6 +179,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
     while (session.laps().try_pop(lap)) {
       any = true;
       timing.add(lap);
+      dropouts.add_lap(lap);
       if (sector) sector->add(lap);
       ct_health.add(lap);
       if (lap.scan_hz && lap.ct_info_trusted()) {
@@ -208,6 +211,7 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   const SessionSnapshot after = session.snapshot();
 
   o.timing = timing.statistics();
+  o.blocked_sectors = dropouts.blocked();
   if (reported_laps > 0) o.reported_scan_hz = reported_hz_sum / static_cast<double>(reported_laps);
   o.link.checksum_errors = after.counters.checksum_errors - before.counters.checksum_errors;
   o.link.resync_bytes = after.counters.resync_bytes - before.counters.resync_bytes;

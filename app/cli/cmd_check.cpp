@@ -35,6 +35,9 @@ PASS or FAIL:
   sample rate    samples per second against the ranging frequency in use
   link           checksum errors, resync bytes, G1 CRC8 failures, queue drops, lost samples
   valid returns  the share of points with a return and no interference flag
+  blocked sectors  no sector of 4° or more stays without returns (95 % of its samples over the
+                 last 3 s) while the rest of the turn sees them; a failure says "blocked 40°–75°
+                 for 12 s"
   and with --sector: the valid share in the sector; with --target-mm too: the range bias and noise
   (std-dev) of the sector's points against a flat target square to the sector's middle.
 
@@ -85,7 +88,7 @@ json: {"type":"check","verdict":"pass"|"fail"|"incomplete","failed":[ids],"inter
   "points","lost_samples"},"sector":null|{"name","points","valid","range_mm":{...},
   "flat_distance_mm":{"count","mean","median","stddev","min","max"}}}
   Criterion ids: identity, health, scan_rate, scan_jitter, sample_rate, link, valid_returns,
-  sector_valid, range_bias, range_noise.
+  blockage, sector_valid, range_bias, range_noise.
 
 exit status: 0 every criterion passed; 3 at least one failed; 1 the device or the link failed (a
 sentence on stderr; when it failed mid-run the verdict on what was measured is still printed);

@@ -10,6 +10,7 @@
 #include "app/cli/session_cli.h"
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
+#include "core/analysis/sector.h"
 #include "core/protocol/model_profile.h"
 #include "core/sim/delivery.h"
 #include "core/sim/host_compat.h"
@@ -83,6 +84,8 @@ Faults (all off by default; every injected fault is counted):
   --scan-offset-hz F     a motor that misses its set rate: it turns F Hz faster (or, negative,
                          slower) than set (-5..5); G1's CT reports the rate it really turns at.
   --scan-wobble-hz F     a motor that wanders: up to F Hz about its rate, over 2 s (0..5).
+  --block-sector A:B     something in front of the window: directions from A to B degrees
+                         (clockwise, may cross 0, e.g. 40:75 or 350:10) give no return.
   --unplug-after-ms N    disconnect after N ms: the pseudo-terminal and LINK disappear (TCP: the
                          host is dropped and the port closed); the device loses power.
   --replug-after-ms N    come back N ms after the unplug with a new pseudo-terminal (LINK is
@@ -148,7 +151,8 @@ int run_sim(std::span<const std::string> raw) {
                         "firmware",
                         "delivery",
                         "scan-offset-hz",
-                        "scan-wobble-hz"},
+                        "scan-wobble-hz",
+                        "block-sector"},
                        {"verbose", "health-quirk"});
 
   const std::string model_name = args.required("model");
@@ -194,6 +198,13 @@ int run_sim(std::span<const std::string> raw) {
   faults.junk_before_reply = static_cast<std::uint32_t>(args.integer("junk", 0, 4096).value_or(0));
   faults.scan_hz_offset = args.number("scan-offset-hz", -5.0, 5.0).value_or(0.0);
   faults.scan_hz_wobble = args.number("scan-wobble-hz", 0.0, 5.0).value_or(0.0);
+  if (const auto block = args.value("block-sector")) {
+    std::string error;
+    const auto sector = parse_sector(*block, error);
+    if (!sector) throw UsageError("--block-sector: " + error);
+    faults.blocked_from_deg = sector->from_deg;
+    faults.blocked_width_deg = sector->width_deg();
+  }
   options.unplug_after = std::chrono::milliseconds(args.integer("unplug-after-ms", 0, 86'400'000).value_or(0));
   options.replug_after = std::chrono::milliseconds(args.integer("replug-after-ms", 0, 86'400'000).value_or(0));
   if (options.replug_after.count() > 0 && options.unplug_after.count() == 0)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/analysis/blockage_criterion.h"
 #include "core/analysis/text_format.h"
 
 namespace ydscope {
@@ -192,6 +193,7 @@ std::vector<CriterionResult> evaluate_acceptance(const CheckObservations& o, con
   out.push_back(sample_rate(o, l));
   out.push_back(link(o, l));
   out.push_back(share("valid_returns", "valid returns", o.valid_points, o.points, l.min_valid_share));
+  out.push_back(blockage_criterion(o.blocked_sectors, DropoutOptions{}));
   if (o.sector) {
     out.push_back(share("sector_valid", "valid returns in " + o.sector_name.value_or("the sector"), o.sector->valid,
                         o.sector->points, l.min_sector_valid_share));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/analysis/acceptance_limits.h"
+#include "core/analysis/dropout_ring.h"
 #include "core/analysis/lap_timing.h"
 #include "core/analysis/sector_statistics.h"
 #include "core/protocol/model_profile.h"
@@ -54,13 +55,15 @@ struct CheckObservations {
   std::optional<SectorStatistics> sector;
   std::optional<std::string> sector_name;  // "260:280"
   std::optional<double> target_mm;
+  // Sectors empty at the end of the run while the rest of the turn saw returns (dropout_ring.h).
+  std::vector<BlockedSector> blocked_sectors;
 };
 
 enum class Verdict : std::uint8_t { Pass, Fail };
 
 struct CriterionResult {
   std::string id;        // stable, for scripts: identity, health, scan_rate, scan_jitter, sample_rate,
-                         // link, valid_returns, sector_valid, range_bias, range_noise
+                         // link, valid_returns, blockage, sector_valid, range_bias, range_noise
   std::string title;     // "scan rate"
   std::string measured;  // "8.01 Hz (mean of 80 laps)"
   std::string limit;     // "8.00 Hz ± 2.0 %"

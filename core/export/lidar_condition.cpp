@@ -32,6 +32,7 @@ LidarVerdict judge_lidar(const LidarCondition& c) {
       warnings.push_back(*c.settling);
     else if (c.no_recent_lap)
       warnings.push_back("no complete lap in the last second");
+    warnings.insert(warnings.end(), c.blocked_sectors.begin(), c.blocked_sectors.end());
   }
   LidarVerdict verdict;
   verdict.level = !errors.empty() ? 2 : !warnings.empty() ? 1 : 0;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ydscope {
 
@@ -22,6 +23,9 @@ struct LidarCondition {
   // The unit spins up or a command is in flight (command_watch.h): routine, a warning that says
   // so, in place of "no complete lap".
   std::optional<std::string> settling;
+  // Sectors empty while the rest of the turn sees returns, each "blocked 40°–75° for 12 s"
+  // (core/analysis/dropout_ring.h).
+  std::vector<std::string> blocked_sectors;
 };
 
 struct LidarVerdict {

@@ -157,6 +157,7 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
   window_last_close_ns_ = decoded.last_rx_ns;
   ++window_laps_;
   commands_.lap_closed();
+  dropouts_.add_lap(decoded);
   // Stamped at the first ray (REP-117), logged when the lap was complete: at its closing byte.
   const ScanTimes times = scan_times(decoded, static_cast<std::int64_t>(wall_start_ns_));
   const std::uint64_t logged = log_time(decoded.last_rx_ns);
@@ -230,6 +231,8 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
   condition.recent_crc_mismatches = recent_crc_mismatches_;
   condition.no_recent_lap = !measured_scan_hz_ && seen_bytes_ && profile_;
   condition.settling = commands_.settling(last_t_ns_);
+  const std::vector<BlockedSector> blocked = dropouts_.blocked();
+  for (const BlockedSector& sector : blocked) condition.blocked_sectors.push_back(describe_blocked_sector(sector));
   const LidarVerdict verdict = judge_lidar(condition);
   report.level = verdict.level;
   report.message = verdict.message;
@@ -252,6 +255,7 @@ DiagnosticReport RosTopicEncoder::diagnostics() const {
     v.emplace_back("conventions", std::string(decoder_->conventions().id));
   }
   v.emplace_back("laps", std::to_string(laps_));
+  v.emplace_back("blocked_sectors", blocked.empty() ? "none" : describe_blocked_sectors(blocked));
   if (c) {
     v.emplace_back("packets", std::to_string(c->packets));
     v.emplace_back("checksum_errors", std::to_string(c->checksum_errors));

@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/analysis/dropout_ring.h"
 #include "core/export/command_watch.h"
 #include "core/export/ros_encoding.h"
 #include "core/export/ros_schemas.h"
@@ -131,6 +132,7 @@ class RosTopicEncoder {
   std::optional<double> measured_scan_hz_;
   std::optional<double> reported_scan_hz_;  // G1 CT
   CommandWatch commands_;                   // spinning up, a command in flight
+  DropoutRing dropouts_;                    // blocked sectors, for the level and the message
   std::vector<std::pair<std::string, std::string>> extra_;
   Lap filtered_;
   std::vector<float> scan_scratch_;

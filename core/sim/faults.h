@@ -29,6 +29,11 @@ struct FaultConfig {
   // unaffected, so a lap holds ranging Hz / actual rate samples; G1's CT reports the actual rate.
   double scan_hz_offset = 0.0;
   double scan_hz_wobble = 0.0;
+  // Something in front of the window (a bracket, a cable, dirt): samples whose direction lies in
+  // the sector from blocked_from_deg clockwise over blocked_width_deg come back as no return.
+  // Width 0 = off.
+  double blocked_from_deg = 0.0;
+  double blocked_width_deg = 0.0;
 };
 
 inline constexpr std::int64_t kScanWobblePeriodNs = 2'000'000'000;

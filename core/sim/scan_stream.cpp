@@ -57,6 +57,10 @@ void ScanStream::begin_lap_at_motor_rate() {
   lap_period_ns_ = 1e9 / motor_hz_;
 }
 
+bool ScanStream::blocked(double direction_deg) const {
+  return blocked_width_deg_ > 0.0 && normalize_degrees(direction_deg - blocked_from_deg_) < blocked_width_deg_;
+}
+
 std::int64_t ScanStream::sample_time_ns(std::uint32_t sample) const {
   return lap_start_ns_ + static_cast<std::int64_t>(std::llround(lap_period_ns_ * sample / samples_per_lap_));
 }
@@ -131,9 +135,12 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
     double sampled_at = 0.0;
     // The direction the host will compute for a range r is level1 + correction(r); find theta with
     // theta == level1 + correction(range at theta). Returns theta - that (0 at a solution).
+    // A blocked direction is decided by where the window points (the first-level angle): the
+    // obstruction sits on the unit, not out in the scene.
+    const bool obstructed = blocked(level1);
     const auto residual = [&](double theta) {
       sampled_at = normalize_degrees(theta);
-      const SceneReturn ret = scene_->sample(sampled_at, t);
+      const SceneReturn ret = obstructed ? SceneReturn{} : scene_->sample(sampled_at, t);
       range = ret.range_mm > 0.0 && ret.range_mm <= max_range_mm_ ? ret.range_mm : 0.0;
       flag = flags && range > 0.0 ? ret.flag : PointFlag::None;
       word = encode_sample(range, flag, profile_->flag_bits, distance_scale_);

@@ -48,6 +48,12 @@ class ScanStream {
     motor_offset_hz_ = offset_hz;
     motor_wobble_hz_ = wobble_hz;
   }
+  // Directions from from_deg clockwise over width_deg give no return (FaultConfig's blocked
+  // sector); width 0 clears it.
+  void set_blocked_sector(double from_deg, double width_deg) {
+    blocked_from_deg_ = from_deg;
+    blocked_width_deg_ = width_deg;
+  }
   std::int64_t next_ready_ns() const;
   // Appends the next packet's bytes to `bytes`. When truth is not null, fills it (cleared first)
   // with what the host decodes, and scene_angles with the directions the scene was sampled at.
@@ -61,6 +67,7 @@ class ScanStream {
   std::uint8_t zero_packet_ct() const;
   // The motor's rate for the lap starting at lap_start_ns_: sets its period and sample count.
   void begin_lap_at_motor_rate();
+  bool blocked(double direction_deg) const;
 
   const ModelProfile* profile_;
   const UnitConventions* conventions_;
@@ -77,6 +84,8 @@ class ScanStream {
   double motor_hz_ = 10.0;  // actual rate of the current lap
   double motor_offset_hz_ = 0.0;
   double motor_wobble_hz_ = 0.0;
+  double blocked_from_deg_ = 0.0;
+  double blocked_width_deg_ = 0.0;
   double ranging_hz_ = 9000.0;
   std::int64_t scan_start_ns_ = 0;
   std::uint32_t samples_per_lap_ = 1;

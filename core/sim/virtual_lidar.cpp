@@ -98,6 +98,7 @@ void VirtualLidar::start_scan(std::int64_t now_ns) {
     answer(Command::DeviceInfo, encode_device_info(info_), now_ns);
   stream_->set_health(faults().health_bits);
   stream_->set_motor_error(faults().scan_hz_offset, faults().scan_hz_wobble);
+  stream_->set_blocked_sector(faults().blocked_from_deg, faults().blocked_width_deg);
   stream_->start(now_ns, scan_centihz_, ranging_khz());
   line_.arm_periodic_stalls(now_ns);
   log(now_ns, "scanning at " + hz_text(scan_centihz_) + ", " + std::to_string(ranging_khz()) + " kHz, " +
@@ -184,6 +185,7 @@ void VirtualLidar::set_faults(const FaultConfig& faults) {
   line_.set_config(faults, mode_ == DeviceMode::Scanning ? std::optional(now_ns_) : std::nullopt);
   stream_->set_health(faults.health_bits);
   stream_->set_motor_error(faults.scan_hz_offset, faults.scan_hz_wobble);
+  stream_->set_blocked_sector(faults.blocked_from_deg, faults.blocked_width_deg);
 }
 
 void VirtualLidar::stall(std::int64_t from_ns, std::int64_t duration_ns) {

@@ -47,7 +47,7 @@ const AcceptanceLimits kG6 = default_limits(profile_for(Model::G6));
 
 TEST(Acceptance, AGoodUnitPassesEveryCriterion) {
   const auto results = evaluate_acceptance(good_g6(), kG6);
-  ASSERT_EQ(results.size(), 10u);
+  ASSERT_EQ(results.size(), 11u);
   for (const auto& r : results) {
     EXPECT_EQ(r.verdict, Verdict::Pass) << r.id << ": " << r.measured << " against " << r.limit;
     EXPECT_FALSE(r.measured.empty()) << r.id;
@@ -60,9 +60,9 @@ TEST(Acceptance, AGoodUnitPassesEveryCriterion) {
 TEST(Acceptance, SectorAndRangeCriteriaOnlyWhenAsked) {
   CheckObservations o = good_g6();
   o.target_mm.reset();
-  EXPECT_EQ(evaluate_acceptance(o, kG6).size(), 8u);
+  EXPECT_EQ(evaluate_acceptance(o, kG6).size(), 9u);
   o.sector.reset();
-  EXPECT_EQ(evaluate_acceptance(o, kG6).size(), 7u);
+  EXPECT_EQ(evaluate_acceptance(o, kG6).size(), 8u);
 }
 
 struct OneThingWrong {
@@ -93,6 +93,11 @@ TEST(Acceptance, EachFaultFailsExactlyItsCriterion) {
       {"a queue drop", [](CheckObservations& o) { o.link.queue_drops = 1; }, "link"},
       {"lost samples", [](CheckObservations& o) { o.link.lost_samples = 40; }, "link"},
       {"40 % valid", [](CheckObservations& o) { o.valid_points = 36000; }, "valid_returns"},
+      {"a blocked sector",
+       [](CheckObservations& o) {
+         o.blocked_sectors = {{40, 75, 12.0}};
+       },
+       "blockage"},
       {"90 % valid in the sector", [](CheckObservations& o) { o.sector->valid = 900; }, "sector_valid"},
       {"60 mm long", [](CheckObservations& o) { o.sector->flat_distance_mm.mean = 2460; }, "range_bias"},
       {"30 mm noise", [](CheckObservations& o) { o.sector->flat_distance_mm.stddev = 30; }, "range_noise"},
@@ -102,6 +107,19 @@ TEST(Acceptance, EachFaultFailsExactlyItsCriterion) {
     c.spoil(o);
     EXPECT_EQ(failing(o, kG6), std::set<std::string>{c.criterion}) << c.what;
   }
+}
+
+TEST(Acceptance, ABlockedSectorIsSaidInTheSentenceTheAppAndDiagnosticsUse) {
+  CheckObservations o = good_g6();
+  o.blocked_sectors = {{40, 75, 12.0}, {350, 10, 3.4}};
+  for (const CriterionResult& r : evaluate_acceptance(o, kG6))
+    if (r.id == "blockage") {
+      EXPECT_EQ(r.title, "blocked sectors");
+      EXPECT_EQ(r.measured, "blocked 40°–75° for 12 s; blocked 350°–10° for 3 s");
+      EXPECT_EQ(r.verdict, Verdict::Fail);
+      return;
+    }
+  ADD_FAILURE() << "no blockage criterion";
 }
 
 TEST(Acceptance, LimitsAreInclusiveAndOverridable) {

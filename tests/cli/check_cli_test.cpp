@@ -126,6 +126,12 @@ const FaultCase kFaults[] = {
     // a pty under heavy load it also moved the scan rate now and then, so it is not here yet.
     {"ScanRateOffItsSetValue", Model::G6, [](FaultConfig& f) { f.scan_hz_offset = 0.5; }, "scan_rate"},
     {"ScanRateWandering", Model::TG15, [](FaultConfig& f) { f.scan_hz_wobble = 0.4; }, "scan_jitter"},
+    {"BlockedSector", Model::G6,
+     [](FaultConfig& f) {
+       f.blocked_from_deg = 40;
+       f.blocked_width_deg = 35;
+     },
+     "blockage"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Faults, CheckFault, ::testing::ValuesIn(kFaults),
@@ -138,7 +144,44 @@ TEST(CheckCli, TheTextVerdictNamesTheFailedCriterion) {
   EXPECT_EQ(run.status, 3) << run.out;
   EXPECT_NE(run.out.find("FAIL  scan rate"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("PASS  sample rate"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("verdict: FAIL (1 of 7 criteria: scan_rate)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("verdict: FAIL (1 of 8 criteria: scan_rate)"), std::string::npos) << run.out;
+}
+
+// Issue 29: a sector the virtual lidar blocks (40°–75°) fails "blocked sectors" with its angles,
+// within a few degrees, in the text, the JSON and the report alike.
+TEST(CheckCli, ABlockedSectorIsNamedWithItsAnglesInEveryFormat) {
+  SimOnPty sim(Model::G6, [](SimServerOptions& o) {
+    o.device.scene = "room";
+    o.device.faults.blocked_from_deg = 40;
+    o.device.faults.blocked_width_deg = 35;
+  });
+  const std::filesystem::path report = std::filesystem::temp_directory_path() / "ydscope-check-blocked.html";
+  const std::string common = "check --port " + sim.port() + " --baud 512000 --seconds 3 --settle-seconds 0.3";
+  const CliResult text = run_cli_apart(common);
+  const CliResult json = run_cli_apart(common + " --format json --report " + report.string());
+  EXPECT_EQ(text.status, 3) << text.out << text.err;
+  EXPECT_EQ(failed_ids(json.out), "blockage") << json.out;
+  const auto angles_in = [](const std::string& out, const std::string& after) {
+    const auto at = out.find(after);
+    std::pair<int, int> fromto{-1, -1};
+    if (at != std::string::npos)
+      std::sscanf(out.c_str() + at + after.size(), " blocked %d°–%d°", &fromto.first, &fromto.second);
+    return fromto;
+  };
+  const auto blockage_json = json.out.find(R"("id":"blockage")");
+  ASSERT_NE(blockage_json, std::string::npos) << json.out;
+  for (const auto& [out, after] : {std::pair{text.out, std::string("FAIL  blocked sectors")},
+                                   std::pair{json.out.substr(blockage_json), std::string(R"("measured":")")}}) {
+    const auto [from, to] = angles_in(out, after);
+    EXPECT_NEAR(from, 40, 3) << out;
+    EXPECT_NEAR(to, 75, 3) << out;
+  }
+  std::ifstream in(report);
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(report);
+  const auto row = html.find(R"(<tr data-id="blockage"><td class="v fail">FAIL</td>)");
+  ASSERT_NE(row, std::string::npos) << "the report's row";
+  EXPECT_NE(html.find("blocked ", row), std::string::npos) << "the report says which sector";
 }
 
 // Issue 26: a stall was drawn straight across and named nowhere. Each is now said in the text,
