@@ -5,6 +5,7 @@
 
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
+#include "core/version.h"
 
 namespace ydscope::cli {
 
@@ -77,6 +78,18 @@ void print_check_json(std::FILE* file, const CheckRecord& record) {
     out.string(record.failure);
   out.raw(R"(,"seconds":)");
   out.fixed(record.measured_seconds, 3);
+  const auto string_or_null = [&out](const char* key, const std::string& text) {
+    out.raw(key);
+    if (text.empty())
+      out.raw("null");
+    else
+      out.string(text);
+  };
+  string_or_null(R"(,"operator":)", record.context.operator_name);
+  string_or_null(R"(,"station":)", record.context.station);
+  string_or_null(R"(,"command_line":)", record.context.command_line);
+  out.raw(R"(,"ydscope_version":)");
+  out.string(kVersion);
   out.raw(R"(,"device":{)");
   write_device_fields(out, record.started);
   out.raw(R"(},"criteria":[)");

@@ -3,7 +3,7 @@
 // scripts (schema in `ydscope-cli check --help`).
 #include <cstdio>
 
-#include "app/cli/check_run.h"
+#include "app/common/check_run.h"
 
 namespace ydscope::cli {
 

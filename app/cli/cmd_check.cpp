@@ -1,17 +1,19 @@
-// ydscope-cli check: an acceptance test of one unit against its model's limits, for the bench and
-// the production line.
+// ydscope-cli check: an acceptance test of one unit against its model's limits, for the bench, and
+// unit after unit with --loop for the production line (check_station.h).
 #include <unistd.h>
 
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
 #include "app/common/arguments.h"
 #include "app/cli/check_output.h"
-#include "app/cli/check_report.h"
-#include "app/cli/check_run.h"
+#include "app/cli/check_station.h"
+#include "app/common/check_report.h"
+#include "app/common/check_run.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/session_cli.h"
 
@@ -21,25 +23,32 @@ namespace {
 constexpr std::string_view kHelpText =
     R"(usage: ydscope-cli check --port PATH [--model auto|M] [--seconds S] [--scan-hz F] [--ranging-khz K]
                          [--sector A:B [--band MIN:MAX] --target-mm D [--tolerance-mm T] [--noise-mm N]]
-                         [--format text|json] [--report OUT.html] [limit options]
+                         [--format text|json] [--report OUT.html] [--operator NAME] [--station NAME]
+                         [limit options]
+       ydscope-cli check --loop --station NAME --operator NAME [--port PATH] [--reports DIR] [...]
 
 Runs an acceptance test of the lidar: reads its identity and health, sets the scan frequency (and
 the ranging frequency when asked), lets the motor settle, measures for S seconds, reads the health
 again and stops the lidar. Then one line per criterion with the measured value, the limit and
 PASS or FAIL:
 
-  identity       the model code matches the model; firmware and serial were read
-  health         no error or warning (A5 91/92 before and after; on G1 also every lap's CT bits)
-  scan rate      the mean measured rate within a tolerance of the target
-  scan jitter    the lap period's robust std-dev below a limit
-  sample rate    samples per second against the ranging frequency in use
-  link           checksum errors, resync bytes, G1 CRC8 failures, queue drops, lost samples
-  valid returns  the share of points with a return and no interference flag
-  blocked sectors  no sector of 4° or more stays without returns (95 % of its samples over the
-                 last 3 s) while the rest of the turn sees them; a failure says "blocked 40°–75°
-                 for 12 s"
-  and with --sector: the valid share in the sector; with --target-mm too: the range bias and noise
-  (std-dev) of the sector's points against a flat target square to the sector's middle.
+  identity                the model code matches the model; firmware and serial were read
+  health                  no error or warning (A5 91/92 before and after; on G1 also every lap's
+                          CT bits)
+  scan rate               the measured rate (laps per second over the run) within a tolerance of
+                          the target
+  scan jitter             the robust std-dev of the samples per lap (each lap's length as the
+                          unit's sample clock measures it), in % of their median, below a limit
+  sample rate             samples per second against the ranging frequency in use
+  link                    checksum errors, resync bytes, G1 CRC8 failures, queue drops, lost samples
+  valid returns           the share of points with a return and no interference flag
+  blocked sectors         no sector of 4° or more stays without returns (95 % of its samples over
+                          the last 3 s) while the rest of the turn sees them; a failure says
+                          "blocked 40°–75° for 12 s"
+  valid returns in A:B    with --sector A:B: the same share among the sector's points
+  range bias              with --target-mm D too: the sector's mean range (along its middle)
+                          against D, a flat target square to the sector's middle
+  range noise             with --target-mm D too: the std-dev of those ranges
 
 Limits come from the manuals where they give one, otherwise from documented defaults (the table
 is in docs/check.md, "Acceptance limits"); every limit has an option below.
@@ -63,6 +72,10 @@ options:
   --report OUT.html      also write a self-contained HTML report (criteria table, scan rate over
                          time, the sector's histogram, the last lap from above) to archive with
                          the unit; written even when the run fails or is interrupted
+  --operator NAME        who runs the check, written into the report (and the station log)
+  --station NAME         where it runs (a test station's name), written the same way
+  --loop                 a test station: check each unit as it is plugged in, until Ctrl-C (below)
+  --reports DIR          with --loop: the folder for the reports and the station log (default .)
   --distance-scale MM    mm per distance count, overriding the model's (see `decode --help`)
   --conventions C        field (default): read the unit as real units of its model and firmware write
                          (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
@@ -70,7 +83,7 @@ options:
 
 limit options (defaults in brackets):
   --scan-tolerance-pct P         scan rate within P % of the target [2]
-  --jitter-pct P                 lap-period jitter at most P % [2]
+  --jitter-pct P                 scan jitter (samples per lap) at most P % [2]
   --sample-rate-tolerance-pct P  samples/s within P % of the ranging frequency [2]
   --max-checksum-errors N        [0]    --max-resync-bytes N   [0]
   --max-crc8-failures N          [0]    --max-queue-drops N    [0]
@@ -78,12 +91,23 @@ limit options (defaults in brackets):
   --min-valid-pct P              valid returns among all points [50]
   --min-sector-valid-pct P       valid returns in the sector [95]
 
+A test station (--loop, with --station and --operator): waits for a unit on --port PATH (or,
+without --port, on the first lidar port `ydscope-cli ports` would list), checks it as above, writes
+its report to DIR/SERIAL-YYYYMMDD-HHMMSS.html (UTC), appends one row to DIR/check-log.csv and
+DIR/check-log.jsonl (time, station, operator, port, serial, model, firmware, verdict, failed ids,
+scan_hz, jitter_pct, samples_per_s, valid_pct, range_bias_mm, range_noise_mm, lost_samples,
+checksum_errors, measured_s, duration_s, note, report; appended and flushed row by row, never
+rewritten), says PASS/FAIL on stderr, waits for the unit to be unplugged, then for the next. A
+unit that cannot be tested or is cut short is logged as incomplete. Ctrl-C while waiting closes the
+station (exit 0); Ctrl-C during a unit's run logs it as incomplete and exits 130.
+
 On a terminal, progress is shown on stderr. Ctrl-C stops the lidar and prints the verdict on what
 was measured until then, marked as interrupted. A run cut short (Ctrl-C, or the link failing
 mid-run) is never a pass: its verdict is INCOMPLETE in the text, JSON and report alike.
 
 json: {"type":"check","verdict":"pass"|"fail"|"incomplete","failed":[ids],"interrupted":bool,"failure":null|
-  sentence,"seconds":S,"device":{as `info`},"criteria":[{"id","title","verdict","value","measured",
+  sentence,"seconds":S,"operator":null|name,"station":null|name,"command_line":text,
+  "ydscope_version":V,"device":{as `info`},"criteria":[{"id","title","verdict","value","measured",
   "limit"}],"timing":{"laps","normal_laps","interruptions","mean_hz","jitter_pct","sample_rate_hz",
   "points","lost_samples"},"sector":null|{"name","points","valid","range_mm":{...},
   "flat_distance_mm":{"count","mean","median","stddev","min","max"}}}
@@ -100,6 +124,7 @@ examples:
   ydscope-cli check --port /dev/ttyUSB0 --model G6 --seconds 30 --scan-hz 10 --ranging-khz 8
   ydscope-cli check --port /dev/ttyUSB0 --sector 350:10 --target-mm 2000 --format json | jq .verdict
   ydscope-cli check --port /dev/ttyUSB0 --report "check-$(date +%F-%H%M%S).html"
+  ydscope-cli check --loop --station bench-2 --operator ana --port /dev/ydlidar --reports ~/qa
 )";
 
 constexpr int kExitInterrupted = 130;
@@ -127,9 +152,33 @@ constexpr LimitOption kLimitOptions[] = {
     {"min-sector-valid-pct", &AcceptanceLimits::min_sector_valid_share, 100, 0.01},
 };
 
-CheckPlan plan_from(const Arguments& args) {
+// The command as typed, quoted for a POSIX shell where it needs it, for the report.
+std::string command_line(std::span<const std::string> raw) {
+  std::string line = "ydscope-cli check";
+  for (const std::string& arg : raw) {
+    const bool plain = !arg.empty() && arg.find_first_not_of(
+                                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789-_./:=,+@%") == std::string::npos;
+    if (plain) {
+      line += " " + arg;
+      continue;
+    }
+    line += " '";
+    for (const char c : arg) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    line += "'";
+  }
+  return line;
+}
+
+void show_on_terminal(const std::string& line) {
+  std::fprintf(stderr, "\r\033[K%s", line.c_str());
+  std::fflush(stderr);
+}
+
+CheckPlan plan_from(const Arguments& args, bool loop) {
   CheckPlan plan;
-  plan.session = session_config_from(args, /*scan=*/true);
+  plan.session =
+      loop ? session_config_awaiting(args, args.value("port").value_or("")) : session_config_from(args, /*scan=*/true);
   plan.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
   plan.seconds = args.number("seconds", 1, 3600).value_or(10);
   plan.settle_seconds = args.number("settle-seconds", 0, 60).value_or(1);
@@ -154,24 +203,59 @@ CheckPlan plan_from(const Arguments& args) {
   for (const LimitOption& option : kLimitOptions)
     if (const auto value = args.number(option.name, 0, option.max))
       plan.limit_overrides.emplace_back(option.field, *value * option.scale);
-  plan.progress = isatty(STDERR_FILENO) == 1;
+  plan.context.operator_name = args.value("operator").value_or("");
+  plan.context.station = args.value("station").value_or("");
+  if (isatty(STDERR_FILENO) == 1) plan.progress = show_on_terminal;
+  plan.warning = [](const std::string& text) { std::fprintf(stderr, "ydscope-cli: warning: %s\n", text.c_str()); };
+  return plan;
+}
+
+// --loop: a station names itself and whoever runs it, and keeps its files in a folder it can write.
+StationPlan station_plan_from(const Arguments& args, CheckPlan check) {
+  if (args.has("report")) throw UsageError("--report names one file; with --loop give --reports DIR instead");
+  for (const char* name : {"station", "operator"})
+    if (!args.value(name) || args.value(name)->empty())
+      throw UsageError(std::string("--loop needs --") + name + " NAME, written into every report and log row");
+  StationPlan plan;
+  plan.check = std::move(check);
+  plan.port = args.value("port").value_or("");
+  plan.reports_folder = args.value("reports").value_or(".");
+  plan.json = args.value("format").value_or("text") == "json";
+  if (plan.port.rfind("tcp://", 0) == 0)
+    throw UsageError("--loop waits for a unit's serial port to appear; give a serial --port, not " + plan.port);
+  std::error_code ec;
+  if (!std::filesystem::is_directory(plan.reports_folder, ec))
+    throw UsageError("--reports " + plan.reports_folder + ": there is no such folder; create it or choose another");
+  if (::access(plan.reports_folder.c_str(), W_OK) != 0)
+    throw UsageError("--reports " + plan.reports_folder + ": the folder is not writable; choose one you can write to");
   return plan;
 }
 
 int run_check_command(std::span<const std::string> raw) {
-  std::set<std::string> options{"seconds",   "settle-seconds", "scan-hz",  "ranging-khz", "sector",         "band",
-                                "target-mm", "tolerance-mm",   "noise-mm", "format",      "distance-scale", "report"};
+  std::set<std::string> options{"seconds",        "settle-seconds", "scan-hz",      "ranging-khz", "sector",
+                                "band",           "target-mm",      "tolerance-mm", "noise-mm",    "format",
+                                "distance-scale", "report",         "operator",     "station",     "reports"};
   for (const LimitOption& option : kLimitOptions) options.insert(option.name);
-  const Arguments args(raw, session_value_options(options), {});
+  const Arguments args(raw, session_value_options(options), {"loop"});
   const std::string format = args.value("format").value_or("text");
   if (format != "text" && format != "json") throw UsageError("--format must be text or json, not '" + format + "'");
-  const CheckPlan plan = plan_from(args);
+  const bool loop = args.has("loop");
+  if (!loop && args.has("reports"))
+    throw UsageError("--reports DIR goes with --loop; for one unit give --report OUT.html");
+  CheckPlan plan = plan_from(args, loop);
+  plan.context.command_line = command_line(raw);
+  if (loop) {
+    const StationPlan station = station_plan_from(args, std::move(plan));
+    end_on_signals(check_on_signal);
+    return run_check_station(station, interrupted);
+  }
   const std::optional<std::string> report = args.value("report");
   if (report)
     if (const std::string problem = report_output_problem(*report); !problem.empty()) throw UsageError(problem);
 
   end_on_signals(check_on_signal);
   const CheckRecord record = run_check(plan, interrupted);
+  if (plan.progress) std::fprintf(stderr, "\r\033[K");
   if (format == "json")
     print_check_json(stdout, record);
   else

@@ -11,7 +11,7 @@ constexpr std::array<LimitSource, 14> kLimitSources{{
     {"scan rate target", "the model's default (G1 9 Hz, G6 8 Hz, TG 10 Hz), within 5-12 Hz",
      "model profile; the 5-12 Hz span from the datasheets, the manuals give none", "--scan-hz"},
     {"scan rate tolerance", "2 % of the target", "default", "--scan-tolerance-pct"},
-    {"scan jitter", "lap-period robust std-dev at most 2 % of the period", "default", "--jitter-pct"},
+    {"scan jitter", "robust std-dev of the samples per lap at most 2 % of their median", "default", "--jitter-pct"},
     {"sample rate", "the ranging frequency in use (G1 4/5/8/9/10/16/18 kHz; G6, TG 4/8/9 kHz, default 9)",
      "the manuals' A5 D1 tables", "--ranging-khz"},
     {"sample rate tolerance", "2 %", "default", "--sample-rate-tolerance-pct"},

@@ -15,7 +15,7 @@ namespace ydscope {
 struct AcceptanceLimits {
   double scan_hz_target = 0;             // the rate set before measuring
   double scan_hz_tolerance_pct = 0;      // |mean - target| / target
-  double scan_jitter_max_pct = 0;        // robust std-dev of the lap period
+  double scan_jitter_max_pct = 0;        // robust std-dev of the samples per lap, % of their median
   double sample_rate_tolerance_pct = 0;  // |samples/s - ranging kHz * 1000| / that
   double max_checksum_errors = 0;
   double max_resync_bytes = 0;

@@ -1,9 +1,10 @@
-#include "app/cli/check_report.h"
+#include "app/common/check_report.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -11,11 +12,11 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "app/cli/svg_charts.h"
+#include "app/common/svg_charts.h"
 #include "core/analysis/text_format.h"
 #include "core/version.h"
 
-namespace ydscope::cli {
+namespace ydscope {
 
 namespace {
 
@@ -34,15 +35,6 @@ dl{display:grid;grid-template-columns:max-content 1fr;gap:2px 16px;margin:0} dt{
 footer{margin-top:32px;color:#52606d;font-size:.85em}
 )";
 
-std::string utc_time(std::int64_t unix_s) {
-  const std::time_t t = static_cast<std::time_t>(unix_s);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", &tm);
-  return text;
-}
-
 std::string field(std::string_view name, std::string_view value) {
   return "<dt>" + markup_escaped(name) + "</dt><dd>" + markup_escaped(value) + "</dd>";
 }
@@ -59,7 +51,7 @@ std::string identity_block(const CheckRecord& record) {
     html += field("hardware", std::to_string(s.device->hardware));
   }
   html += field("link", s.link);
-  html += field("started", utc_time(record.started_unix_s));
+  html += field("started", utc_text(record.started_unix_s, "%Y-%m-%d %H:%M:%S UTC"));
   html += field("measured", format_text("%.1f s, %llu laps", record.measured_seconds,
                                         static_cast<unsigned long long>(record.observations.timing.laps)));
   if (record.observations.ranging_khz)
@@ -69,6 +61,16 @@ std::string identity_block(const CheckRecord& record) {
                                      format_text(", %g mm per count", s.distance_scale));
   if (record.observations.sector_name) html += field("sector", *record.observations.sector_name + " degrees");
   if (record.observations.target_mm) html += field("target", format_text("%.0f mm", *record.observations.target_mm));
+  const std::size_t gaps = record.observations.timing.gaps.size();
+  html += field("interruptions", gaps == 0 ? std::string("none")
+                                           : format_text("%zu, listed under the scan rate and left out of the per-lap "
+                                                         "figures",
+                                                         gaps));
+  const CheckContext& c = record.context;
+  if (!c.operator_name.empty()) html += field("operator", c.operator_name);
+  if (!c.station.empty()) html += field("station", c.station);
+  html += field("ydscope", kVersion);
+  if (!c.command_line.empty()) html += field("command", c.command_line);
   return html + "</dl>";
 }
 
@@ -100,9 +102,15 @@ std::string charts(const CheckRecord& record) {
   if (record.sector) {
     const SectorStatistics& s = *record.sector;
     html += "<h2>Sector " + markup_escaped(o.sector_name.value_or("")) + "</h2>";
-    html += svg_histogram_chart(s.histogram, "range (mm)");
+    std::optional<TargetMark> target;
+    if (o.target_mm) {
+      const double tolerance = record.limits.bias_tolerance_mm.value_or(default_bias_tolerance_mm(*o.target_mm));
+      target = TargetMark{*o.target_mm, tolerance,
+                          format_text("target %.0f mm ± %.1f mm (range bias limit)", *o.target_mm, tolerance)};
+    }
+    html += svg_histogram_chart(s.histogram, "range (mm)", target);
     html += svg_valid_share_chart(s.valid_share_by_angle, record.sector_region ? record.sector_region->from_deg : 0,
-                                  s.angle_bin_deg);
+                                  s.angle_bin_deg, record.limits.min_sector_valid_share);
   }
   html += R"(</section><section class="polar"><h2>The last lap, from above</h2>)";
   html += svg_polar_snapshot(record.last_lap, record.sector_region);
@@ -141,7 +149,7 @@ std::string check_report_html(const CheckRecord& record) {
   html += identity_block(record);
   html += "<h2>Criteria</h2>" + criteria_table(record);
   html += charts(record);
-  html += "<footer>Written by ydscope-cli check " + std::string(kVersion) +
+  html += "<footer>Written by ydscope " + std::string(kVersion) +
           ". Limits and where they come from: docs/check.md, \"Acceptance limits\".</footer></body></html>\n";
   return html;
 }
@@ -158,6 +166,27 @@ std::string report_output_problem(const std::string& path) {
   if (::access(folder.c_str(), W_OK) != 0)
     return "--report " + path + ": the folder " + folder + " is not writable; choose a folder you can write to";
   return {};
+}
+
+std::string utc_text(std::int64_t unix_s, const char* format) {
+  const std::time_t t = static_cast<std::time_t>(unix_s);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char text[64];
+  return std::strftime(text, sizeof text, format, &tm) > 0 ? text : "";
+}
+
+std::string check_report_path(const std::string& folder, const CheckRecord& record) {
+  std::string serial = record.started.device ? record.started.device->serial : std::string();
+  for (char& c : serial)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  if (serial.empty()) serial = "no-serial";
+  const std::filesystem::path base =
+      std::filesystem::path(folder) / (serial + "-" + utc_text(record.started_unix_s, "%Y%m%d-%H%M%S"));
+  std::string path = base.string() + ".html";
+  std::error_code ec;
+  for (int n = 2; std::filesystem::exists(path, ec); ++n) path = base.string() + "-" + std::to_string(n) + ".html";
+  return path;
 }
 
 void write_check_report(const std::string& path, const CheckRecord& record) {
@@ -179,4 +208,4 @@ void write_check_report(const std::string& path, const CheckRecord& record) {
   throw std::runtime_error("could not write the report " + path + ": " + std::strerror(error ? error : EIO));
 }
 
-}  // namespace ydscope::cli
+}  // namespace ydscope

@@ -1,4 +1,4 @@
-#include "app/cli/svg_charts.h"
+#include "app/common/svg_charts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include "core/analysis/text_format.h"
 #include "core/text/json_string.h"
 
-namespace ydscope::cli {
+namespace ydscope {
 
 namespace {
 
@@ -68,6 +68,22 @@ struct PlotFrame {
   }
 };
 
+// The band a value must stay in, shaded in the target's colour: across x (lo..hi on the x axis)
+// or across y.
+std::string target_band(const PlotFrame& f, double lo, double hi, bool along_x) {
+  const double x0 = along_x ? f.sx(lo) : f.left, x1 = along_x ? f.sx(hi) : f.width - f.right;
+  const double y0 = along_x ? f.top : f.sy(hi), y1 = along_x ? f.height - f.bottom : f.sy(lo);
+  return format_text(R"(<rect class="tolerance" x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="%s" )"
+                     R"(fill-opacity="0.12"/>)",
+                     x0, y0, std::max(x1 - x0, 1.0), std::max(y1 - y0, 1.0), kTarget);
+}
+
+// The target's words, top right inside the plot.
+std::string target_label(const PlotFrame& f, std::string_view text) {
+  return format_text(R"(<text x="%.1f" y="%.1f" text-anchor="end" fill="%s">%s</text>)", f.width - f.right - 6,
+                     f.top + 14, kTarget, markup_escaped(text).c_str());
+}
+
 std::string empty_chart(std::string_view title, std::string_view sentence) {
   PlotFrame frame;
   frame.height = 80;
@@ -116,12 +132,11 @@ std::string svg_scan_rate_chart(std::span<const LapRateSample> series, std::span
   f.y_lo -= pad, f.y_hi += pad;
 
   std::string svg = f.open(kTitle);
-  svg += format_text(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="%s" fill-opacity="0.12"/>)", f.left,
-                     f.sy(target_hz + band), f.width - f.left - f.right,
-                     f.sy(target_hz - band) - f.sy(target_hz + band), kTarget);
+  svg += target_band(f, target_hz - band, target_hz + band, false);
   svg += f.axes("time (s)", "scan rate (Hz)");
-  svg += format_text(R"(<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-dasharray="6 4"/>)", f.left,
-                     f.sy(target_hz), f.width - f.right, f.sy(target_hz), kTarget);
+  svg += format_text(
+      R"(<line class="target" x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-dasharray="6 4"/>)", f.left,
+      f.sy(target_hz), f.width - f.right, f.sy(target_hz), kTarget);
   for (const TimingGap& gap : gaps) {
     const double x0 = f.sx(gap.from_s), x1 = f.sx(gap.to_s);
     svg +=
@@ -145,20 +160,27 @@ std::string svg_scan_rate_chart(std::span<const LapRateSample> series, std::span
     svg += format_text("%.1f,%.1f ", f.sx(s.t_s), f.sy(s.hz));
   }
   if (open) svg += R"("/>)";
-  svg += format_text(R"(<text x="%.1f" y="%.1f" text-anchor="end" fill="%s">target %.2f Hz ± %.1f %%</text>)",
-                     f.width - f.right - 6, f.top + 14, kTarget, target_hz, tolerance_pct);
+  svg += target_label(f, format_text("target %.2f Hz ± %.1f %%", target_hz, tolerance_pct));
   return svg + "</svg>";
 }
 
-std::string svg_histogram_chart(const Histogram& histogram, std::string_view x_label) {
+std::string svg_histogram_chart(const Histogram& histogram, std::string_view x_label,
+                                const std::optional<TargetMark>& target) {
   constexpr const char* kTitle = "Histogram of the sector's ranges";
   std::uint32_t most = 0;
   for (const std::uint32_t c : histogram.counts) most = std::max(most, c);
   if (most == 0) return empty_chart(kTitle, "no valid return fell in the sector");
   PlotFrame f;
   f.x_lo = histogram.lo, f.x_hi = histogram.hi;
+  if (target) {
+    // The band's edges inside the axis, so the eye sees where the limit runs out.
+    const double margin = std::max(target->tolerance * 1.25, (f.x_hi - f.x_lo) * 0.02);
+    f.x_lo = std::min(f.x_lo, target->value - margin), f.x_hi = std::max(f.x_hi, target->value + margin);
+  }
   f.y_hi = most * 1.1;
-  std::string svg = f.open(kTitle) + f.axes(x_label, "points");
+  std::string svg = f.open(kTitle);
+  if (target) svg += target_band(f, target->value - target->tolerance, target->value + target->tolerance, true);
+  svg += f.axes(x_label, "points");
   const double w = histogram.bin_width();
   for (std::size_t i = 0; i < histogram.counts.size(); ++i) {
     const double x0 = histogram.lo + w * static_cast<double>(i);
@@ -166,23 +188,36 @@ std::string svg_histogram_chart(const Histogram& histogram, std::string_view x_l
                        f.sy(histogram.counts[i]), std::max(f.sx(x0 + w) - f.sx(x0) - 1, 0.5),
                        f.sy(0) - f.sy(histogram.counts[i]), kData);
   }
+  if (target) {
+    svg += format_text(
+        R"(<line class="target" x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-dasharray="6 4"/>)",
+        f.sx(target->value), f.top, f.sx(target->value), f.height - f.bottom, kTarget);
+    svg += target_label(f, target->label);
+  }
   return svg + "</svg>";
 }
 
-std::string svg_valid_share_chart(std::span<const double> share_by_angle, double from_deg, double bin_deg) {
+std::string svg_valid_share_chart(std::span<const double> share_by_angle, double from_deg, double bin_deg,
+                                  double min_share) {
   constexpr const char* kTitle = "Share of valid returns per angle in the sector";
   if (share_by_angle.empty()) return empty_chart(kTitle, "no sector was measured");
   PlotFrame f;
   f.x_lo = 0, f.x_hi = bin_deg * static_cast<double>(share_by_angle.size());
-  f.y_hi = 100;
-  std::string svg = f.open(kTitle) + f.axes(format_text("degrees past %.1f°", from_deg), "valid (%)");
+  f.y_hi = 110;  // room above 100 % for the limit's words
+  std::string svg = f.open(kTitle);
+  svg += target_band(f, min_share * 100, 100, false);
+  svg += f.axes(format_text("degrees past %.1f°", from_deg), "valid (%)");
   for (std::size_t i = 0; i < share_by_angle.size(); ++i) {
     const double x0 = bin_deg * static_cast<double>(i), share = share_by_angle[i];
     if (share < 0) continue;  // no points there: no bar, rather than a misleading 0 %
     svg += format_text(R"(<rect x="%.1f" y="%.1f" width="%.1f" height="%.1f" fill="%s"/>)", f.sx(x0), f.sy(share * 100),
                        std::max(f.sx(x0 + bin_deg) - f.sx(x0) - 1, 0.5), f.sy(0) - f.sy(share * 100),
-                       share >= 0.95 ? kTarget : "#c62828");
+                       share >= min_share ? kTarget : kGap);
   }
+  svg += format_text(
+      R"(<line class="target" x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-dasharray="6 4"/>)", f.left,
+      f.sy(min_share * 100), f.width - f.right, f.sy(min_share * 100), kInk);
+  svg += target_label(f, format_text("limit: at least %.1f %%", min_share * 100));
   return svg + "</svg>";
 }
 
@@ -234,4 +269,4 @@ std::string svg_polar_snapshot(const Lap& lap, const std::optional<Sector>& sect
   return svg + "</svg>";
 }
 
-}  // namespace ydscope::cli
+}  // namespace ydscope

@@ -5,7 +5,7 @@
 #include <condition_variable>
 #include <mutex>
 
-namespace ydscope::cli {
+namespace ydscope {
 
 struct LapBell {
   std::mutex mutex;
@@ -25,4 +25,4 @@ struct LapBell {
   }
 };
 
-}  // namespace ydscope::cli
+}  // namespace ydscope

@@ -1,10 +1,11 @@
 #pragma once
-// The measuring half of `ydscope-cli check`: connect, set the scan (and ranging) frequency, let
-// the motor settle, then gather laps for the run's length into the core/analysis accumulators,
-// read the health again, and stop the lidar. What comes out is a CheckRecord: the observations,
-// the verdicts, and what the text, JSON and HTML outputs show.
+// The measuring half of `ydscope-cli check` and of the app's "Run check": connect, set the scan
+// (and ranging) frequency, let the motor settle, then gather laps for the run's length into the
+// core/analysis accumulators, read the health again, and stop the lidar. What comes out is a
+// CheckRecord: the observations, the verdicts, and what the text, JSON and HTML outputs show.
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,7 +14,14 @@
 #include "core/analysis/sector.h"
 #include "core/link/session.h"
 
-namespace ydscope::cli {
+namespace ydscope {
+
+// Who ran the check, where and how: written into the report and the station log as given.
+struct CheckContext {
+  std::string command_line;   // the command as typed, or the app's equivalent of it
+  std::string operator_name;  // --operator, empty when not given
+  std::string station;        // --station, empty when not given
+};
 
 struct CheckPlan {
   SessionConfig session;
@@ -28,10 +36,17 @@ struct CheckPlan {
   std::vector<std::pair<double AcceptanceLimits::*, double>> limit_overrides;
   std::optional<double> bias_tolerance_mm;
   std::optional<double> noise_max_mm;
-  bool progress = false;  // progress lines on stderr (a terminal)
+  CheckContext context;
+  // Where the run says what it is doing ("measuring: 2.0 of 10.0 s, ..."), one line at a time,
+  // and the connection's warnings. Empty: silent. Called on the thread running run_check.
+  std::function<void(const std::string&)> progress;
+  std::function<void(const std::string&)> warning;
+  // Once the unit has answered (its model, firmware and serial are in the snapshot).
+  std::function<void(const SessionSnapshot&)> connected;
 };
 
 struct CheckRecord {
+  CheckContext context;
   SessionSnapshot started;          // the device as it answered at connect time
   std::int64_t started_unix_s = 0;  // wall clock at connect, for the report's date
   AcceptanceLimits limits;
@@ -58,4 +73,4 @@ std::string incomplete_reason(const CheckRecord& record);
 // `stop` (set by a signal handler) ends the measurement early.
 CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop);
 
-}  // namespace ydscope::cli
+}  // namespace ydscope

@@ -1,14 +1,13 @@
-#include "app/cli/check_run.h"
+#include "app/common/check_run.h"
 
 #include <chrono>
-#include <cstdio>
 #include <functional>
 #include <future>
 #include <stdexcept>
 
 #include "app/common/arguments.h"
-#include "app/cli/lap_bell.h"
-#include "app/cli/session_cli.h"
+#include "app/common/device_connect.h"
+#include "app/common/lap_bell.h"
 #include "core/analysis/dropout_ring.h"
 #include "core/analysis/lap_timing.h"
 #include "core/analysis/text_format.h"
@@ -16,7 +15,7 @@
 #include "core/protocol/health_level.h"
 #include "core/protocol/reply.h"
 
-namespace ydscope::cli {
+namespace ydscope {
 
 namespace {
 
@@ -70,10 +69,8 @@ struct CtHealth {
   }
 };
 
-void show(bool progress, const std::string& line) {
-  if (!progress) return;
-  std::fprintf(stderr, "\r\033[K%s", line.c_str());
-  std::fflush(stderr);
+void show(const std::function<void(const std::string&)>& progress, const std::string& line) {
+  if (progress) progress(line);
 }
 
 bool streaming(const SessionSnapshot& s) {
@@ -93,7 +90,10 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   show(plan.progress, "connecting to " + plan.session.address + " ...");
   record.started_unix_s =
       std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-  record.started = connect_or_throw(session, plan.session);
+  record.context = plan.context;
+  record.started = connect_and_wait(session, plan.session);
+  if (!record.started.message.empty() && plan.warning) plan.warning(record.started.message);
+  if (plan.connected) plan.connected(record.started);
   if (plan.distance_scale) session.set_distance_scale(plan.distance_scale);
   const SessionSnapshot& s0 = record.started;
   if (!s0.device || !s0.device->profile) throw std::runtime_error("the device's model is not known");
@@ -201,9 +201,10 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
       last_progress = Clock::now();
       const LapTimingStatistics t = timing.statistics();
       const CounterSnapshot c = session.snapshot().counters;
-      show(true, format_text("measuring: %.1f of %.1f s, %llu laps, %.2f Hz, %llu checksum errors",
-                             seconds_since(start), plan.seconds, static_cast<unsigned long long>(t.laps), t.mean_hz,
-                             static_cast<unsigned long long>(c.checksum_errors - before.counters.checksum_errors)));
+      show(plan.progress,
+           format_text("measuring: %.1f of %.1f s, %llu laps, %.2f Hz, %llu checksum errors", seconds_since(start),
+                       plan.seconds, static_cast<unsigned long long>(t.laps), t.mean_hz,
+                       static_cast<unsigned long long>(c.checksum_errors - before.counters.checksum_errors)));
     }
     bell.wait(std::chrono::milliseconds(100));
   }
@@ -236,7 +237,6 @@ CheckRecord run_check(const CheckPlan& plan, const std::atomic<bool>& stop) {
   session.wait_until(
       [](const SessionSnapshot& s) { return s.state == LinkState::Idle || s.state == LinkState::Failed; },
       std::chrono::seconds(3));
-  if (plan.progress) std::fprintf(stderr, "\r\033[K");
   record.results = evaluate_acceptance(o, record.limits);
   return record;
 }
@@ -261,4 +261,4 @@ std::string incomplete_reason(const CheckRecord& record) {
   return format_text("interrupted after %.1f s", record.measured_seconds);
 }
 
-}  // namespace ydscope::cli
+}  // namespace ydscope
