@@ -31,7 +31,7 @@
 
 #include "bench_options.h"
 #include "process_probe.h"
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 
 namespace {
 

@@ -42,7 +42,7 @@
 #include <vector>
 
 #include "bench_options.h"
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 #include "process_probe.h"
 
 namespace {

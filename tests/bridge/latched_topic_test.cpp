@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 #include "core/bridge/foxglove_server.h"
 #include "core/bridge/ros_topic_channels.h"
 

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 
 namespace ydscope::test {
 

@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 #include "core/sim/sim_server.h"
 #include "support/temp_dir.h"
 

@@ -3,7 +3,7 @@
 // G1's (its range limits), decoded with a fresh decoder rather than the G6's.
 #include <gtest/gtest.h>
 
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 #include "core/bridge/session_share.h"
 #include "export/laser_scan_reader.h"
 #include "support/session_test_support.h"

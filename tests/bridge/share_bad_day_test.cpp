@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 #include "core/bridge/session_share.h"
 #include "export/diagnostics_reader.h"
 #include "export/mcap_test_reader.h"

@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "app_test_support.h"
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 #include "export/laser_scan_reader.h"
 #include "private_display.h"
 #include "x11_input.h"

@@ -1,4 +1,4 @@
-#include "bridge/ws_test_client.h"
+#include "support/ws_test_client.h"
 
 #include <sstream>
 #include <stdexcept>
