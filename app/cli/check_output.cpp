@@ -5,7 +5,7 @@
 
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
-#include "core/version.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 
@@ -56,124 +56,83 @@ void print_check_text(std::FILE* out, const CheckRecord& record) {
                  failed_ids(record).c_str());
 }
 
+namespace {
+
+void write_criteria(JsonObject& check, const std::vector<CriterionResult>& results) {
+  JsonArray criteria = check.array("criteria");
+  for (const CriterionResult& r : results)
+    criteria.object()
+        .field("id", r.id)
+        .field("title", r.title)
+        .field("verdict", r.verdict == Verdict::Pass ? "pass" : "fail")
+        .field("value", r.value, 6)
+        .field("measured", r.measured)
+        .field("limit", r.limit);
+}
+
+void write_timing(JsonObject& check, const LapTimingStatistics& t) {
+  JsonObject timing = check.object("timing");
+  timing.field("laps", t.laps).field("normal_laps", t.normal_laps).field("interruptions", t.interruptions);
+  {
+    JsonArray gaps = timing.array("gaps");
+    for (const TimingGap& gap : t.gaps)
+      gaps.object()
+          .field("from_s", gap.from_s, 3)
+          .field("to_s", gap.to_s, 3)
+          .field("turns_lost", gap.turns_lost, 1)
+          .field("cause", gap.cause == TimingGap::Cause::Stall ? "stall" : "lost_zero_packet")
+          .field("text", describe_timing_gap(gap));
+  }
+  timing.field("mean_hz", t.mean_hz, 4).field("jitter_pct", t.jitter_pct, 3);
+  timing.field("sample_rate_hz", t.sample_rate_hz, 1).field("points", t.points).field("lost_samples", t.lost_samples);
+}
+
+void write_value_summary(JsonObject& sector, std::string_view key, const ValueSummary& v) {
+  sector.object(key)
+      .field("count", v.count)
+      .field("mean", v.mean, 2)
+      .field("median", v.median, 2)
+      .field("stddev", v.stddev, 2)
+      .field("min", v.min, 2)
+      .field("max", v.max, 2);
+}
+
+void write_sector(JsonObject& check, const CheckRecord& record) {
+  if (!record.sector) {
+    check.field("sector", nullptr);
+    return;
+  }
+  const SectorStatistics& s = *record.sector;
+  JsonObject sector = check.object("sector");
+  sector.field("name", record.observations.sector_name.value_or(""));
+  sector.field("points", s.points).field("valid", s.valid);
+  write_value_summary(sector, "range_mm", s.range_mm);
+  write_value_summary(sector, "flat_distance_mm", s.flat_distance_mm);
+}
+
+}  // namespace
+
 void print_check_json(std::FILE* file, const CheckRecord& record) {
   JsonOut out(file);
-  const LapTimingStatistics& t = record.observations.timing;
-  out.raw(R"({"type":"check","verdict":)");
-  out.string(outcome_word(check_outcome(record)));
-  out.raw(R"(,"failed":[)");
-  bool first = true;
-  for (const CriterionResult& r : record.results) {
-    if (r.verdict == Verdict::Pass) continue;
-    if (!first) out.raw(",");
-    first = false;
-    out.string(r.id);
+  {
+    JsonObject check(out.buffer());
+    check.field("type", "check").field("verdict", outcome_word(check_outcome(record)));
+    {
+      JsonArray failed = check.array("failed");
+      for (const CriterionResult& r : record.results)
+        if (r.verdict != Verdict::Pass) failed.item(r.id);
+    }
+    check.field("interrupted", record.interrupted).field("failure", text_or_null(record.failure));
+    check.field("seconds", record.measured_seconds, 3);
+    {
+      JsonObject device = check.object("device");
+      write_device_fields(device, record.started);
+    }
+    write_criteria(check, record.results);
+    write_timing(check, record.observations.timing);
+    write_sector(check, record);
   }
-  out.raw(R"(],"interrupted":)");
-  out.raw(record.interrupted ? "true" : "false");
-  out.raw(R"(,"failure":)");
-  if (record.failure.empty())
-    out.raw("null");
-  else
-    out.string(record.failure);
-  out.raw(R"(,"seconds":)");
-  out.fixed(record.measured_seconds, 3);
-  const auto string_or_null = [&out](const char* key, const std::string& text) {
-    out.raw(key);
-    if (text.empty())
-      out.raw("null");
-    else
-      out.string(text);
-  };
-  string_or_null(R"(,"operator":)", record.context.operator_name);
-  string_or_null(R"(,"station":)", record.context.station);
-  string_or_null(R"(,"command_line":)", record.context.command_line);
-  out.raw(R"(,"ydscope_version":)");
-  out.string(kVersion);
-  out.raw(R"(,"device":{)");
-  write_device_fields(out, record.started);
-  out.raw(R"(},"criteria":[)");
-  for (std::size_t i = 0; i < record.results.size(); ++i) {
-    const CriterionResult& r = record.results[i];
-    out.raw(i ? R"(,{"id":)" : R"({"id":)");
-    out.string(r.id);
-    out.raw(R"(,"title":)");
-    out.string(r.title);
-    out.raw(R"(,"verdict":)");
-    out.string(r.verdict == Verdict::Pass ? "pass" : "fail");
-    out.raw(R"(,"value":)");
-    out.fixed_or_null(r.value, 6);
-    out.raw(R"(,"measured":)");
-    out.string(r.measured);
-    out.raw(R"(,"limit":)");
-    out.string(r.limit);
-    out.raw("}");
-  }
-  out.raw(R"(],"timing":{"laps":)");
-  out.integer(t.laps);
-  out.raw(R"(,"normal_laps":)");
-  out.integer(t.normal_laps);
-  out.raw(R"(,"interruptions":)");
-  out.integer(t.interruptions);
-  out.raw(R"(,"gaps":[)");
-  for (std::size_t i = 0; i < t.gaps.size(); ++i) {
-    const TimingGap& gap = t.gaps[i];
-    out.raw(i ? R"(,{"from_s":)" : R"({"from_s":)");
-    out.fixed(gap.from_s, 3);
-    out.raw(R"(,"to_s":)");
-    out.fixed(gap.to_s, 3);
-    out.raw(R"(,"turns_lost":)");
-    out.fixed(gap.turns_lost, 1);
-    out.raw(R"(,"cause":)");
-    out.string(gap.cause == TimingGap::Cause::Stall ? "stall" : "lost_zero_packet");
-    out.raw(R"(,"text":)");
-    out.string(describe_timing_gap(gap));
-    out.raw("}");
-  }
-  out.raw("]");
-  out.raw(R"(,"mean_hz":)");
-  out.fixed(t.mean_hz, 4);
-  out.raw(R"(,"jitter_pct":)");
-  out.fixed(t.jitter_pct, 3);
-  out.raw(R"(,"sample_rate_hz":)");
-  out.fixed(t.sample_rate_hz, 1);
-  out.raw(R"(,"points":)");
-  out.integer(t.points);
-  out.raw(R"(,"lost_samples":)");
-  out.integer(t.lost_samples);
-  out.raw("}");
-  out.raw(R"(,"sector":)");
-  if (record.sector) {
-    const SectorStatistics& s = *record.sector;
-    out.raw(R"({"name":)");
-    out.string(record.observations.sector_name.value_or(""));
-    out.raw(R"(,"points":)");
-    out.integer(s.points);
-    out.raw(R"(,"valid":)");
-    out.integer(s.valid);
-    const auto summary = [&out](const char* name, const ValueSummary& v) {
-      out.raw(name);
-      out.raw(R"({"count":)");
-      out.integer(v.count);
-      out.raw(R"(,"mean":)");
-      out.fixed(v.mean, 2);
-      out.raw(R"(,"median":)");
-      out.fixed(v.median, 2);
-      out.raw(R"(,"stddev":)");
-      out.fixed(v.stddev, 2);
-      out.raw(R"(,"min":)");
-      out.fixed(v.min, 2);
-      out.raw(R"(,"max":)");
-      out.fixed(v.max, 2);
-      out.raw("}");
-    };
-    summary(R"(,"range_mm":)", s.range_mm);
-    summary(R"(,"flat_distance_mm":)", s.flat_distance_mm);
-    out.raw("}");
-  } else {
-    out.raw("null");
-  }
-  out.raw("}\n");
+  out.raw("\n");
   out.flush();
 }
 

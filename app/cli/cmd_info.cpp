@@ -6,6 +6,7 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 namespace {
@@ -45,9 +46,11 @@ int run_info(std::span<const std::string> raw) {
   Session session(1);
   const SessionSnapshot s = connect_or_throw(session, config);
   JsonOut out(stdout);
-  out.raw("{");
-  write_device_fields(out, s);
-  out.raw("}\n");
+  {
+    JsonObject line(out.buffer());
+    write_device_fields(line, s);
+  }
+  out.raw("\n");
   out.flush();
   return std::fflush(stdout) == 0 ? kExitOk : kExitFailure;
 }

@@ -1,6 +1,7 @@
 // ydscope-cli ports: the serial ports a lidar may be on, with their USB identity.
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "core/link/port_discovery.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 namespace {
@@ -64,48 +66,34 @@ void print_table(const std::vector<SerialPortInfo>& ports) {
   }
 }
 
-void hex_or_null(JsonOut& out, const std::optional<std::uint16_t>& value) {
-  if (!value) return out.raw("null");
+// "10c4": USB ids as lsusb and udev write them.
+std::optional<std::string> hex_text(const std::optional<std::uint16_t>& value) {
+  if (!value) return std::nullopt;
   char text[8];
   std::snprintf(text, sizeof text, "%04x", *value);
-  out.string(text);
+  return text;
 }
 
 void print_json(const std::vector<SerialPortInfo>& ports) {
   JsonOut out(stdout);
-  out.raw("[");
-  for (std::size_t i = 0; i < ports.size(); ++i) {
-    const auto& port = ports[i];
-    out.raw(i == 0 ? "\n  {\"path\":" : ",\n  {\"path\":");
-    out.string(port.path);
-    out.raw(",\"by_id\":");
-    if (port.by_id.empty())
-      out.raw("null");
-    else
-      out.string(port.by_id);
-    out.raw(",\"alias\":");
-    if (port.alias.empty())
-      out.raw("null");
-    else
-      out.string(port.alias);
-    out.raw(",\"name\":");
-    out.string(port.name);
-    out.raw(",\"vendor_id\":");
-    hex_or_null(out, port.vendor_id);
-    out.raw(",\"product_id\":");
-    hex_or_null(out, port.product_id);
-    out.raw(",\"manufacturer\":");
-    out.string(port.manufacturer);
-    out.raw(",\"product\":");
-    out.string(port.product);
-    out.raw(",\"serial\":");
-    out.string(port.serial);
-    out.raw(",\"driver\":");
-    out.string(port.driver);
-    out.raw(port.known_lidar_bridge ? ",\"known_lidar_bridge\":true" : ",\"known_lidar_bridge\":false");
-    out.raw(port.on_board_uart ? ",\"on_board_uart\":true}" : ",\"on_board_uart\":false}");
+  {
+    JsonArray list(out.buffer(), "  ");
+    for (const SerialPortInfo& port : ports)
+      list.object()
+          .field("path", port.path)
+          .field("by_id", text_or_null(port.by_id))
+          .field("alias", text_or_null(port.alias))
+          .field("name", port.name)
+          .field("vendor_id", hex_text(port.vendor_id))
+          .field("product_id", hex_text(port.product_id))
+          .field("manufacturer", port.manufacturer)
+          .field("product", port.product)
+          .field("serial", port.serial)
+          .field("driver", port.driver)
+          .field("known_lidar_bridge", port.known_lidar_bridge)
+          .field("on_board_uart", port.on_board_uart);
   }
-  out.raw(ports.empty() ? "]\n" : "\n]\n");
+  out.raw("\n");
   out.flush();
 }
 

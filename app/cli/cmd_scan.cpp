@@ -13,7 +13,7 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
 #include "app/cli/link_loss_notes.h"
-#include "app/common/lap_bell.h"
+#include "app/cli/lap_bell.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/lap_output.h"
 #include "app/cli/line_quality.h"
@@ -161,9 +161,12 @@ int run_scan(std::span<const std::string> raw) {
   summary.laps = end.counters.laps;
   summary.overflow_points = end.counters.cut_points;  // "cut_points", as decode prints it
   if (printer.wants_summary()) {
-    write_summary_fields(out, summary, start);
-    health.write_summary_field(out);
-    out.raw("}\n");
+    {
+      JsonObject line(out.buffer());
+      write_summary_fields(line, summary, start);
+      health.write_summary_field(line);
+    }
+    out.raw("\n");
   }
   out.flush();
   std::fflush(stdout);

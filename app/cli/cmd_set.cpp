@@ -9,6 +9,7 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 namespace {
@@ -63,15 +64,12 @@ int run_set(std::span<const std::string> raw) {
   const CommandResult result = future.get();
 
   JsonOut out(stdout);
-  out.raw(R"({"ok":)");
-  out.raw(result.ok ? "true" : "false");
-  out.raw(R"(,"scan_hz":)");
-  out.fixed_or_null(result.scan_hz, 2);
-  out.raw(R"(,"ranging_khz":)");
-  out.integer_or_null(result.ranging_khz);
-  out.raw(R"(,"message":)");
-  out.string(result.message);
-  out.raw("}\n");
+  JsonObject(out.buffer())
+      .field("ok", result.ok)
+      .field("scan_hz", result.scan_hz, 2)
+      .field("ranging_khz", result.ranging_khz)
+      .field("message", result.message);
+  out.raw("\n");
   out.flush();
   std::fflush(stdout);
   if (!result.ok) {

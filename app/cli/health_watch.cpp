@@ -57,19 +57,15 @@ std::optional<std::uint8_t> HealthWatch::lap_health(const Lap& lap, bool ct_info
   return std::nullopt;
 }
 
-void HealthWatch::write_summary_field(JsonOut& out) const {
-  out.raw(R"(,"health":)");
+void HealthWatch::write_summary_field(JsonObject& summary) const {
   if (!worst_) {
-    out.raw("null");
+    summary.field("health", nullptr);
     return;
   }
-  out.raw(R"({"level":)");
-  out.string(health_level_name(worst_->level));
-  out.raw(R"(,"source":)");
-  out.string(worst_->source);
-  out.raw(R"(,"summary":)");
-  out.string(worst_->summary);
-  out.raw("}");
+  summary.object("health")
+      .field("level", health_level_name(worst_->level))
+      .field("source", worst_->source)
+      .field("summary", worst_->summary);
 }
 
 std::string HealthWatch::summary_note() const {

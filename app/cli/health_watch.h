@@ -9,10 +9,10 @@
 #include <optional>
 #include <string>
 
-#include "app/cli/lap_json.h"
 #include "core/link/session.h"
 #include "core/protocol/health_level.h"
 #include "core/protocol/lap.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 
@@ -34,9 +34,9 @@ class HealthWatch {
 
   // Error when any observation was an error; empty when nothing was known all run.
   std::optional<HealthLevel> worst() const { return worst_ ? std::optional(worst_->level) : std::nullopt; }
-  // ,"health":{"level":"error","source":"A5 91","summary":"error (error code 0x00FF)"} for the
-  // worst observation of the run (the first at that level), or ,"health":null.
-  void write_summary_field(JsonOut& out) const;
+  // "health":{"level":"error","source":"A5 91","summary":"error (error code 0x00FF)"} for the
+  // worst observation of the run (the first at that level), or "health":null.
+  void write_summary_field(JsonObject& summary) const;
   // "; the lidar reported a health error: error (error code 0x00FF) (A5 91)" for the worst
   // observation when it was a warning or an error; empty otherwise.
   std::string summary_note() const;

@@ -1,14 +1,11 @@
 #include "app/cli/lap_json.h"
 
-#include <array>
 #include <cerrno>
-#include <charconv>
-#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
 #include "core/export/lap_text.h"
-#include "core/text/json_string.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 
@@ -18,8 +15,6 @@ JsonOut::~JsonOut() {
   } catch (...) {
   }
 }
-
-void JsonOut::string(std::string_view text) { append_json_string(text_, text); }
 
 void JsonOut::flush() {
   // fflush too: stdout on a pipe is fully buffered, and a reader must get each line we hand over.
@@ -32,78 +27,60 @@ void JsonOut::flush() {
 }
 
 namespace {
-void write_type(JsonOut& out, std::string_view type, std::optional<std::string_view> source) {
-  out.raw(R"({"type":)");
-  out.string(type);
-  if (source) {
-    out.raw(R"(,"source":)");
-    out.string(*source);
-  }
+void write_type(JsonObject& line, std::string_view type, std::optional<std::string_view> source) {
+  line.field("type", type);
+  if (source) line.field("source", *source);
+}
+
+std::optional<bool> crc_ok(CrcVerdict crc) {
+  if (crc == CrcVerdict::Ok) return true;
+  if (crc == CrcVerdict::Mismatch) return false;
+  return std::nullopt;
 }
 }  // namespace
 
 void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s,
                std::optional<std::string_view> source) {
-  write_type(out, "lap", source);
-  out.raw(R"(,"index":)");
-  out.integer(lap.index);
-  out.raw(R"(,"t":)");
-  out.fixed(t_s, 6);
-  out.raw(R"(,"points":[)");
-  bool first = true;
-  for (const LapPoint& point : lap.points) {
-    out.raw(first ? "[" : ",[");
-    first = false;
-    append_point_fields(out.buffer(), point);
-    out.raw("]");
+  {
+    JsonObject line(out.buffer());
+    write_type(line, "lap", source);
+    line.field("index", lap.index).field("t", t_s, 6);
+    {
+      JsonArray points = line.array("points");
+      for (const LapPoint& point : lap.points) {
+        std::string& text = points.item_text();
+        text.push_back('[');
+        append_point_fields(text, point);
+        text.push_back(']');
+      }
+    }
+    // G1's CT channel, or the zero packet's CT of a G6/TG read as the field reads it.
+    line.field("scan_hz", lap.ct_info_trusted() ? lap.scan_hz : std::nullopt, 2);
+    line.field("health", health).field("crc_ok", crc_ok(lap.crc));
+    line.field("packets", lap.packets).field("checksum_errors", lap.checksum_errors);
+    // only a damaged stream: a sound lap's line stays as it was
+    if (lap.cut_points > 0) line.field("cut_points", lap.cut_points);
   }
-  const bool trusted = lap.ct_info_trusted();
-  out.raw(R"(],"scan_hz":)");
-  // G1's CT channel, or the zero packet's CT of a G6/TG read as the field reads it.
-  out.fixed_or_null(trusted ? lap.scan_hz : std::nullopt, 2);
-  out.raw(R"(,"health":)");
-  out.integer_or_null(health);
-  out.raw(R"(,"crc_ok":)");
-  out.raw(lap.crc == CrcVerdict::Ok ? "true" : lap.crc == CrcVerdict::Mismatch ? "false" : "null");
-  out.raw(R"(,"packets":)");
-  out.integer(lap.packets);
-  out.raw(R"(,"checksum_errors":)");
-  out.integer(lap.checksum_errors);
-  if (lap.cut_points > 0) {  // only a damaged stream: a sound lap's line stays as it was
-    out.raw(R"(,"cut_points":)");
-    out.integer(lap.cut_points);
-  }
-  out.raw("}\n");
+  out.raw("\n");
   out.maybe_flush();
 }
 
 void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start,
                    std::optional<std::string_view> source) {
-  write_summary_fields(out, counters, start, source);
-  out.raw("}\n");
+  {
+    JsonObject line(out.buffer());
+    write_summary_fields(line, counters, start, source);
+  }
+  out.raw("\n");
 }
 
-void write_summary_fields(JsonOut& out, const DecoderCounters& c, const std::optional<std::string>& start,
+void write_summary_fields(JsonObject& line, const DecoderCounters& c, const std::optional<std::string>& start,
                           std::optional<std::string_view> source) {
-  write_type(out, "summary", source);
-  out.raw(R"(,"bytes":)");
-  out.integer(c.bytes);
-  out.raw(R"(,"packets":)");
-  out.integer(c.packets);
-  out.raw(R"(,"checksum_errors":)");
-  out.integer(c.checksum_errors);
-  out.raw(R"(,"zero_packets":)");
-  out.integer(c.zero_packets);
-  out.raw(R"(,"laps":)");
-  out.integer(c.laps);
-  if (c.overflow_points > 0) {
-    out.raw(R"(,"cut_points":)");
-    out.integer(c.overflow_points);
-  }
-  if (start) {
-    out.raw(R"(,"start":)");
-    out.string(*start);
-  }
+  write_type(line, "summary", source);
+  line.field("bytes", c.bytes).field("packets", c.packets).field("checksum_errors", c.checksum_errors);
+  line.field("zero_packets", c.zero_packets).field("laps", c.laps);
+  if (c.overflow_points > 0) line.field("cut_points", c.overflow_points);
+  if (start) line.field("start", *start);
 }
 
 }  // namespace ydscope::cli

@@ -10,11 +10,12 @@
 
 #include "core/protocol/lap.h"
 #include "core/protocol/scan_decoder.h"
-#include "core/text/number_text.h"
+#include "core/text/json_writer.h"
 
 namespace ydscope::cli {
 
-// Appends numbers with std::to_chars: fast, locale-free and byte-for-byte deterministic.
+// The text a command prints, kept until kFlushAt bytes stand: JSON lines are written into buffer()
+// with core/text/json_writer.h, CSV rows with core/export/lap_text.h.
 class JsonOut {
  public:
   static constexpr std::size_t kFlushAt = 1 << 16;
@@ -23,27 +24,8 @@ class JsonOut {
   ~JsonOut();  // flushes; a failure there is lost, so call flush() yourself to see it
 
   void raw(std::string_view text) { text_.append(text); }
-  void integer(std::uint64_t value) { append_integer(text_, value); }
-  // value rounded to `decimals` places, trailing zeros (and a bare point) removed: 7161.25, 1000.
-  void fixed(double value, int decimals) { append_fixed(text_, value, decimals); }
-  // The text not yet written, for the shared writers of core/export/lap_text.h to append to.
+  // The text not yet written, for the writers to append to.
   std::string& buffer() { return text_; }
-  // The value, or JSON null when there is none.
-  void integer_or_null(const std::optional<std::uint64_t>& value) {
-    if (value)
-      integer(*value);
-    else
-      raw("null");
-  }
-  void fixed_or_null(const std::optional<double>& value, int decimals) {
-    if (value)
-      fixed(*value, decimals);
-    else
-      raw("null");
-  }
-  // A JSON string literal with quotes and escapes. Bytes that are not UTF-8 (a device's serial,
-  // a sysfs name) become U+FFFD, so the output is always valid JSON text.
-  void string(std::string_view text);
   void maybe_flush() {
     if (text_.size() >= kFlushAt) flush();
   }
@@ -67,8 +49,8 @@ void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::ui
 // `source` as in write_lap: one summary per source of a several-lidar recording.
 void write_summary(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start,
                    std::optional<std::string_view> source = std::nullopt);
-// The same without the closing brace and newline, for a summary with more fields.
-void write_summary_fields(JsonOut& out, const DecoderCounters& counters, const std::optional<std::string>& start,
+// Its fields, for a summary with more fields.
+void write_summary_fields(JsonObject& line, const DecoderCounters& counters, const std::optional<std::string>& start,
                           std::optional<std::string_view> source = std::nullopt);
 
 }  // namespace ydscope::cli

@@ -1,16 +1,19 @@
 #include "app/cli/session_cli.h"
 
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
-#include "app/common/device_connect.h"
 #include "core/link/device_probe.h"
 #include "app/common/source_list_options.h"
 #include "core/link/link_address.h"
 
 namespace ydscope::cli {
+
+namespace {
+// Baud probing at 4 rates with retries and start-up commands stays well inside this.
+constexpr std::chrono::seconds kConnectPatience{60};
+}  // namespace
 
 std::set<std::string> session_value_options(std::set<std::string> more) {
   more.insert({"port", "model", "baud", "conventions"});
@@ -33,25 +36,16 @@ SessionConfig session_config_from(const Arguments& args, bool scan) {
   return config;
 }
 
-SessionConfig session_config_awaiting(const Arguments& args, const std::string& address) {
-  SessionConfig config =
-      session_config_for(address, args.value("model"), args.value("baud"), /*scan=*/true, /*port_must_exist=*/false);
-  config.reading = reading_option(args);
-  return config;
-}
-
 SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model_option,
-                                 const std::optional<std::string>& baud_option, bool scan, bool port_must_exist) {
+                                 const std::optional<std::string>& baud_option, bool scan) {
   SessionConfig config;
   config.address = address;
   std::string error;
-  // A port still to be found (check --loop without --port) has no address to judge yet.
-  const auto link = port_must_exist || !address.empty() ? parse_link_address(config.address, error)
-                                                        : std::optional<LinkAddress>(LinkAddress{});
+  const auto link = parse_link_address(config.address, error);
   if (!link) throw UsageError(error);
   // A usage error like any other mistake in the command line (2), from every command alike.
   std::error_code ec;
-  if (port_must_exist && link->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(link->path, ec))
+  if (link->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(link->path, ec))
     throw UsageError("there is no port " + link->path +
                      "; is the lidar plugged in? `ydscope-cli ports` lists the ones attached");
   const std::string model = model_option.value_or("auto");
@@ -73,63 +67,49 @@ SessionConfig session_config_for(const std::string& address, const std::optional
 }
 
 SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config) {
-  const SessionSnapshot s = connect_and_wait(session, config);
-  if (!s.message.empty()) std::fprintf(stderr, "ydscope-cli: warning: %s\n", s.message.c_str());
-  return s;
+  session.connect(config);
+  const LinkState goal = config.scan ? LinkState::Scanning : LinkState::Ready;
+  // A session that would reconnect reports its first failure too: the user is there to read it.
+  const SessionSnapshot s = session.wait_until(
+      [goal](const SessionSnapshot& x) {
+        return x.state == goal || x.state == LinkState::Failed || x.state == LinkState::Reconnecting;
+      },
+      kConnectPatience);
+  if (s.state == goal) {
+    // A session that reached its goal still explains anything odd on the way (a forced model the
+    // device disagrees with, a health question it did not answer): show it, as a warning.
+    if (!s.message.empty()) std::fprintf(stderr, "ydscope-cli: warning: %s\n", s.message.c_str());
+    return s;
+  }
+  if (s.state == LinkState::Failed || s.state == LinkState::Reconnecting) throw std::runtime_error(s.message);
+  throw std::runtime_error("gave up after " + std::to_string(kConnectPatience.count()) + " s waiting for " +
+                           config.address + " (" + describe_snapshot(s) + ")");
 }
 
-void write_device_fields(JsonOut& out, const SessionSnapshot& s) {
-  out.raw(R"("model":)");
-  if (s.device && s.device->profile)
-    out.string(s.device->profile->name);
-  else
-    out.raw("null");
+void write_device_fields(JsonObject& device, const SessionSnapshot& s) {
+  device.field("model", s.device && s.device->profile ? std::optional(s.device->profile->name) : std::nullopt);
   if (s.device) {
-    out.raw(R"(,"model_code":)");
-    out.integer(s.device->model_code);
-    out.raw(R"(,"firmware":)");
-    out.string(std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor));
-    out.raw(R"(,"hardware":)");
-    out.integer(s.device->hardware);
-    out.raw(R"(,"serial":)");
-    out.string(s.device->serial);
+    device.field("model_code", s.device->model_code);
+    device.field("firmware", std::to_string(s.device->firmware.major) + "." + std::to_string(s.device->firmware.minor));
+    device.field("hardware", s.device->hardware).field("serial", s.device->serial);
   }
-  out.raw(R"(,"health":)");
-  if (s.health) {
-    out.raw(R"({"command":)");
-    out.string(command_bytes_text(s.health->command));
-    out.raw(R"(,"status":)");
-    out.integer(s.health->status);
-    out.raw(R"(,"error_code":)");
-    out.integer(s.health->error_code);
-    out.raw(R"(,"summary":)");
-    out.string(s.health->summary);
-    out.raw("}");
-  } else {
-    out.raw("null");
-  }
-  out.raw(R"(,"scan_hz":)");
-  out.fixed_or_null(s.scan_hz, 2);
-  out.raw(R"(,"ranging_khz":)");
-  out.integer_or_null(s.ranging_khz);
-  out.raw(R"(,"port":)");
-  out.string(s.link);
-  out.raw(R"(,"baud":)");
-  out.integer(s.baud);
-  out.raw(R"(,"distance_scale":)");
-  out.fixed(s.distance_scale, 6);
-  out.raw(R"(,"conventions":)");
-  if (s.conventions) {
-    out.raw(R"({"id":)");
-    out.string(s.conventions->id);
-    out.raw(R"(,"reading":)");
-    out.string(reading_name(s.conventions->reading));
-    out.raw(R"(,"label":)");
-    out.string(s.conventions->label);
-    out.raw("}");
-  } else {
-    out.raw("null");
-  }
+  if (s.health)
+    device.object("health")
+        .field("command", command_bytes_text(s.health->command))
+        .field("status", s.health->status)
+        .field("error_code", s.health->error_code)
+        .field("summary", s.health->summary);
+  else
+    device.field("health", nullptr);
+  device.field("scan_hz", s.scan_hz, 2).field("ranging_khz", s.ranging_khz);
+  device.field("port", s.link).field("baud", s.baud).field("distance_scale", s.distance_scale, 6);
+  if (s.conventions)
+    device.object("conventions")
+        .field("id", s.conventions->id)
+        .field("reading", reading_name(s.conventions->reading))
+        .field("label", s.conventions->label);
+  else
+    device.field("conventions", nullptr);
 }
 
 }  // namespace ydscope::cli

@@ -3,33 +3,15 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <sstream>
+
+#include "core/text/json_writer.h"
 
 namespace ydscope::foxglove {
 namespace {
 
 namespace pt = boost::property_tree;
-
-void append_number(std::string& out, double value) {
-  if (!std::isfinite(value)) {  // JSON has no NaN or infinity
-    out += "null";
-    return;
-  }
-  char text[32];
-  const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
-  out.append(text, ec == std::errc() ? end : text);
-}
-
-void append_value(std::string& out, const std::variant<double, bool, std::string>& value) {
-  if (const double* d = std::get_if<double>(&value))
-    append_number(out, *d);
-  else if (const bool* b = std::get_if<bool>(&value))
-    out += *b ? "true" : "false";
-  else
-    append_json_string(out, std::get<std::string>(value));
-}
 
 // property_tree keeps every JSON scalar as text: numbers, booleans and strings look alike, so a
 // value is read back as the most specific thing it spells.
@@ -102,67 +84,69 @@ std::vector<std::string> string_list(const pt::ptree* list) {
 }  // namespace
 
 std::string server_info_json(std::string_view name, std::string_view session_id) {
-  std::string out = R"({"op":"serverInfo","name":)";
-  append_json_string(out, name);
-  out += R"(,"capabilities":["parameters","parametersSubscribe"],"supportedEncodings":[],"metadata":{},"sessionId":)";
-  append_json_string(out, session_id);
-  out += "}";
+  std::string out;
+  JsonObject info(out);
+  info.field("op", "serverInfo").field("name", name);
+  info.array("capabilities").item("parameters").item("parametersSubscribe");
+  info.array("supportedEncodings").close();
+  info.object("metadata").close();
+  info.field("sessionId", session_id);
+  info.close();
   return out;
 }
 
 std::string advertise_json(const std::vector<ChannelAd>& channels) {
-  std::string out = R"({"op":"advertise","channels":[)";
-  for (std::size_t i = 0; i < channels.size(); ++i) {
-    const ChannelAd& c = channels[i];
-    if (i) out += ",";
-    out += R"({"id":)" + std::to_string(c.id) + R"(,"topic":)";
-    append_json_string(out, c.topic);
-    out += R"(,"encoding":"cdr","schemaName":)";
-    append_json_string(out, c.schema_name);
-    out += R"(,"schemaEncoding":"ros2msg","schema":)";
-    append_json_string(out, c.schema);
-    out += "}";
+  std::string out;
+  JsonObject advertise(out);
+  advertise.field("op", "advertise");
+  {
+    JsonArray list = advertise.array("channels");
+    for (const ChannelAd& c : channels)
+      list.object()
+          .field("id", c.id)
+          .field("topic", c.topic)
+          .field("encoding", "cdr")
+          .field("schemaName", c.schema_name)
+          .field("schemaEncoding", "ros2msg")
+          .field("schema", c.schema);
   }
-  out += "]}";
+  advertise.close();
   return out;
 }
 
 std::string status_json(StatusLevel level, std::string_view message, std::string_view id) {
-  std::string out = R"({"op":"status","level":)" + std::to_string(static_cast<int>(level)) + R"(,"message":)";
-  append_json_string(out, message);
-  if (!id.empty()) {
-    out += R"(,"id":)";
-    append_json_string(out, id);
-  }
-  out += "}";
+  std::string out;
+  JsonObject status(out);
+  status.field("op", "status").field("level", static_cast<int>(level)).field("message", message);
+  if (!id.empty()) status.field("id", id);
+  status.close();
   return out;
 }
 
 std::string remove_status_json(std::string_view id) {
-  std::string out = R"({"op":"removeStatus","statusIds":[)";
-  append_json_string(out, id);
-  out += "]}";
+  std::string out;
+  JsonObject remove(out);
+  remove.field("op", "removeStatus").array("statusIds").item(id);
+  remove.close();
   return out;
 }
 
 std::string parameter_values_json(const std::vector<Parameter>& parameters,
                                   const std::optional<std::string>& request_id) {
-  std::string out = R"({"op":"parameterValues","parameters":[)";
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (i) out += ",";
-    out += R"({"name":)";
-    append_json_string(out, parameters[i].name);
-    out += R"(,"value":)";
-    append_value(out, parameters[i].value);
-    if (std::holds_alternative<double>(parameters[i].value)) out += R"(,"type":"float64")";
-    out += "}";
+  std::string out;
+  JsonObject values(out);
+  values.field("op", "parameterValues");
+  {
+    JsonArray list = values.array("parameters");
+    for (const Parameter& p : parameters) {
+      JsonObject parameter = list.object();
+      parameter.field("name", p.name);
+      std::visit([&parameter](const auto& value) { parameter.field("value", value); }, p.value);
+      if (std::holds_alternative<double>(p.value)) parameter.field("type", "float64");
+    }
   }
-  out += "]";
-  if (request_id) {
-    out += R"(,"id":)";
-    append_json_string(out, *request_id);
-  }
-  out += "}";
+  if (request_id) values.field("id", *request_id);
+  values.close();
   return out;
 }
 
