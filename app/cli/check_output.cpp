@@ -6,6 +6,7 @@
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
 #include "core/text/json_writer.h"
+#include "core/version.h"
 
 namespace ydscope::cli {
 
@@ -124,6 +125,10 @@ void print_check_json(std::FILE* file, const CheckRecord& record) {
     }
     check.field("interrupted", record.interrupted).field("failure", text_or_null(record.failure));
     check.field("seconds", record.measured_seconds, 3);
+    check.field("operator", text_or_null(record.context.operator_name));
+    check.field("station", text_or_null(record.context.station));
+    check.field("command_line", text_or_null(record.context.command_line));
+    check.field("ydscope_version", kVersion);
     {
       JsonObject device = check.object("device");
       write_device_fields(device, record.started);

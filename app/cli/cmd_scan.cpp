@@ -13,7 +13,7 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
 #include "app/cli/link_loss_notes.h"
-#include "app/cli/lap_bell.h"
+#include "app/common/lap_bell.h"
 #include "app/cli/lap_json.h"
 #include "app/cli/lap_output.h"
 #include "app/cli/line_quality.h"

@@ -1,19 +1,16 @@
 #include "app/cli/session_cli.h"
 
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/common/device_connect.h"
 #include "core/link/device_probe.h"
 #include "app/common/source_list_options.h"
 #include "core/link/link_address.h"
 
 namespace ydscope::cli {
-
-namespace {
-// Baud probing at 4 rates with retries and start-up commands stays well inside this.
-constexpr std::chrono::seconds kConnectPatience{60};
-}  // namespace
 
 std::set<std::string> session_value_options(std::set<std::string> more) {
   more.insert({"port", "model", "baud", "conventions"});
@@ -36,16 +33,25 @@ SessionConfig session_config_from(const Arguments& args, bool scan) {
   return config;
 }
 
+SessionConfig session_config_awaiting(const Arguments& args, const std::string& address) {
+  SessionConfig config =
+      session_config_for(address, args.value("model"), args.value("baud"), /*scan=*/true, /*port_must_exist=*/false);
+  config.reading = reading_option(args);
+  return config;
+}
+
 SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model_option,
-                                 const std::optional<std::string>& baud_option, bool scan) {
+                                 const std::optional<std::string>& baud_option, bool scan, bool port_must_exist) {
   SessionConfig config;
   config.address = address;
   std::string error;
-  const auto link = parse_link_address(config.address, error);
+  // A port still to be found (check --loop without --port) has no address to judge yet.
+  const auto link = port_must_exist || !address.empty() ? parse_link_address(config.address, error)
+                                                        : std::optional<LinkAddress>(LinkAddress{});
   if (!link) throw UsageError(error);
   // A usage error like any other mistake in the command line (2), from every command alike.
   std::error_code ec;
-  if (link->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(link->path, ec))
+  if (port_must_exist && link->kind == LinkAddress::Kind::Serial && !std::filesystem::exists(link->path, ec))
     throw UsageError("there is no port " + link->path +
                      "; is the lidar plugged in? `ydscope-cli ports` lists the ones attached");
   const std::string model = model_option.value_or("auto");
@@ -67,23 +73,9 @@ SessionConfig session_config_for(const std::string& address, const std::optional
 }
 
 SessionSnapshot connect_or_throw(Session& session, const SessionConfig& config) {
-  session.connect(config);
-  const LinkState goal = config.scan ? LinkState::Scanning : LinkState::Ready;
-  // A session that would reconnect reports its first failure too: the user is there to read it.
-  const SessionSnapshot s = session.wait_until(
-      [goal](const SessionSnapshot& x) {
-        return x.state == goal || x.state == LinkState::Failed || x.state == LinkState::Reconnecting;
-      },
-      kConnectPatience);
-  if (s.state == goal) {
-    // A session that reached its goal still explains anything odd on the way (a forced model the
-    // device disagrees with, a health question it did not answer): show it, as a warning.
-    if (!s.message.empty()) std::fprintf(stderr, "ydscope-cli: warning: %s\n", s.message.c_str());
-    return s;
-  }
-  if (s.state == LinkState::Failed || s.state == LinkState::Reconnecting) throw std::runtime_error(s.message);
-  throw std::runtime_error("gave up after " + std::to_string(kConnectPatience.count()) + " s waiting for " +
-                           config.address + " (" + describe_snapshot(s) + ")");
+  const SessionSnapshot s = connect_and_wait(session, config);
+  if (!s.message.empty()) std::fprintf(stderr, "ydscope-cli: warning: %s\n", s.message.c_str());
+  return s;
 }
 
 void write_device_fields(JsonObject& device, const SessionSnapshot& s) {

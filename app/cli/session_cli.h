@@ -20,9 +20,12 @@ std::optional<Reading> reading_option(const Arguments& args);
 // --port PATH|tcp://host:port (required), --model auto|MODEL, --baud B|auto, --conventions.
 // UsageError on mistakes.
 SessionConfig session_config_from(const Arguments& args, bool scan);
+// The same for a port that may not be there yet (check --loop waits for each unit): --port's
+// absence is no mistake, `address` is the path to wait for.
+SessionConfig session_config_awaiting(const Arguments& args, const std::string& address);
 // The same from the texts of one port's options (several lidars: source_options.h).
 SessionConfig session_config_for(const std::string& address, const std::optional<std::string>& model,
-                                 const std::optional<std::string>& baud, bool scan);
+                                 const std::optional<std::string>& baud, bool scan, bool port_must_exist = true);
 
 // Connects and waits for the device to be Ready (or Scanning when config.scan); throws
 // std::runtime_error with the session's sentence when it fails.
