@@ -1,6 +1,7 @@
 #include "core/link/command_sequencer.h"
 
 #include <cmath>
+#include <span>
 
 #include "core/link/device_probe.h"
 
@@ -56,17 +57,19 @@ asio::awaitable<Step<Exchange>> CommandSequencer::command(Command command) {
   co_return step;
 }
 
-asio::awaitable<Step<DeviceInfo>> CommandSequencer::device_info() {
-  Step<DeviceInfo> step;
-  auto reply = co_await command(Command::DeviceInfo);
-  step.link_lost = reply.link_lost;
-  if (!reply.ok()) {
-    step.error = reply.error;
-    co_return step;
-  }
-  step.value = parse_device_info(reply.value->bytes());
-  if (!step.value) step.error = "the device-info reply on " + link_text() + " has the wrong size";
+template <class T, class Parse>
+asio::awaitable<Step<T>> CommandSequencer::query(Command query_command, Parse parse, std::string what,
+                                                 std::string wrong) {
+  const Step<Exchange> reply = co_await command(query_command);
+  if (!reply.ok()) co_return failure_of<T>(reply);
+  Step<T> step;
+  step.value = parse(reply.value->bytes());
+  if (!step.value) step.error = "the " + what + " reply on " + link_text() + " " + wrong;
   co_return step;
+}
+
+asio::awaitable<Step<DeviceInfo>> CommandSequencer::device_info() {
+  return query<DeviceInfo>(Command::DeviceInfo, &parse_device_info, "device-info", "has the wrong size");
 }
 
 asio::awaitable<Step<HealthReport>> CommandSequencer::health(const ModelProfile& profile) {
@@ -95,18 +98,11 @@ asio::awaitable<Step<HealthReport>> CommandSequencer::health(const ModelProfile&
 }
 
 asio::awaitable<Step<double>> CommandSequencer::scan_hz() {
-  Step<double> step;
-  auto reply = co_await command(Command::ScanHzGet);
-  step.link_lost = reply.link_lost;
-  if (!reply.ok()) {
-    step.error = reply.error;
-    co_return step;
-  }
-  if (const auto frequency = parse_scan_frequency(reply.value->bytes()))
-    step.value = frequency->hz();
-  else
-    step.error = "the scan-frequency reply on " + link_text() + " has the wrong size";
-  co_return step;
+  const auto hz = [](std::span<const std::uint8_t> bytes) -> std::optional<double> {
+    const auto frequency = parse_scan_frequency(bytes);
+    return frequency ? std::optional(frequency->hz()) : std::nullopt;
+  };
+  return query<double>(Command::ScanHzGet, hz, "scan-frequency", "has the wrong size");
 }
 
 asio::awaitable<Step<double>> CommandSequencer::step_scan_hz(const ModelProfile& profile, double target_hz) {
@@ -123,12 +119,7 @@ asio::awaitable<Step<double>> CommandSequencer::step_scan_hz(const ModelProfile&
     const auto next = next_scan_hz_step(current, target_hz);
     if (!next) break;
     auto reply = co_await command(*next);
-    if (!reply.ok()) {
-      step.value.reset();
-      step.error = reply.error;
-      step.link_lost = reply.link_lost;
-      co_return step;
-    }
+    if (!reply.ok()) co_return failure_of<double>(reply);
     const auto answered = parse_scan_frequency(reply.value->bytes());
     if (!answered) break;
     if (std::lround(answered->hz() * 100) == std::lround(current * 100)) break;  // the device stopped moving
@@ -144,18 +135,9 @@ asio::awaitable<Step<double>> CommandSequencer::step_scan_hz(const ModelProfile&
 }
 
 asio::awaitable<Step<std::uint16_t>> CommandSequencer::ranging_khz(const ModelProfile& profile) {
-  Step<std::uint16_t> step;
-  auto reply = co_await command(Command::RangingGet);
-  step.link_lost = reply.link_lost;
-  if (!reply.ok()) {
-    step.error = reply.error;
-    co_return step;
-  }
-  step.value = parse_ranging_khz(profile, reply.value->bytes());
-  if (!step.value)
-    step.error =
-        "the ranging-frequency reply on " + link_text() + " is not in " + std::string(profile.name) + "'s table";
-  co_return step;
+  const auto khz = [&profile](std::span<const std::uint8_t> bytes) { return parse_ranging_khz(profile, bytes); };
+  return query<std::uint16_t>(Command::RangingGet, khz, "ranging-frequency",
+                              "is not in " + std::string(profile.name) + "'s table");
 }
 
 asio::awaitable<Step<std::uint16_t>> CommandSequencer::cycle_ranging_to(const ModelProfile& profile,
@@ -176,12 +158,7 @@ asio::awaitable<Step<std::uint16_t>> CommandSequencer::cycle_ranging_to(const Mo
   // One cycle per table entry reaches any value; one more tolerates a slow first answer.
   for (std::size_t i = 0; step.ok() && *step.value != target_khz && i <= profile.ranging_khz.size(); ++i) {
     auto reply = co_await command(Command::RangingCycle);
-    if (!reply.ok()) {
-      step.value.reset();
-      step.error = reply.error;
-      step.link_lost = reply.link_lost;
-      co_return step;
-    }
+    if (!reply.ok()) co_return failure_of<std::uint16_t>(reply);
     step = co_await ranging_khz(profile);
   }
   if (step.ok() && *step.value != target_khz)
@@ -194,12 +171,7 @@ asio::awaitable<Step<bool>> CommandSequencer::power_down_protection(bool on) {
   Step<bool> step;
   for (int toggle = 0; toggle < 2; ++toggle) {
     auto reply = co_await command(Command::PowerDownProtection);
-    if (!reply.ok()) {
-      step.value.reset();
-      step.error = reply.error;
-      step.link_lost = reply.link_lost;
-      co_return step;
-    }
+    if (!reply.ok()) co_return failure_of<bool>(reply);
     step.value = parse_power_down_protection(reply.value->bytes());
     if (!step.value) {
       step.error = "the power-down protection reply on " + link_text() + " is not 00 or 01";

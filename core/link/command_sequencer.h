@@ -11,8 +11,9 @@
 
 #include <boost/asio/awaitable.hpp>
 
-#include "core/link/session.h"
 #include "core/link/session_io.h"
+#include "core/link/session_snapshot.h"
+#include "core/protocol/commands.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/reply.h"
 
@@ -25,6 +26,15 @@ struct Step {
   bool link_lost = false;  // the link died: the supervisor reconnects rather than reporting
   bool ok() const { return value.has_value() && error.empty(); }
 };
+
+// A step that failed because a step it waited on failed: that one's sentence and link loss.
+template <class T, class Cause>
+Step<T> failure_of(const Step<Cause>& cause) {
+  Step<T> step;
+  step.error = cause.error;
+  step.link_lost = cause.link_lost;
+  return step;
+}
 
 class CommandSequencer {
  public:
@@ -58,6 +68,10 @@ class CommandSequencer {
 
  private:
   std::string link_text();
+  // `command`, then its reply read by `parse` (bytes to an optional value): the value, or the
+  // command's failure, or "the <what> reply on <link> <wrong>" when parse finds nothing.
+  template <class T, class Parse>
+  boost::asio::awaitable<Step<T>> query(Command command, Parse parse, std::string what, std::string wrong);
 
   SessionIo& io_;
   std::chrono::milliseconds reply_timeout_{1000};

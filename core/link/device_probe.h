@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "core/link/session.h"
+#include "core/link/session_snapshot.h"
 #include "core/protocol/commands.h"
 #include "core/protocol/model_profile.h"
 #include "core/protocol/reply.h"
