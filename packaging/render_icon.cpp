@@ -1,12 +1,12 @@
 // Build-time tool: writes the app's icon as a PNG of the given size, for the hicolor theme. The
-// pixels are the ones the window uses (ui/view/app_icon.h), so the installed icons match it.
+// pixels are the ones the window uses (ui/view/window/app_icon.h), so the installed icons match it.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include <stb_image_write.h>
 
-#include "ui/view/app_icon.h"
+#include "ui/view/window/app_icon.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

@@ -11,7 +11,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "ui/panels/panels.h"
-#include "ui/view/remembered_sources.h"
+#include "ui/view/settings/remembered_sources.h"
 
 namespace ydscope::gui {
 namespace {

@@ -18,8 +18,8 @@
 #include "app/gui/watched_sectors.h"
 #include "app/gui/window_events.h"
 #include "ui/panels/ui_model.h"
-#include "ui/view/booth_calm.h"
-#include "ui/view/settings.h"
+#include "ui/view/status/booth_calm.h"
+#include "ui/view/settings/settings.h"
 
 struct GLFWwindow;
 

@@ -6,7 +6,7 @@
 #include "app/gui/app.h"
 #include "app/gui/command_line_sources.h"
 #include "app/gui/source_origin.h"
-#include "ui/view/remembered_sources.h"
+#include "ui/view/settings/remembered_sources.h"
 
 namespace ydscope::gui {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <GLFW/glfw3.h>
 
-#include "ui/view/booth_calm.h"
+#include "ui/view/status/booth_calm.h"
 
 namespace ydscope::gui {
 

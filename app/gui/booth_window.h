@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <optional>
 
-#include "ui/view/settings.h"
+#include "ui/view/settings/settings.h"
 
 struct GLFWwindow;
 

@@ -23,9 +23,9 @@
 #include "core/version.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
-#include "ui/view/app_icon.h"
-#include "ui/view/frame_pacing.h"
-#include "ui/view/window_fit.h"
+#include "ui/view/window/app_icon.h"
+#include "ui/view/window/frame_pacing.h"
+#include "ui/view/window/window_fit.h"
 
 namespace {
 
@@ -79,7 +79,7 @@ int run(const ydscope::gui::AppOptions& options) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 0);
-  // The first window fits the monitor's work area (ui/view/window_fit.h); a window manager may
+  // The first window fits the monitor's work area (ui/view/window/window_fit.h); a window manager may
   // then maximise one that had to shrink.
   ydscope::ui::ScreenRect work_area;
   float monitor_scale = 1.0f;

@@ -9,7 +9,7 @@
 #include <stb_image_write.h>
 
 #include "ui/render/gl.h"
-#include "ui/view/whole_file.h"
+#include "ui/view/export/whole_file.h"
 
 namespace ydscope::gui {
 

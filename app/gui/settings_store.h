@@ -1,10 +1,10 @@
 #pragma once
-// Where the app keeps what it remembers between runs: settings.ini (ui/view/settings.h) and
+// Where the app keeps what it remembers between runs: settings.ini (ui/view/settings/settings.h) and
 // ImGui's imgui.ini (the panels' layout), both in the user's config directory; or nowhere, for
 // runs that must not depend on a user's layout or change it (screenshots, tests).
 #include <string>
 
-#include "ui/view/settings.h"
+#include "ui/view/settings/settings.h"
 
 namespace ydscope::gui {
 

@@ -5,8 +5,8 @@
 
 #include "core/link/recording_control.h"
 #include "app/gui/screenshot.h"
-#include "ui/view/lap_csv.h"
-#include "ui/view/lap_mcap.h"
+#include "ui/view/export/lap_csv.h"
+#include "ui/view/export/lap_mcap.h"
 
 namespace ydscope::gui {
 namespace {

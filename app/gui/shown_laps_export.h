@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/link/session_snapshot.h"
-#include "ui/view/lap_history.h"
+#include "ui/view/scene/lap_history.h"
 
 namespace ydscope::gui {
 

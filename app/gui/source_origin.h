@@ -11,7 +11,7 @@
 
 #include "app/gui/app_options.h"
 #include "ui/panels/ui_request.h"
-#include "ui/view/settings.h"
+#include "ui/view/settings/settings.h"
 
 namespace ydscope::gui {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "ui/panels/panels.h"
-#include "ui/view/file_names.h"
+#include "ui/view/export/file_names.h"
 
 namespace ydscope::gui {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "app/gui/source_origin.h"
-#include "ui/view/health_names.h"
+#include "ui/view/status/health_names.h"
 
 namespace ydscope::gui {
 

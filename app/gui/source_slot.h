@@ -15,10 +15,10 @@
 #include "core/link/session.h"
 #include "ui/panels/panel_edits.h"
 #include "ui/panels/ui_model.h"
-#include "ui/view/lap_history.h"
-#include "ui/view/lap_phase.h"
-#include "ui/view/motion_background.h"
-#include "ui/view/source_set.h"
+#include "ui/view/scene/lap_history.h"
+#include "ui/view/scene/lap_phase.h"
+#include "ui/view/scene/motion_background.h"
+#include "ui/view/scene/source_set.h"
 
 namespace ydscope::gui {
 

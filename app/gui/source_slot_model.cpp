@@ -1,12 +1,12 @@
 // SourceSlot, the panels' model of a source from its session's snapshot: the health timeline and
 // alerts, the counters' plots, the replay's position, and what the view must say about the
-// picture (ui/view/view_state.h).
+// picture (ui/view/status/view_state.h).
 #include <chrono>
 #include <cstdio>
 
 #include "app/gui/source_slot.h"
 #include "core/protocol/commands.h"
-#include "ui/view/health_names.h"
+#include "ui/view/status/health_names.h"
 
 namespace ydscope::gui {
 

@@ -10,7 +10,7 @@
 
 #include "app/gui/source_list.h"
 #include "ui/render/polar_view.h"
-#include "ui/view/settings.h"
+#include "ui/view/settings/settings.h"
 
 namespace ydscope::gui {
 

@@ -8,8 +8,8 @@
 
 #include "app/gui/source_list.h"
 #include "ui/render/polar_view.h"
-#include "ui/view/sector_watch.h"
-#include "ui/view/settings.h"
+#include "ui/view/history/sector_watch.h"
+#include "ui/view/settings/settings.h"
 
 namespace ydscope::gui {
 

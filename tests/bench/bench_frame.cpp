@@ -12,10 +12,10 @@
 #include <GLFW/glfw3.h>
 
 #include "ui/render/polar_renderer.h"
-#include "ui/view/grid_geometry.h"
-#include "ui/view/grid_layout.h"
-#include "ui/view/lap_history.h"
-#include "ui/view/point_cloud.h"
+#include "ui/view/geometry/grid_geometry.h"
+#include "ui/view/geometry/grid_layout.h"
+#include "ui/view/scene/lap_history.h"
+#include "ui/view/scene/point_cloud.h"
 
 namespace {
 

@@ -15,7 +15,7 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-// Motion mode's colours (ui/view/colour_map.cpp motion_colour), with some room for blending.
+// Motion mode's colours (ui/view/scene/colour_map.cpp motion_colour), with some room for blending.
 bool hot(const unsigned char* p) { return p[0] > 210 && p[1] > 60 && p[1] < 140 && p[2] < 100; }
 bool calm(const unsigned char* p) {
   return std::abs(p[0] - 88) < 30 && std::abs(p[1] - 128) < 30 && std::abs(p[2] - 170) < 30;

@@ -17,7 +17,7 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-// Taps E until the app writes a CSV not in `seen` (whole once it has its name: ui/view/whole_file.h);
+// Taps E until the app writes a CSV not in `seen` (whole once it has its name: ui/view/export/whole_file.h);
 // its text, or empty after `timeout`.
 std::string export_csv(X11Hands& hands, const std::filesystem::path& dir, std::set<std::string>& seen,
                        std::chrono::seconds timeout = std::chrono::seconds(15)) {

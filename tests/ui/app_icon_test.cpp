@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ui/view/app_icon.h"
+#include "ui/view/window/app_icon.h"
 
 namespace ydscope::ui {
 namespace {

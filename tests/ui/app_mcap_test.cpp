@@ -28,7 +28,7 @@ std::vector<std::uint8_t> file_bytes(const std::filesystem::path& path) {
 }
 
 // A file with `extension` in `dir` that is not in `seen` (then added), or empty after `timeout`; it
-// is whole once it has its name (ui/view/whole_file.h). `poke` runs before each look (a key tap
+// is whole once it has its name (ui/view/export/whole_file.h). `poke` runs before each look (a key tap
 // that asks for the file).
 template <class Poke>
 std::filesystem::path new_file(const std::filesystem::path& dir, const std::string& extension,

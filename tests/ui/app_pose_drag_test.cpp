@@ -8,8 +8,8 @@
 #include <sstream>
 
 // Ours before Xlib's, whose macros (None, ...) would rename our enumerators.
-#include "ui/view/settings.h"
-#include "ui/view/source_set.h"
+#include "ui/view/settings/settings.h"
+#include "ui/view/scene/source_set.h"
 
 #include "app_test_support.h"
 #include "hands_on_app.h"

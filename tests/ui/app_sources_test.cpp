@@ -8,7 +8,7 @@
 
 #include "app_test_support.h"
 #include "private_display.h"
-#include "ui/view/source_set.h"
+#include "ui/view/scene/source_set.h"
 
 namespace ydscope::test {
 namespace {

@@ -138,7 +138,7 @@ inline Image screenshot_of(pid_t app, const std::filesystem::path& dir, std::set
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
       const std::string name = entry.path().filename().string();
       if (entry.path().extension() != ".png" || seen.count(name)) continue;
-      // Whole once it has its name (ui/view/whole_file.h); one that does not decode is not taken.
+      // Whole once it has its name (ui/view/export/whole_file.h); one that does not decode is not taken.
       if (Image image = load_png(entry.path().string())) {
         seen.insert(name);
         return image;

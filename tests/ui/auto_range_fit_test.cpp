@@ -1,6 +1,6 @@
 // Auto-range refits on a real change of the scan, and at once when it is turned back on after a
 // wheel zoom (the A key or the checkbox), even though the scan itself did not change.
-#include "ui/view/auto_range_fit.h"
+#include "ui/view/geometry/auto_range_fit.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The booth view's calm: banners fade, the pointer hides at rest, persistence is long; the
 // windowed view keeps each as it was.
-#include "ui/view/booth_calm.h"
+#include "ui/view/status/booth_calm.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "ui/view/colour_map.h"
-#include "ui/view/lap_history.h"
-#include "ui/view/point_cloud.h"
+#include "ui/view/scene/colour_map.h"
+#include "ui/view/scene/lap_history.h"
+#include "ui/view/scene/point_cloud.h"
 
 namespace ydscope::ui {
 namespace {

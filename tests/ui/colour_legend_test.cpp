@@ -1,6 +1,6 @@
 // The booth view's legend says what the colours mean in the mode in use, with the cloud's own
 // colours: metres under a range bar, newest to oldest for lap age, the flags by name.
-#include "ui/view/colour_legend.h"
+#include "ui/view/scene/colour_legend.h"
 
 #include <gtest/gtest.h>
 

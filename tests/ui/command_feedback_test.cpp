@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "ui/view/command_feedback.h"
-#include "ui/view/file_names.h"
+#include "ui/view/status/command_feedback.h"
+#include "ui/view/export/file_names.h"
 
 namespace ydscope::ui {
 namespace {

@@ -1,7 +1,7 @@
-// Every character the app writes is in its fonts' glyph ranges (ui/view/glyph_ranges.h), so none
+// Every character the app writes is in its fonts' glyph ranges (ui/view/window/glyph_ranges.h), so none
 // is drawn as "?": the string literals of ui/, app/gui/ and core/ (whose sentences the app shows)
 // are read, raw UTF-8 and \xHH escapes alike, and each non-ASCII character is looked up.
-#include "ui/view/glyph_ranges.h"
+#include "ui/view/window/glyph_ranges.h"
 
 #include <gtest/gtest.h>
 

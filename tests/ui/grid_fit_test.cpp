@@ -2,7 +2,7 @@
 // 1080p full-screen view once drew fourteen), and no label in the band where the status line is.
 #include <gtest/gtest.h>
 
-#include "ui/view/grid_layout.h"
+#include "ui/view/geometry/grid_layout.h"
 
 namespace ydscope::ui {
 namespace {

@@ -1,7 +1,7 @@
 // Health problems reach the view as short lines, worst first; a healthy device gives none.
 #include <gtest/gtest.h>
 
-#include "ui/view/health_alerts.h"
+#include "ui/view/status/health_alerts.h"
 
 namespace ydscope::ui {
 namespace {

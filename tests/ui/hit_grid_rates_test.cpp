@@ -3,12 +3,12 @@
 #include <string>
 #include <vector>
 
-#include "ui/view/grid_layout.h"
-#include "ui/view/health_names.h"
-#include "ui/view/health_timeline.h"
-#include "ui/view/hit_test.h"
-#include "ui/view/rate_meters.h"
-#include "ui/view/settings.h"
+#include "ui/view/geometry/grid_layout.h"
+#include "ui/view/status/health_names.h"
+#include "ui/view/history/health_timeline.h"
+#include "ui/view/geometry/hit_test.h"
+#include "ui/view/history/rate_meters.h"
+#include "ui/view/settings/settings.h"
 
 namespace ydscope::ui {
 namespace {
@@ -228,7 +228,7 @@ TEST(Settings, EveryNumericValueOutOfRangeFallsBackToItsDefaultWithANote) {
 }  // namespace
 }  // namespace ydscope::ui
 
-#include "ui/view/grid_geometry.h"
+#include "ui/view/geometry/grid_geometry.h"
 
 namespace ydscope::ui {
 namespace {

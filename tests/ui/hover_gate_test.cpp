@@ -1,6 +1,6 @@
 // The hover box shows only while a person points: never for a pointer that never moved (Xvfb's,
 // in --screenshot runs), not after the pointer left the window, not once it rests.
-#include "ui/view/hover_gate.h"
+#include "ui/view/status/hover_gate.h"
 
 #include <gtest/gtest.h>
 

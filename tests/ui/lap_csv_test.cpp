@@ -1,7 +1,7 @@
 // The CSV export writes what is on screen: the laps the view holds (so a frozen view exports the
 // frozen laps, not the live one), the newest only or every shown lap, each row with its lap's
 // index and receive time t, in ydscope-cli's --format csv columns and number text.
-#include "ui/view/lap_csv.h"
+#include "ui/view/export/lap_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // first, each as one /scan and one /points message logged at its close time on the wall clock
 // and stamped at its first ray's,
 // every point exactly; and the Record tab's names for .ydrec, .mcap or both.
-#include "ui/view/lap_mcap.h"
-#include "ui/view/whole_file.h"
+#include "ui/view/export/lap_mcap.h"
+#include "ui/view/export/whole_file.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 
 #include "export/point_cloud_reader.h"
 #include "support/temp_dir.h"
-#include "ui/view/file_names.h"
+#include "ui/view/export/file_names.h"
 
 namespace ydscope::ui {
 namespace {

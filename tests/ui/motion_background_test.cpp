@@ -1,6 +1,6 @@
 // Motion highlighting learns the static room per angle bin and flags the returns closer than it:
 // a person walking in front of a wall is moving, the wall is not, and neither is lap noise.
-#include "ui/view/motion_background.h"
+#include "ui/view/scene/motion_background.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "ui/render/theme.h"
-#include "ui/view/colour_map.h"
+#include "ui/view/scene/colour_map.h"
 
 namespace ydscope::ui {
 namespace {

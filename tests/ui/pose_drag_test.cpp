@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "ui/view/pose_drag.h"
-#include "ui/view/view_transform.h"
+#include "ui/view/geometry/pose_drag.h"
+#include "ui/view/geometry/view_transform.h"
 
 namespace ydscope::ui {
 namespace {

@@ -1,5 +1,5 @@
 // What settings.ini remembers of the lidars across runs, and what a new run gets back.
-#include "ui/view/remembered_sources.h"
+#include "ui/view/settings/remembered_sources.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "ui/view/run_plots.h"
+#include "ui/view/history/run_plots.h"
 
 namespace ydscope::ui {
 namespace {

@@ -2,8 +2,8 @@
 // over the laps, a new session starting empty, and the sectors remembered in settings.ini.
 #include <gtest/gtest.h>
 
-#include "ui/view/sector_watch.h"
-#include "ui/view/settings.h"
+#include "ui/view/history/sector_watch.h"
+#include "ui/view/settings/settings.h"
 
 namespace ydscope::ui {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <set>
 
-#include "ui/view/grid_layout.h"
-#include "ui/view/source_cloud.h"
-#include "ui/view/settings.h"
-#include "ui/view/source_set.h"
+#include "ui/view/geometry/grid_layout.h"
+#include "ui/view/scene/source_cloud.h"
+#include "ui/view/settings/settings.h"
+#include "ui/view/scene/source_set.h"
 
 namespace ydscope::ui {
 namespace {

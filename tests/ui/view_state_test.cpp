@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "ui/view/view_state.h"
+#include "ui/view/status/view_state.h"
 
 namespace ydscope::ui {
 namespace {

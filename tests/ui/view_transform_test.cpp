@@ -1,4 +1,4 @@
-#include "ui/view/view_transform.h"
+#include "ui/view/geometry/view_transform.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // A file saved in one go appears whole under its name, or not at all.
-#include "ui/view/whole_file.h"
+#include "ui/view/export/whole_file.h"
 
 #include <gtest/gtest.h>
 

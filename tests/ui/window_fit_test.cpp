@@ -1,5 +1,5 @@
 // The first window fits the screen it opens on, and the sidebar leaves the view most of it.
-#include "ui/view/window_fit.h"
+#include "ui/view/window/window_fit.h"
 
 #include <gtest/gtest.h>
 

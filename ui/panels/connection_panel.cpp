@@ -9,7 +9,7 @@
 
 #include "core/protocol/model_profile.h"
 #include "ui/panels/panels.h"
-#include "ui/view/file_names.h"
+#include "ui/view/export/file_names.h"
 
 namespace ydscope::ui {
 namespace {
@@ -263,52 +263,6 @@ bool model_combo(const char* label, int& choice, const char* none) {
     ImGui::EndCombo();
   }
   return changed;
-}
-
-void link_state_text(LinkState state, const char* message) {
-  ImVec4 colour{0.7f, 0.7f, 0.7f, 1.0f};
-  switch (state) {
-    case LinkState::Scanning: colour = {0.35f, 0.90f, 0.55f, 1.0f}; break;
-    case LinkState::Ready:
-    case LinkState::Connecting:
-    case LinkState::Probing:
-    case LinkState::CommandInProgress: colour = {0.40f, 0.70f, 1.0f, 1.0f}; break;
-    case LinkState::Stalled:
-    case LinkState::Reconnecting: colour = {1.0f, 0.75f, 0.30f, 1.0f}; break;
-    case LinkState::Failed: colour = {1.0f, 0.40f, 0.40f, 1.0f}; break;
-    case LinkState::Idle: break;
-  }
-  ImGui::TextColored(colour, "%s", std::string(link_state_name(state)).c_str());
-  if (message && *message) {
-    ImGui::SameLine();
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(message);
-    ImGui::PopTextWrapPos();
-  }
-}
-
-void wrapped_text(const char* text) {
-  ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextUnformatted(text);
-  ImGui::PopTextWrapPos();
-}
-
-void section(const char* title) {
-  ImGui::Spacing();
-  ImGui::TextDisabled("%s", title);
-  ImGui::Separator();
-}
-
-void help_marker(const char* text) {
-  ImGui::SameLine();
-  ImGui::TextDisabled("(?)");
-  if (ImGui::IsItemHovered()) {
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-    ImGui::TextUnformatted(text);
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
-  }
 }
 
 void draw_connection_panel(UiModel& m, PanelEdits& e) {

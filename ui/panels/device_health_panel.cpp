@@ -6,7 +6,7 @@
 
 #include "core/protocol/commands.h"
 #include "ui/panels/panels.h"
-#include "ui/view/health_names.h"
+#include "ui/view/status/health_names.h"
 
 namespace ydscope::ui {
 namespace {

@@ -24,7 +24,7 @@ struct PanelEdits {
   char replay_text[512] = "";
   int replay_model_choice = 0;  // 0 = as the recording says, then model_names() order
   char record_text[512] = "";
-  int record_format = 0;  // RecordFormat (ui/view/file_names.h)
+  int record_format = 0;  // RecordFormat (ui/view/export/file_names.h)
   char sector_text[64] = "";
   float scan_target_hz = 10.0f;
   bool distance_scale_override = false;

@@ -10,16 +10,16 @@
 
 #include "core/link/session_snapshot.h"
 #include "ui/panels/ui_request.h"
-#include "ui/view/colour_legend.h"
-#include "ui/view/command_feedback.h"
-#include "ui/view/health_alerts.h"
-#include "ui/view/health_timeline.h"
-#include "ui/view/point_cloud.h"
-#include "ui/view/rate_meters.h"
-#include "ui/view/run_plots.h"
-#include "ui/view/sector_watch.h"
-#include "ui/view/settings.h"
-#include "ui/view/view_state.h"
+#include "ui/view/scene/colour_legend.h"
+#include "ui/view/status/command_feedback.h"
+#include "ui/view/status/health_alerts.h"
+#include "ui/view/history/health_timeline.h"
+#include "ui/view/scene/point_cloud.h"
+#include "ui/view/history/rate_meters.h"
+#include "ui/view/history/run_plots.h"
+#include "ui/view/history/sector_watch.h"
+#include "ui/view/settings/settings.h"
+#include "ui/view/status/view_state.h"
 
 namespace ydscope::ui {
 

@@ -14,7 +14,7 @@
 #include "core/sim/delivery.h"
 #include "core/sim/faults.h"
 #include "core/sim/host_compat.h"
-#include "ui/view/source_set.h"
+#include "ui/view/scene/source_set.h"
 
 namespace ydscope::ui {
 

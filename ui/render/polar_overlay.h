@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "core/frame/pose.h"
-#include "ui/view/geometry.h"
-#include "ui/view/grid_layout.h"
-#include "ui/view/hit_test.h"
+#include "ui/view/geometry/geometry.h"
+#include "ui/view/geometry/grid_layout.h"
+#include "ui/view/geometry/hit_test.h"
 
 struct ImDrawList;
 

@@ -6,9 +6,9 @@
 #include <span>
 
 #include "ui/render/gl_program.h"
-#include "ui/view/grid_geometry.h"
-#include "ui/view/point_cloud.h"
-#include "ui/view/view_transform.h"
+#include "ui/view/geometry/grid_geometry.h"
+#include "ui/view/scene/point_cloud.h"
+#include "ui/view/geometry/view_transform.h"
 
 namespace ydscope::ui {
 

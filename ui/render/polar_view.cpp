@@ -8,7 +8,7 @@
 #include <imgui.h>
 
 #include "ui/render/polar_overlay.h"
-#include "ui/view/grid_layout.h"
+#include "ui/view/geometry/grid_layout.h"
 
 namespace ydscope::ui {
 

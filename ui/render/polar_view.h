@@ -10,13 +10,13 @@
 
 #include "ui/render/polar_overlay.h"
 #include "ui/render/polar_renderer.h"
-#include "ui/view/auto_range_fit.h"
-#include "ui/view/hit_test.h"
-#include "ui/view/hover_gate.h"
-#include "ui/view/lap_history.h"
-#include "ui/view/pose_drag.h"
-#include "ui/view/settings.h"
-#include "ui/view/source_cloud.h"
+#include "ui/view/geometry/auto_range_fit.h"
+#include "ui/view/geometry/hit_test.h"
+#include "ui/view/status/hover_gate.h"
+#include "ui/view/scene/lap_history.h"
+#include "ui/view/geometry/pose_drag.h"
+#include "ui/view/settings/settings.h"
+#include "ui/view/scene/source_cloud.h"
 
 namespace ydscope::ui {
 

@@ -4,7 +4,7 @@
 
 #include <imgui.h>
 
-#include "ui/view/glyph_ranges.h"
+#include "ui/view/window/glyph_ranges.h"
 
 namespace ydscope::ui {
 namespace {

@@ -1,0 +1,35 @@
+#include "ui/view/geometry/pose_drag.h"
+
+#include <cmath>
+
+namespace ydscope::ui {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+
+double wrapped_deg(double deg) {
+  const double wrapped = std::fmod(deg + 180.0, 360.0);
+  return (wrapped < 0 ? wrapped + 360.0 : wrapped) - 180.0;
+}
+
+}  // namespace
+
+Pose dragged_pose(const Pose& pose, const PoseDrag& drag) {
+  Pose out = pose;
+  if (!drag.turn) {
+    out.x_m += (drag.to_world.x - drag.from_world.x) / 1000.0;
+    out.y_m += (drag.to_world.y - drag.from_world.y) / 1000.0;
+    return out;
+  }
+  const double cx = pose.x_m * 1000.0, cy = pose.y_m * 1000.0;
+  // A pointer on the lidar itself has no direction to turn by.
+  if (std::hypot(drag.from_world.x - cx, drag.from_world.y - cy) < 1.0 ||
+      std::hypot(drag.to_world.x - cx, drag.to_world.y - cy) < 1.0)
+    return out;
+  const double before = std::atan2(drag.from_world.y - cy, drag.from_world.x - cx);
+  const double after = std::atan2(drag.to_world.y - cy, drag.to_world.x - cx);
+  out.yaw_deg = wrapped_deg(pose.yaw_deg + (after - before) * kRadToDeg);
+  return out;
+}
+
+}  // namespace ydscope::ui

@@ -1,0 +1,56 @@
+#include "ui/view/scene/source_cloud.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/view/geometry/grid_layout.h"
+
+namespace ydscope::ui {
+
+PointCloudStats build_source_clouds(std::span<const SourceLayer> layers, const ColourParams& colours,
+                                    const InterferenceSettings& filter, std::vector<PointVertex>& out,
+                                    std::vector<PointVertex>& scratch, float phase) {
+  out.clear();
+  PointCloudStats total;
+  const bool by_source = colours.mode == ColourMode::Source;
+  for (const SourceLayer& layer : layers) {
+    if (!layer.history) continue;
+    const PointCloudStats stats = build_point_cloud(*layer.history, colours, filter, scratch, layer.motion, phase);
+    total.drawn += stats.drawn;
+    total.ghosts += stats.ghosts;
+    total.newest_specular_removed += stats.newest_specular_removed;
+    total.newest_ambient_removed += stats.newest_ambient_removed;
+    total.newest_no_return += stats.newest_no_return;
+    const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
+    for (PointVertex v : scratch) {
+      const CommonPoint common = layer.pose.to_common(CommonPoint{v.x, v.y});
+      v.x = common.x_mm;
+      v.y = common.y_mm;
+      if (by_source) {
+        // The lap's fade stays in the alpha; the hue says whose point it is.
+        v.colour.r = layer.colour.r;
+        v.colour.g = layer.colour.g;
+        v.colour.b = layer.colour.b;
+      }
+      // Darkened as well as made transparent: alpha alone let a dead lidar's overlapping laps
+      // add back up to nearly full brightness (255 fell only to 221).
+      for (std::uint8_t* channel : {&v.colour.r, &v.colour.g, &v.colour.b, &v.colour.a})
+        *channel = static_cast<std::uint8_t>(static_cast<float>(*channel) * strength + 0.5f);
+      out.push_back(v);
+    }
+  }
+  return total;
+}
+
+float robust_extent_mm(std::span<const SourceLayer> layers, float share) {
+  float extent = 0.0f;
+  for (const SourceLayer& layer : layers) {
+    if (!layer.history || layer.history->empty()) continue;
+    const double from_origin = std::hypot(layer.pose.x_m, layer.pose.y_m) * 1000.0;
+    extent =
+        std::max(extent, static_cast<float>(from_origin) + robust_max_range_mm(layer.history->newest().points, share));
+  }
+  return extent;
+}
+
+}  // namespace ydscope::ui
