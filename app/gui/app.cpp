@@ -79,6 +79,7 @@ void App::frame() {
 
   model().sources = sources_.rows(std::chrono::steady_clock::now());
   model().selected_source = sources_.selected_index();
+  model().alignment = alignment_;
   const float sidebar = settings_.show_panels ? ui::draw_sidebar(model(), sel().edits, settings_) : 0.0f;
   const float view_w = static_cast<float>(win_w) - sidebar;
   if (const SourceSlot* pacing = fading_source())

@@ -85,6 +85,9 @@ class App {
   void change_sources(const ui::SetSourceLook& request);
   void change_sources(const ui::AddSource& request);
   void change_sources(const ui::RemoveSource& request);
+  // (app_align.cpp) Align and the user's answer to it.
+  void change_sources(const ui::AlignSources& request);
+  void change_sources(const ui::AnswerAlignment& request);
   // A source's panels' model this frame; the automatic choice falls back to the virtual lidar here.
   void update_model(SourceSlot& slot);
 
@@ -103,6 +106,7 @@ class App {
   SettingsStore store_;
   ui::ViewSettings settings_ = store_.load();
   SourceList sources_;
+  std::optional<ui::AlignmentProposal> alignment_;  // Align's answer, until applied or discarded
   ViewStage stage_;
   float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
   std::string shown_banner_;  // the banner whose age model() holds

@@ -58,6 +58,7 @@ void SourceSlot::clear() {
   last_lap_at.reset();
   pending_latency_rx_ns = 0;
   history.clear();
+  recent_laps.clear();
   lap_phase.reset();
   motion.clear();
   lap = {};
@@ -82,6 +83,7 @@ bool SourceSlot::take_laps(double now_s) {
 }
 
 void SourceSlot::measure(const Lap& measured) {
+  recent_laps.push(measured);
   // A lap cut short or held up by a stall does not time the motor: the rate starts again after it.
   if (measured.whole())
     model.scan_rate.add_lap_end(measured.index, measured.last_rx_ns);

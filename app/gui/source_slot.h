@@ -76,6 +76,7 @@ struct SourceSlot {
   Lap measured_lap;
   LidarSource source;  // after the session it drives, so it stops first
   ui::LapHistory history;
+  ui::LapHistory recent_laps{10};  // every lap's points, the newest 10: what Align matches
   ui::LapPhase lap_phase;       // how far between two laps, for fading persistence at display rate
   ui::MotionBackground motion;  // the room, learned from the laps the view shows
   Lap lap;                      // the newest drained

@@ -34,6 +34,25 @@ void pose_fields(UiModel& m, std::size_t index, const SourceLook& look) {
   m.requests.push_back(SetSourceLook{index, edited});
 }
 
+// Align, and its answer waiting for the user's word: nothing moves until Apply.
+void alignment_controls(UiModel& m) {
+  if (!m.several_sources()) return;
+  section("align");
+  if (!m.alignment) {
+    if (ImGui::Button("Align")) m.requests.push_back(AlignSources{});
+    help_marker("Finds where each lidar sits relative to the first in the list, from the walls they both see "
+                "(their last 10 laps, searched within 45 degrees and 1 m of each one's pose now). "
+                "Nothing moves until you apply it.");
+    return;
+  }
+  for (const AlignedSource& row : m.alignment->rows) ImGui::TextWrapped("%s", row.text.c_str());
+  if (!m.alignment->any_found()) ImGui::BeginDisabled();
+  if (ImGui::Button("Apply")) m.requests.push_back(AnswerAlignment{true});
+  if (!m.alignment->any_found()) ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Discard")) m.requests.push_back(AnswerAlignment{false});
+}
+
 void add_source_controls(UiModel& m, PanelEdits& e) {
   static constexpr const char* kScenes[] = {"room", "demo", "booth"};
   section("add a source");
@@ -104,6 +123,7 @@ void draw_sources_panel(UiModel& m, PanelEdits& e) {
     ImGui::Separator();
     ImGui::PopID();
   }
+  alignment_controls(m);
   add_source_controls(m, e);
 }
 

@@ -15,6 +15,7 @@
 #include "ui/view/status/health_alerts.h"
 #include "ui/view/history/health_timeline.h"
 #include "ui/view/scene/point_cloud.h"
+#include "ui/view/scene/source_alignment.h"
 #include "ui/view/history/rate_meters.h"
 #include "ui/view/history/run_plots.h"
 #include "ui/view/history/sector_watch.h"
@@ -127,6 +128,8 @@ struct UiModel {
   std::vector<SourceRow> sources;
   std::size_t selected_source = 0;
   bool several_sources() const { return sources.size() > 1; }
+  // Align's answer, shown in the Sources tab until applied or discarded (filled by the app).
+  std::optional<AlignmentProposal> alignment;
 
   // ---- requests from the panels, keys and mouse, carried out in order and cleared by the app -----
   std::vector<UiRequest> requests;

@@ -95,6 +95,12 @@ struct AddSource {
 struct RemoveSource {
   std::size_t index = 0;
 };
+// Match every lidar against the first from the walls they share (ui/view/scene/source_alignment.h);
+// the answer waits in the Sources tab until AnswerAlignment.
+struct AlignSources {};
+struct AnswerAlignment {
+  bool apply = false;  // set the poses found; false: leave every pose as it is
+};
 
 // ---- the view and files -----------------------------------------------------------------------
 struct ResetView {};
@@ -114,12 +120,13 @@ using UiRequest =
     std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim, ReplugSim, SetScanHz,
                  SetRangingKhz, RefreshHealth, StartRecording, StopRecording, SetDistanceScale, SetReading, SetShare,
                  ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap, WatchSector, UnwatchSector, SelectSource,
-                 SetSourceLook, AddSource, RemoveSource>;
+                 SetSourceLook, AddSource, RemoveSource, AlignSources, AnswerAlignment>;
 
 // The requests that change the source list rather than one source.
 template <class R>
 inline constexpr bool is_source_list_request = std::is_same_v<R, SelectSource> || std::is_same_v<R, SetSourceLook> ||
-                                               std::is_same_v<R, AddSource> || std::is_same_v<R, RemoveSource>;
+                                               std::is_same_v<R, AddSource> || std::is_same_v<R, RemoveSource> ||
+                                               std::is_same_v<R, AlignSources> || std::is_same_v<R, AnswerAlignment>;
 // The requests one source carries out alone: its device's commands, its replay, its virtual lidar.
 template <class R>
 inline constexpr bool is_device_request =
