@@ -15,6 +15,7 @@
 #include "app/cli/serve_sources.h"
 #include "app/cli/session_cli.h"
 #include "app/cli/source_options.h"
+#include "core/analysis/zone.h"
 #include "core/bridge/session_share.h"
 
 namespace ydscope::cli {
@@ -69,6 +70,13 @@ options:
                      docs/conventions.md lists every value and its source
   --queue N          messages queued per client before its oldest are dropped (default 64)
   --seconds S        stop after S seconds (default: until Ctrl-C or SIGTERM)
+  --zone SPEC        watch a zone, repeatable: NAME:sector:FROM:TO[:MIN_MM:MAX_MM][:RULE] (the
+                     lidar's angles, a band in mm) or NAME:polygon:X,Y/X,Y/X,Y[/...][:RULE]
+                     (corners in metres in the robot's frame, REP-103). RULE: enter (default;
+                     raised while something is in it) or empty (raised while nothing is). Each
+                     zone's status is published on /zones (diagnostic_msgs/msg/DiagnosticArray,
+                     at once on every entry or exit and once a second) and beside the lidar's
+                     on /diagnostics; with several lidars each watches every zone
 )" YDSCOPE_MCAP_OPTIONS_HELP R"(  --force            overwrite FILE
 
 On start, one line on stdout says where it serves:  serving ws://HOST:PORT for PORT
@@ -112,8 +120,21 @@ foxglove::ServerOptions listen_options(const Arguments& args) {
 
 int run_serve(std::span<const std::string> raw) {
   const Arguments args(
-      raw, with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose"})),
-      with_mcap_flags({"force"}), 0, source_repeatable_options());
+      raw,
+      with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose", "zone"})),
+      with_mcap_flags({"force"}), 0, [] {
+        auto repeatable = source_repeatable_options();
+        repeatable.insert("zone");
+        return repeatable;
+      }());
+  // Zones first: a mistaken one is a usage error before any port is looked for.
+  std::vector<Zone> zones;
+  for (const std::string& spec : args.values("zone")) {
+    std::string error;
+    auto zone = parse_zone(spec, error);
+    if (!zone) throw UsageError("--zone: " + error);
+    zones.push_back(std::move(*zone));
+  }
   if (args.values("port").size() > 1) {
     const foxglove::ServerOptions options = listen_options(args);
     end_on_signals(serve_on_signal);
@@ -132,6 +153,7 @@ int run_serve(std::span<const std::string> raw) {
   if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
   options.topics = mcap_options_from(args);
   options.topics.ros.model = config.model;
+  options.topics.ros.zones = std::move(zones);
   options.mcap_path = mcap_path.value_or("");
   options.server.name = "ydscope on " + config.address;
 

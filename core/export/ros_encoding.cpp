@@ -141,17 +141,24 @@ void encode_point_cloud(const Lap& lap, const RosFrameOptions& frame, bool inter
 
 void encode_diagnostics(const DiagnosticReport& report, std::string_view frame_id, std::uint64_t stamp_ns,
                         std::vector<std::uint8_t>& out) {
+  encode_diagnostics(std::span(&report, 1), frame_id, stamp_ns, out);
+}
+
+void encode_diagnostics(std::span<const DiagnosticReport> reports, std::string_view frame_id, std::uint64_t stamp_ns,
+                        std::vector<std::uint8_t>& out) {
   CdrWriter cdr(out);
   put_header(cdr, stamp_ns, frame_id);
-  cdr.u32(1);
-  cdr.u8(report.level);
-  cdr.string(report.name);
-  cdr.string(report.message);
-  cdr.string(report.hardware_id);
-  cdr.u32(static_cast<std::uint32_t>(report.values.size()));
-  for (const auto& [key, value] : report.values) {
-    cdr.string(key);
-    cdr.string(value);
+  cdr.u32(static_cast<std::uint32_t>(reports.size()));
+  for (const DiagnosticReport& report : reports) {
+    cdr.u8(report.level);
+    cdr.string(report.name);
+    cdr.string(report.message);
+    cdr.string(report.hardware_id);
+    cdr.u32(static_cast<std::uint32_t>(report.values.size()));
+    for (const auto& [key, value] : report.values) {
+      cdr.string(key);
+      cdr.string(value);
+    }
   }
 }
 

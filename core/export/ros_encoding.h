@@ -73,6 +73,9 @@ struct DiagnosticReport {
 };
 void encode_diagnostics(const DiagnosticReport& report, std::string_view frame_id, std::uint64_t stamp_ns,
                         std::vector<std::uint8_t>& out);
+// Several statuses in one array (a lidar's and its zones').
+void encode_diagnostics(std::span<const DiagnosticReport> reports, std::string_view frame_id, std::uint64_t stamp_ns,
+                        std::vector<std::uint8_t>& out);
 
 // std_msgs/UInt8MultiArray with an empty layout: the link bytes exactly.
 void encode_link_bytes(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& out);

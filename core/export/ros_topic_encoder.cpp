@@ -8,6 +8,7 @@
 
 #include "core/export/lidar_condition.h"
 #include "core/export/ros_schemas.h"
+#include "core/export/zone_reports.h"
 
 namespace ydscope {
 namespace {
@@ -20,6 +21,7 @@ const RosTopicInfo kTopics[kRosTopicCount] = {
     {RosTopic::Diagnostics, "/diagnostics", &diagnostic_array_schema()},
     {RosTopic::DeviceBytes, "/ydscope/device_bytes", &uint8_multi_array_schema()},
     {RosTopic::HostBytes, "/ydscope/host_bytes", &uint8_multi_array_schema()},
+    {RosTopic::Zones, "/zones", &diagnostic_array_schema()},
 };
 
 std::string fixed(double value, int decimals) {
@@ -70,7 +72,7 @@ std::optional<std::uint64_t> parse_iso8601_utc_ns(std::string_view text) {
   return static_cast<std::uint64_t>(seconds) * 1'000'000'000u + fraction_ns;
 }
 
-RosTopicEncoder::RosTopicEncoder(RosExportOptions options) : options_(std::move(options)) {
+RosTopicEncoder::RosTopicEncoder(RosExportOptions options) : options_(std::move(options)), zones_(options_.zones) {
   if (options_.model) profile_ = &profile_for(*options_.model);
 }
 
@@ -158,6 +160,8 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
   ++window_laps_;
   commands_.lap_closed();
   dropouts_.add_lap(decoded);
+  zones_.set_pose(metadata_.pose.value_or(Pose{}));
+  const bool zone_news = !zones_.add_lap(decoded).empty();
   // Stamped at the first ray (REP-117), logged when the lap was complete: at its closing byte.
   const ScanTimes times = scan_times(decoded, static_cast<std::int64_t>(wall_start_ns_));
   const std::uint64_t logged = log_time(decoded.last_rx_ns);
@@ -172,6 +176,15 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
   emit(RosTopic::Scan, logged, message_);
   encode_point_cloud(*lap, options_.frame, profile_->flag_bits > 0, times.stamp_ns, message_);
   emit(RosTopic::Points, logged, message_);
+  if (zone_news) emit_zones(logged, emit);  // an entry or exit is news now, not at the next report
+}
+
+void RosTopicEncoder::emit_zones(std::uint64_t log_time_ns, MessageFn emit) {
+  if (zones_.zones().empty()) return;
+  const std::vector<DiagnosticReport> reports =
+      zone_reports(zones_, options_.frame.frame_id, metadata_.port.value_or(metadata_.serial.value_or("")));
+  encode_diagnostics(reports, options_.frame.frame_id, log_time_ns, message_);
+  emit(RosTopic::Zones, log_time_ns, message_);
 }
 
 void RosTopicEncoder::maybe_diagnostics(std::int64_t t_ns, MessageFn emit) {
@@ -186,8 +199,14 @@ void RosTopicEncoder::maybe_diagnostics(std::int64_t t_ns, MessageFn emit) {
   window_first_close_ns_.reset();
   window_laps_ = 0;
   count_recent_errors(t_ns);
-  encode_diagnostics(diagnostics(), options_.frame.frame_id, log_time(t_ns), message_);
+  std::vector<DiagnosticReport> reports{diagnostics()};
+  if (!zones_.zones().empty()) {
+    std::vector<DiagnosticReport> zones = zone_reports(zones_, options_.frame.frame_id, reports[0].hardware_id);
+    reports.insert(reports.end(), zones.begin(), zones.end());
+  }
+  encode_diagnostics(reports, options_.frame.frame_id, log_time(t_ns), message_);
   emit(RosTopic::Diagnostics, log_time(t_ns), message_);
+  emit_zones(log_time(t_ns), emit);
 }
 
 void RosTopicEncoder::count_recent_errors(std::int64_t t_ns) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/analysis/dropout_ring.h"
+#include "core/analysis/zone_watch.h"
 #include "core/export/command_watch.h"
 #include "core/export/ros_encoding.h"
 #include "core/export/ros_schemas.h"
@@ -35,8 +36,9 @@
 
 namespace ydscope {
 
-enum class RosTopic : std::uint8_t { Scan, Points, Diagnostics, DeviceBytes, HostBytes };
-inline constexpr std::size_t kRosTopicCount = 5;
+// Zones last, so the other topics keep their channel ids.
+enum class RosTopic : std::uint8_t { Scan, Points, Diagnostics, DeviceBytes, HostBytes, Zones };
+inline constexpr std::size_t kRosTopicCount = 6;
 inline constexpr bool is_link_bytes(RosTopic topic) {
   return topic == RosTopic::DeviceBytes || topic == RosTopic::HostBytes;
 }
@@ -56,6 +58,9 @@ struct RosExportOptions {
   std::optional<Reading> reading;
   InterferenceFilter filter;  // applied to /scan and /points only
   bool link_bytes = true;     // publish /ydscope/device_bytes and /ydscope/host_bytes
+  // Watched lap by lap (polygons through the recording's pose): each zone's status on /zones, at
+  // once on every entry or exit and with every /diagnostics, and beside the lidar's own there.
+  std::vector<Zone> zones;
 };
 
 // ns since the Unix epoch of "2026-11-22T02:20:00.123Z" (fraction optional); empty if malformed.
@@ -103,6 +108,7 @@ class RosTopicEncoder {
   void make_decoder();
   void maybe_diagnostics(std::int64_t t_ns, MessageFn emit);
   void count_recent_errors(std::int64_t t_ns);
+  void emit_zones(std::uint64_t log_time_ns, MessageFn emit);
   bool link_down() const;
 
   RosExportOptions options_;
@@ -133,6 +139,7 @@ class RosTopicEncoder {
   std::optional<double> reported_scan_hz_;  // G1 CT
   CommandWatch commands_;                   // spinning up, a command in flight
   DropoutRing dropouts_;                    // blocked sectors, for the level and the message
+  ZoneWatch zones_;
   std::vector<std::pair<std::string, std::string>> extra_;
   Lap filtered_;
   std::vector<float> scan_scratch_;
