@@ -9,6 +9,8 @@
 #include "ui/render/draw_signature.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
+#include "ui/view/geometry/forward_click.h"
+#include "ui/view/geometry/view_frame.h"
 
 namespace ydscope::gui {
 
@@ -26,7 +28,19 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
   view_->set_viewport({frame.left, 0.0f}, {frame.width, frame.height});
   view_->set_status_band(ui::status_band_height());
   view_->enable_pose_drag(sources.several());
+  view_->arm_forward_click(selected.edits.forward_click_armed);
   view_->handle_input(settings, frame.hovered, frame.now_s);
+  if (const auto clicked = view_->take_forward_click()) {  // the Sources tab's "straight ahead" tool
+    selected.edits.forward_click_armed = false;
+    // Several are drawn where their poses put them; a lone lidar round itself, in its laser frame.
+    const CommonPoint at = ui::common_of(*clicked);
+    ui::SourceLook look = selected.look;
+    if (const auto facing = ui::facing_forward(look.pose, sources.several() ? look.pose.to_laser(at) : at)) {
+      look.pose = *facing;
+      look.paused = model.paused_view;
+      model.requests.push_back(ui::SetSourceLook{sources.selected_index(), look});
+    }
+  }
   if (const auto drag = view_->take_pose_drag()) {  // Alt/Ctrl+drag: the selected source's pose
     ui::SourceLook look = selected.look;
     look.pose = ui::dragged_pose(look.pose, *drag);

@@ -39,10 +39,14 @@ RosTransform ros_transform_of(const Pose& pose, const RosFrameOptions& frame, st
   const double yaw = pose.yaw_deg * std::numbers::pi / 180.0;
   const Matrix turn = {{std::cos(yaw), -std::sin(yaw)}, {std::sin(yaw), std::cos(yaw)}};
   const Matrix mirror = {{1, 0}, {0, pose.upside_down ? -1.0 : 1.0}};
-  // parent = turn * mirror * q * child + shift (Pose::to_common after q).
-  Matrix a, linear;
+  // The unit's angle offset adds to its clockwise angles: a turn by -offset in the laser frame.
+  const double offset = pose.angle_offset_deg * std::numbers::pi / 180.0;
+  const Matrix unturn = {{std::cos(offset), std::sin(offset)}, {-std::sin(offset), std::cos(offset)}};
+  // parent = turn * mirror * unturn * q * child + shift (Pose::to_common after q).
+  Matrix a, b, linear;
   multiply(turn, mirror, a);
-  multiply(a, q, linear);
+  multiply(a, unturn, b);
+  multiply(b, q, linear);
 
   RosTransform t;
   t.parent_frame = std::move(parent);

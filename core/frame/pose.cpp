@@ -38,9 +38,14 @@ CommonPoint laser_point(const LapPoint& point) {
 CommonPoint Pose::to_common(const LapPoint& point) const { return to_common(laser_point(point)); }
 
 CommonPoint Pose::to_common(CommonPoint laser) const {
+  // The offset adds to the unit's clockwise angles: a turn by -offset in the laser frame.
+  const double oc = std::cos(radians(angle_offset_deg));
+  const double os = std::sin(radians(angle_offset_deg));
+  const double ox = laser.x_mm * oc + laser.y_mm * os;
+  const double oy = -laser.x_mm * os + laser.y_mm * oc;
   // The upside-down mount rolls about the laser's x axis: y -> -y (a -> 360 - a).
-  const double lx = laser.x_mm;
-  const double ly = upside_down ? -static_cast<double>(laser.y_mm) : static_cast<double>(laser.y_mm);
+  const double lx = ox;
+  const double ly = upside_down ? -oy : oy;
   const double c = std::cos(radians(yaw_deg));
   const double s = std::sin(radians(yaw_deg));
   return {static_cast<float>(lx * c - ly * s + x_m * 1000.0), static_cast<float>(lx * s + ly * c + y_m * 1000.0)};
@@ -56,8 +61,11 @@ CommonPoint Pose::to_laser(CommonPoint common) const {
   const double dy = static_cast<double>(common.y_mm) - y_m * 1000.0;
   const double c = std::cos(radians(yaw_deg));
   const double s = std::sin(radians(yaw_deg));
-  const double ly = -dx * s + dy * c;
-  return {static_cast<float>(dx * c + dy * s), static_cast<float>(upside_down ? -ly : ly)};
+  const double lx = dx * c + dy * s;
+  const double ly = upside_down ? -(-dx * s + dy * c) : -dx * s + dy * c;
+  const double oc = std::cos(radians(angle_offset_deg));
+  const double os = std::sin(radians(angle_offset_deg));
+  return {static_cast<float>(lx * oc - ly * os), static_cast<float>(lx * os + ly * oc)};
 }
 
 std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
@@ -69,8 +77,8 @@ std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
-  if (fields.size() < 3 || fields.size() > 4) {
-    error = "a pose is x,y,yaw or x,y,yaw,flip (metres, metres, degrees), such as 0.2,-0.15,90, not " + shown;
+  if (fields.size() < 3 || fields.size() > 5) {
+    error = "a pose is x,y,yaw[,flip][,offset=DEG] (metres, metres, degrees), such as 0.2,-0.15,90, not " + shown;
     return std::nullopt;
   }
   const auto x = parse_number(fields[0]);
@@ -89,16 +97,35 @@ std::optional<Pose> parse_pose(std::string_view text, std::string& error) {
     error = "a pose's yaw is degrees from -360 to 360, not " + shown;
     return std::nullopt;
   }
-  if (fields.size() == 4 && fields[3] != "flip") {
-    error = "the fourth field of a pose can only be flip (mounted upside down), not " + shown;
-    return std::nullopt;
+  Pose pose{*x, *y, *yaw, false, 0.0};
+  bool offset_given = false;
+  for (std::size_t i = 3; i < fields.size(); ++i) {
+    constexpr std::string_view kOffset = "offset=";
+    if (fields[i] == "flip" && !pose.upside_down) {
+      pose.upside_down = true;
+    } else if (fields[i].substr(0, kOffset.size()) == kOffset && !offset_given) {
+      const auto offset = parse_number(fields[i].substr(kOffset.size()));
+      if (!offset || std::abs(*offset) > 360.0) {
+        error = "a pose's offset= is degrees from -360 to 360, not " + shown;
+        return std::nullopt;
+      }
+      pose.angle_offset_deg = *offset;
+      offset_given = true;
+    } else {
+      error =
+          "after a pose's yaw come only flip (mounted upside down) and offset=DEG (the unit's angle offset), "
+          "each once, not " +
+          shown;
+      return std::nullopt;
+    }
   }
-  return Pose{*x, *y, *yaw, fields.size() == 4};
+  return pose;
 }
 
 std::string format_pose(const Pose& pose) {
   return shortest(pose.x_m) + "," + shortest(pose.y_m) + "," + shortest(pose.yaw_deg) +
-         (pose.upside_down ? ",flip" : "");
+         (pose.upside_down ? ",flip" : "") +
+         (pose.angle_offset_deg != 0.0 ? ",offset=" + shortest(pose.angle_offset_deg) : "");
 }
 
 }  // namespace ydscope

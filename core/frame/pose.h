@@ -8,14 +8,15 @@
 // (YDLidar-SDK with `reversion` and `inverted`, as the driver's G1, G6 and TG parameter files set):
 // the unit's 0 degrees points along -x, and its clockwise sweep seen from above runs through +y at
 // 90, +x at 180 and -y at 270. A lap point at device angle a and range r lies at (-r cos a, r sin a)
-// in the laser frame. The pose maps that frame into the common one: first the mirror of an
-// upside-down mount (a roll of 180 degrees about the laser's x axis: y becomes -y, a becomes
+// in the laser frame. The pose maps that frame into the common one: first the unit's angle offset
+// (degrees added to its angles, clockwise as they are: where its 0 really points), then the mirror
+// of an upside-down mount (a roll of 180 degrees about the laser's x axis: y becomes -y, a becomes
 // 360 - a), then a rotation by yaw (degrees, counter-clockwise positive), then the shift by (x, y).
 // A lidar at "0,0,0" faces the robot's forward with its 180 degrees.
 //
-// Text form (--pose, recordings' metadata, settings.ini): "x,y,yaw" or "x,y,yaw,flip", x and y in
-// metres, yaw in degrees; "flip" marks the upside-down mount. "0.2,-0.15,90" and "0,0,180,flip"
-// are poses. Poses written before REP-103 (x right, y forward) are converted on load:
+// Text form (--pose, recordings' metadata, settings.ini): "x,y,yaw", then optionally "flip" and
+// "offset=DEG"; x and y in metres, yaw in degrees; "flip" marks the upside-down mount, "offset="
+// the unit's angle offset. "0.2,-0.15,90", "0,0,180,flip" and "0,0,0,flip,offset=-2.5" are poses. Poses written before REP-103 (x right, y forward) are converted on load:
 // core/frame/pose_convention.h.
 #include <optional>
 #include <string>
@@ -41,8 +42,9 @@ CommonPoint laser_point(const LapPoint& point);
 struct Pose {
   double x_m = 0;
   double y_m = 0;
-  double yaw_deg = 0;        // within [-360, 360]
-  bool upside_down = false;  // mounted head down: angles mirrored
+  double yaw_deg = 0;           // within [-360, 360]
+  bool upside_down = false;     // mounted head down: angles mirrored
+  double angle_offset_deg = 0;  // added to the unit's angles, within [-360, 360]
 
   // A point of this lidar's lap in the common frame. A point without a return (range 0) lands on
   // the lidar's own position; callers that draw returns skip those first.

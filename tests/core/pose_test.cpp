@@ -57,8 +57,18 @@ TEST(Pose, MirrorComesBeforeYawAndShift) {
   expect_near(pose.to_common(at(90, 1000)), 2000, 2000);
 }
 
+TEST(Pose, TheAngleOffsetAddsToTheUnitsAnglesBeforeTheMirror) {
+  // A unit whose 0 really points 10 degrees further clockwise: its 80 is where 90 should be.
+  const Pose offset{0, 0, 0, false, 10};
+  expect_near(offset.to_common(at(80, 1000)), Pose{}.to_common(at(90, 1000)).x_mm, Pose{}.to_common(at(90, 1000)).y_mm);
+  // Upside down, the corrected angle is mirrored: 80 + 10 lands where 270 does upright.
+  const Pose both{0, 0, 0, true, 10};
+  expect_near(both.to_common(at(80, 1000)), Pose{}.to_common(at(270, 1000)).x_mm, Pose{}.to_common(at(270, 1000)).y_mm);
+}
+
 TEST(Pose, ToLaserUndoesToCommon) {
-  for (const Pose& pose : {Pose{}, Pose{1, -2, 30, false}, Pose{-0.5, 0.25, -135, true}}) {
+  for (const Pose& pose :
+       {Pose{}, Pose{1, -2, 30, false}, Pose{-0.5, 0.25, -135, true}, Pose{0.1, 0, 20, true, -7.5}}) {
     for (const float angle : {0.0f, 45.0f, 200.0f}) {
       const CommonPoint laser = laser_point(at(angle, 1234));
       const CommonPoint back = pose.to_laser(pose.to_common(laser));
@@ -115,11 +125,31 @@ TEST(PoseText, ParsesAndFormatsBothForms) {
   EXPECT_EQ(format_pose(*flipped), "0,0,-180,flip");
   const Pose odd{0.1 + 0.2, 1e-7, 33.333333333333336, true};
   EXPECT_EQ(parse_pose(format_pose(odd), error), odd);
+  const auto offset = parse_pose("0,0,0,offset=-2.5,flip", error);  // either order
+  ASSERT_TRUE(offset) << error;
+  EXPECT_EQ(*offset, (Pose{0, 0, 0, true, -2.5}));
+  EXPECT_EQ(format_pose(*offset), "0,0,0,flip,offset=-2.5");
+  EXPECT_EQ(parse_pose("1,2,3,offset=4", error), (Pose{1, 2, 3, false, 4}));
 }
 
 TEST(PoseText, EachMistakeIsOneSentenceNamingTheText) {
-  const char* mistakes[] = {"",        "1,2",     "1,2,3,4,5", "1,,3",    "a,b,c",         "1,2,90deg",
-                            "1,2,nan", "1,2,inf", "1500,0,0",  "0,0,400", "0,0,0,flipped", "0,0,0,"};
+  const char* mistakes[] = {"",
+                            "1,2",
+                            "1,2,3,4,5",
+                            "1,,3",
+                            "a,b,c",
+                            "1,2,90deg",
+                            "1,2,nan",
+                            "1,2,inf",
+                            "1500,0,0",
+                            "0,0,400",
+                            "0,0,0,flipped",
+                            "0,0,0,",
+                            "0,0,0,flip,flip",
+                            "0,0,0,offset=",
+                            "0,0,0,offset=400",
+                            "0,0,0,offset=1,offset=2",
+                            "0,0,0,flip,offset=1,x"};
   for (const char* text : mistakes) {
     std::string error;
     EXPECT_FALSE(parse_pose(text, error)) << text;

@@ -24,7 +24,8 @@ void apply(const RosTransform& t, const double p[3], double out[3]) {
 }
 
 TEST(RosTf, EachTransformCarriesTheLidarsPointsWhereThePosePutsThem) {
-  const Pose poses[] = {{0, 0, 0, false}, {1.5, -0.5, 30, false}, {-0.2, 0.3, -120, true}, {0, 0, 180, true}};
+  const Pose poses[] = {{0, 0, 0, false},  {1.5, -0.5, 30, false},   {-0.2, 0.3, -120, true},
+                        {0, 0, 180, true}, {0.4, 0.1, 15, false, 7}, {-1, 2, 60, true, -12.5}};
   RosFrameOptions frames[4];
   frames[1].reversion = false;
   frames[2].inverted = false;

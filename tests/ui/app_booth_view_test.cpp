@@ -46,11 +46,12 @@ TEST(AppBoothView, LargeTypeMotionColoursAndTheirLegendAt1080p) {
   ASSERT_EQ(image.width, 1920) << "not full screen";
   ASSERT_EQ(image.height, 1080) << "not full screen";
 
-  // Ahead of the lidar (the upper half) the aisle: visitors walking past, hot. Behind it (the
-  // lower half, away from the legend's corner) the stand's walls and kiosk: calm, none hot.
+  // Towards the unit's 0 (drawn down: the laser frame's -x, as ROS tools draw it) the aisle:
+  // visitors walking past, hot. Towards its 180 (the upper half, clear of the model's name at the
+  // left) the stand's walls and kiosk: calm, none hot.
   const int cy = image.height / 2;
-  const Rect aisle{image.width / 4, 0, image.width * 3 / 4, cy - 20};
-  const Rect stand{image.width / 4, cy + 20, image.width * 3 / 4, image.height * 7 / 8};
+  const Rect aisle{image.width / 4, cy + 20, image.width * 3 / 4, image.height * 7 / 8};
+  const Rect stand{image.width / 4, image.height / 8, image.width * 3 / 4, cy - 20};
   EXPECT_GT(count_pixels(image, aisle, hot), 150) << "no visitor in the aisle is painted as moving";
   EXPECT_GT(count_pixels(image, stand, calm), 300) << "the stand's walls are not the calm colour";
   EXPECT_LT(count_pixels(image, stand, hot), 20) << "the stand's static walls are painted as moving";

@@ -50,8 +50,9 @@ TEST(AppSmoke, VirtualG6RendersAScreenshot) {
   expect_scan_and_panels(png);
 }
 
-// --sector 260:280 shades a wedge on the lidar's left (270 degrees, clockwise from ahead): a dim
-// orange tint between the lidar and the wall there, and none in the mirror image on its right.
+// --sector 260:280 shades a wedge on the lidar's right (270 degrees: the laser frame's -y, drawn to
+// the right as ROS tools draw it): a dim orange tint between the lidar and the wall there, and none
+// in the mirror image on its left.
 TEST(AppSmoke, AWatchedSectorIsShadedOnTheView) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
   const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-sector.png";
@@ -64,8 +65,33 @@ TEST(AppSmoke, AWatchedSectorIsShadedOnTheView) {
   const auto tinted = [](const unsigned char* p) { return p[0] > p[2] + 12 && p[0] < 120 && p[1] < 100; };
   const int left = count_pixels(image, {cx - 160, cy - 8, cx - 40, cy + 8}, tinted);
   const int right = count_pixels(image, {cx + 40, cy - 8, cx + 160, cy + 8}, tinted);
-  EXPECT_GT(left, 120 * 16 / 2) << "no sector shading left of the lidar";
-  EXPECT_LT(right, 120 * 16 / 20) << "shading where no sector is";
+  EXPECT_GT(right, 120 * 16 / 2) << "no sector shading right of the lidar";
+  EXPECT_LT(left, 120 * 16 / 20) << "shading where no sector is";
+}
+
+// The unit's 0 and sweep are marked at the lidar (pale blue): a lone lidar is drawn in its laser
+// frame, so the tick to its 0 points straight down, none points up, and the sweep's arrow runs
+// from there round to the lidar's left (clockwise on screen).
+TEST(AppSmoke, TheUnitsZeroAndSweepAreMarkedAtTheLidar) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (scripts/test does)";
+  const std::string png = std::string(testing::TempDir()) + "ydscope-smoke-unit-marks.png";
+  std::filesystem::remove(png);
+  ASSERT_EQ(run_app("--sim G6 --scene room --screenshot '" + png + "' --frames 60"), 0);
+  const Image image = load_png(png);
+  ASSERT_TRUE(image.pixels) << png;
+  const int view_left = image.width * 35 / 100;
+  const int cx = (view_left + image.width) / 2, cy = image.height / 2;
+  const auto mark = [](const unsigned char* p) {
+    return p[0] > 100 && p[0] < 180 && p[1] > 160 && p[1] < 235 && p[2] > 215;
+  };
+  const int below = count_pixels(image, {cx - 5, cy + 12, cx + 6, cy + 31}, mark);
+  const int above = count_pixels(image, {cx - 5, cy - 31, cx + 6, cy - 12}, mark);
+  const int sweep_left = count_pixels(image, {cx - 30, cy - 8, cx - 8, cy + 26}, mark);
+  const int sweep_right = count_pixels(image, {cx + 8, cy - 8, cx + 30, cy + 26}, mark);
+  EXPECT_GT(below, 15) << "no tick to the unit's 0 below the lidar";
+  EXPECT_LT(above, 3) << "a tick above the lidar: the 0 is drawn the wrong way";
+  EXPECT_GT(sweep_left, 15) << "no sweep arrow on the lidar's left";
+  EXPECT_LT(sweep_right, 3) << "the sweep arrow runs the wrong way";
 }
 
 TEST(AppSmoke, DemoRecordingReplaysIntoAScreenshot) {

@@ -42,7 +42,8 @@ struct SourcePixels {
 
 SourcePixels source_pixels(const Image& image, ui::Rgba8 colour, const Pose& pose) {
   const int cx = (kViewLeft + image.width) / 2, cy = image.height / 2;
-  const double bearing = std::atan2(pose.x_m, pose.y_m);  // clockwise from straight up, as the view draws
+  // Clockwise from straight up: the view draws forward (+x) up and left (+y) to the left.
+  const double bearing = std::atan2(-pose.y_m, pose.x_m);
   SourcePixels counted;
   for (int y = 0; y < image.height; ++y) {
     for (int x = kViewLeft; x < image.width; ++x) {
@@ -166,8 +167,8 @@ TEST_F(AppSources, AKilledLidarDimsOnlyItsOwnCloudAndItsLegendSaysSo) {
   ASSERT_TRUE(wait_for_path(left_link, std::chrono::seconds(15)) &&
               wait_for_path(right_link, std::chrono::seconds(15)));
   Pose left, right;
-  left.y_m = 2.0;    // above the centre
-  right.y_m = -2.0;  // below it
+  left.y_m = 2.0;    // left of the centre (REP-103: +y is left)
+  right.y_m = -2.0;  // right of it
   const pid_t app = running.add(
       spawn_in(dir, {YDSCOPE_APP_PATH, "--port", left_link, "--name", "left", "--pose", format_pose(left), "--port",
                      right_link, "--name", "right", "--pose", format_pose(right), "--model", "G6"}));

@@ -92,7 +92,8 @@ TEST(PointCloud, FiltersInterferenceCountsRemovedAndDrawsGhosts) {
   EXPECT_EQ(filtered.ghosts, 3u);  // only the newest lap's removed points
   // The newest lap is drawn last: its clean point is the final vertex and fully opaque.
   EXPECT_EQ(out.back().colour.a, 255);
-  EXPECT_NEAR(out.back().y, 1000.0f * std::cos(4.0f * 3.14159265f / 180.0f), 0.01f);
+  // (the unit's 0 points down the view: polar_to_world)
+  EXPECT_NEAR(out.back().y, -1000.0f * std::cos(4.0f * 3.14159265f / 180.0f), 0.01f);
 
   filter.show_ghosts = false;
   EXPECT_EQ(build_point_cloud(history, colours, filter, out).ghosts, 0u);

@@ -40,7 +40,7 @@ TEST(GridFit, NoLabelEntersTheStatusBand) {
     ViewTransform v = fitted_view(size, 8000.0f);
     for (int step = 0; step < 40; ++step) {
       v.zoom_about(v.viewport_centre() + Vec2{0.0f, size.y * 0.3f}, 1.05f);
-      const GridLayout grid = layout_grid(v, ring_spacing_px(size), 30.0f, 45.0f, 18.0f, kBand);
+      const GridLayout grid = layout_grid(v, ring_spacing_px(size), 30.0f, 225.0f, 18.0f, kBand);
       const float band_top = size.y - kBand;
       for (const GridLabel& l : grid.ring_labels)
         EXPECT_LE(l.screen.y + kLabelHeightPx, band_top) << l.text << " at zoom step " << step;

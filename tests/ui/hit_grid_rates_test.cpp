@@ -76,11 +76,12 @@ TEST(GridLayout, RingsCoverTheViewAndLabelsStayInside) {
   ASSERT_EQ(grid.spoke_angles_deg.size(), 12u);
   ASSERT_EQ(grid.spoke_labels.size(), 12u);  // the lidar is on screen: every spoke leaves it
   EXPECT_EQ(grid.spoke_labels[0].text, "0\xC2\xB0");
-  // 0 deg is straight up: its label sits at the top margin, horizontally at the lidar.
+  // The unit's 0 deg points back (down, as the laser frame's -x is drawn): its label sits at the
+  // bottom margin, horizontally at the lidar; 90 deg is to the left, 180 straight up.
   EXPECT_NEAR(grid.spoke_labels[0].screen.x, 500.0f, 0.5f);
-  EXPECT_NEAR(grid.spoke_labels[0].screen.y, 18.0f, 0.5f);
-  // 90 deg is to the right.
-  EXPECT_NEAR(grid.spoke_labels[3].screen.x, 1000.0f - 18.0f, 0.5f);
+  EXPECT_NEAR(grid.spoke_labels[0].screen.y, 800.0f - 18.0f, 0.5f);
+  EXPECT_NEAR(grid.spoke_labels[3].screen.x, 18.0f, 0.5f);
+  EXPECT_NEAR(grid.spoke_labels[6].screen.y, 18.0f, 0.5f);
 }
 
 TEST(GridLayout, RingLabelsKeepClearOfTheWindowEdgesAtEveryZoom) {
@@ -88,7 +89,7 @@ TEST(GridLayout, RingLabelsKeepClearOfTheWindowEdgesAtEveryZoom) {
   std::size_t labels = 0;
   for (int step = 0; step < 60; ++step) {
     v.zoom_about(v.viewport_centre(), 1.07f);
-    const GridLayout grid = layout_grid(v, 70.0f, 30.0f, 45.0f, 18.0f);
+    const GridLayout grid = layout_grid(v, 70.0f, 30.0f, 225.0f, 18.0f);
     for (const GridLabel& label : grid.ring_labels) {
       ++labels;
       EXPECT_GE(label.screen.y, 18.0f) << label.text << " at zoom step " << step;

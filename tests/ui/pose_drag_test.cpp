@@ -26,10 +26,11 @@ TEST(PoseDrag, ADragMovesTheCloudAsFarAsThePointerWentInTheWorld) {
   Pose pose;
   pose.x_m = 1.0;
   pose.yaw_deg = 30.0;
-  // 100 px right and 50 px up on screen (screen y grows downwards).
+  // 100 px right and 50 px up on screen (screen y grows downwards): the view draws the common
+  // frame's x (forward) up and its y (left) to the left, so that is 50 px forward, 100 px right.
   const Pose moved = dragged_pose(pose, drag_on(view, {400.0f, 400.0f}, {500.0f, 350.0f}, false));
-  EXPECT_NEAR(moved.x_m, 1.0 + 100.0 / px_per_mm / 1000.0, 1e-4);
-  EXPECT_NEAR(moved.y_m, 50.0 / px_per_mm / 1000.0, 1e-4);
+  EXPECT_NEAR(moved.x_m, 1.0 + 50.0 / px_per_mm / 1000.0, 1e-4);
+  EXPECT_NEAR(moved.y_m, -100.0 / px_per_mm / 1000.0, 1e-4);
   EXPECT_EQ(moved.yaw_deg, 30.0);  // a move never turns it
 }
 
@@ -37,7 +38,8 @@ TEST(PoseDrag, AZoomedInViewMovesItLess) {
   Pose pose;
   const Pose far = dragged_pose(pose, drag_on(view_of(8000.0f), {400, 400}, {480, 400}, false));
   const Pose near = dragged_pose(pose, drag_on(view_of(2000.0f), {400, 400}, {480, 400}, false));
-  EXPECT_NEAR(far.x_m, 4.0 * near.x_m, 1e-6);
+  EXPECT_NEAR(far.y_m, 4.0 * near.y_m, 1e-6);
+  EXPECT_LT(near.y_m, 0.0);  // to the right on screen is to the robot's right
 }
 
 TEST(PoseDrag, ATurnDragTurnsAboutTheLidarsOwnPosition) {
@@ -45,15 +47,16 @@ TEST(PoseDrag, ATurnDragTurnsAboutTheLidarsOwnPosition) {
   pose.x_m = 2.0;
   pose.y_m = 1.0;
   pose.yaw_deg = 170.0;
-  // From straight right of the lidar to straight above it: a quarter turn counter-clockwise.
-  const PoseDrag drag{{3000.0f, 1000.0f}, {2000.0f, 2000.0f}, true};
+  // The lidar at 2 m forward, 1 m left is drawn at world (-1000, 2000). From straight right of it
+  // to straight above it on screen: a quarter turn counter-clockwise.
+  const PoseDrag drag{{0.0f, 2000.0f}, {-1000.0f, 3000.0f}, true};
   const Pose turned = dragged_pose(pose, drag);
   EXPECT_NEAR(turned.yaw_deg, -100.0, 1e-4);  // 260 wrapped into [-180, 180)
   EXPECT_EQ(turned.x_m, 2.0);                 // a turn never moves it
   EXPECT_EQ(turned.y_m, 1.0);
   // The point the drag started from, seen by the lidar, now lies where the pointer ended.
-  const CommonPoint before = pose.to_common(CommonPoint{0.0f, 1000.0f});
-  const CommonPoint after = turned.to_common(CommonPoint{0.0f, 1000.0f});
+  const CommonPoint before = pose.to_common(CommonPoint{1000.0f, 0.0f});
+  const CommonPoint after = turned.to_common(CommonPoint{1000.0f, 0.0f});
   const double pi = 3.14159265358979;
   const double swept =
       std::atan2(after.y_mm - 1000.0, after.x_mm - 2000.0) - std::atan2(before.y_mm - 1000.0, before.x_mm - 2000.0);

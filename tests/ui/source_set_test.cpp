@@ -28,8 +28,8 @@ ColourParams solid(ColourMode mode) {
 }
 
 TEST(SourceCloud, APointLandsWhereItsSourcesPosePutsIt) {
-  // 1 m straight to the lidar's right; the lidar sits at (2 m, 0) turned 90 degrees
-  // counter-clockwise, so its right points forward in the common frame: (2000, 1000) mm.
+  // 1 m at the unit's 90 degrees (the laser frame's left); the lidar sits 2 m forward turned 90
+  // degrees counter-clockwise, so its left points back: common (1000, 0) mm, drawn straight up.
   const LapHistory history = history_of({{90.0f, 1000.0f, PointFlag::None}});
   SourceLayer layer;
   layer.history = &history;
@@ -39,7 +39,7 @@ TEST(SourceCloud, APointLandsWhereItsSourcesPosePutsIt) {
   const auto stats = build_source_clouds(std::span(&layer, 1), solid(ColourMode::Range), {}, out, scratch);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(stats.drawn, 1u);
-  EXPECT_NEAR(out[0].x, 2000.0f, 0.5f);
+  EXPECT_NEAR(out[0].x, 0.0f, 0.5f);
   EXPECT_NEAR(out[0].y, 1000.0f, 0.5f);
 }
 
@@ -52,8 +52,9 @@ TEST(SourceCloud, AnUpsideDownSourceMirrorsItsCloud) {
   std::vector<PointVertex> out, scratch;
   build_source_clouds(std::span(&layer, 1), solid(ColourMode::Range), {}, out, scratch);
   ASSERT_EQ(out.size(), 1u);
-  EXPECT_NEAR(out[0].x, -1000.0f, 0.5f);  // its right is the common frame's left
-  EXPECT_NEAR(out[0].y, -1000.0f, 0.5f);
+  // The unit's 90 lands on its right, not its left: common (0, -2000), drawn 2 m right of centre.
+  EXPECT_NEAR(out[0].x, 2000.0f, 0.5f);
+  EXPECT_NEAR(out[0].y, 0.0f, 0.5f);
 }
 
 TEST(SourceCloud, BySourceColoursEachCloudItsOwnAndDimsAStoppedOne) {
@@ -94,7 +95,7 @@ TEST(SourceCloud, ByRangeKeepsThePaletteButStillPoses) {
   build_source_clouds(std::span(&layer, 1), colours, {}, out, scratch);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].colour, point_colour(colours, {0.0f, 1000.0f, PointFlag::None}, 0.0f));
-  EXPECT_NEAR(out[0].x, -3000.0f, 0.5f);
+  EXPECT_NEAR(out[0].y, -4000.0f, 0.5f);  // the unit's 0 points back: 1 m behind a lidar 3 m back
 }
 
 TEST(SourceCloud, AutoRangeReachesTheFarthestSourcesReturns) {
@@ -193,6 +194,7 @@ TEST(SourceSet, RememberedSourcesRoundTripAndABadLineIsSkippedWithANote) {
   EXPECT_EQ(format_source_line(look), "front_left; 3.315,-1.5,-118.66,flip; #FF9628");
 
   const std::string text =
+      "pose_convention = rep103\n"
       "source = G6; 1,2,30; #3CD2FF\n"
       "source = bad pose; 1,2; #FFFFFF\n"
       "source = G1; 1,2,30; orange\n"
@@ -207,6 +209,26 @@ TEST(SourceSet, RememberedSourcesRoundTripAndABadLineIsSkippedWithANote) {
   EXPECT_TRUE(parsed.sources[1].pose.upside_down);
   ASSERT_EQ(notes.size(), 3u);  // one sentence per line left out
   EXPECT_NE(notes[1].find("orange"), std::string::npos);
+}
+
+TEST(SourceSet, PosesFromBeforeRep103AreConvertedWithOneNote) {
+  // No pose_convention line: x right, y forward, the unit's 0 ahead at yaw 0.
+  const std::string text =
+      "source = left; -1,0.5,0; #3CD2FF\n"
+      "source = back; 0,-2,180,flip; #EB50DC\n";
+  std::vector<std::string> notes;
+  const ViewSettings parsed = parse_settings(text, &notes);
+  ASSERT_EQ(parsed.sources.size(), 2u);
+  EXPECT_EQ(parsed.sources[0].pose, (Pose{0.5, 1, 180, false}));
+  EXPECT_EQ(parsed.sources[1].pose, (Pose{-2, 0, 0, true}));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("REP-103"), std::string::npos) << notes[0];
+  // Saved again, it says so, and reads back unchanged with no note.
+  const std::string saved = format_settings(parsed);
+  EXPECT_NE(saved.find("pose_convention = rep103"), std::string::npos);
+  notes.clear();
+  EXPECT_EQ(parse_settings(saved, &notes).sources, parsed.sources);
+  EXPECT_TRUE(notes.empty());
 }
 
 TEST(SourceSet, HowEachSourceStartedAndTheLastRunsListRoundTrip) {

@@ -75,13 +75,18 @@ TEST(ViewTransform, NdcTransformMatchesTheScreenMapping) {
   EXPECT_NEAR((1.0f - ny) * 0.5f * 600.0f + 50.0f, s.y, 0.01f);
 }
 
-TEST(Polar, AnglesGrowClockwiseFromAhead) {
-  const Vec2 ahead = polar_to_world(0.0f, 1000.0f);
-  const Vec2 right = polar_to_world(90.0f, 1000.0f);
-  EXPECT_NEAR(ahead.x, 0.0f, 1e-3f);
+// The laser frame drawn as ROS tools draw it: the unit's 180 (forward) up, 90 (left) to the left,
+// its 0 down; the unit's clockwise angles sweep clockwise on screen.
+TEST(Polar, TheUnitsAnglesGrowClockwiseFromItsZeroAtTheBottom) {
+  const Vec2 zero = polar_to_world(0.0f, 1000.0f);
+  const Vec2 left = polar_to_world(90.0f, 1000.0f);
+  const Vec2 ahead = polar_to_world(180.0f, 1000.0f);
+  EXPECT_NEAR(zero.x, 0.0f, 1e-3f);
+  EXPECT_NEAR(zero.y, -1000.0f, 1e-3f);
+  EXPECT_NEAR(left.x, -1000.0f, 1e-3f);
+  EXPECT_NEAR(left.y, 0.0f, 1e-2f);
+  EXPECT_NEAR(ahead.x, 0.0f, 1e-2f);
   EXPECT_NEAR(ahead.y, 1000.0f, 1e-3f);
-  EXPECT_NEAR(right.x, 1000.0f, 1e-3f);
-  EXPECT_NEAR(right.y, 0.0f, 1e-2f);
   EXPECT_NEAR(world_angle_deg(polar_to_world(271.5f, 300.0f)), 271.5f, 1e-3f);
 }
 

@@ -33,6 +33,8 @@ struct PanelEdits {
   int add_source_model_choice = 2;    // 1-based in all_profiles(): G6
   int add_source_scene_choice = 1;    // demo
   char add_source_address[512] = "";  // the port, tcp:// address or recording to add
+  // The Sources panel's "click straight ahead": the view's next left click sets this source's yaw.
+  bool forward_click_armed = false;
 };
 
 }  // namespace ydscope::ui

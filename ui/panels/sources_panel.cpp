@@ -18,19 +18,35 @@ void swatch(Rgba8 colour) {
                      {ImGui::GetFontSize(), ImGui::GetFontSize()});
 }
 
-// Position in metres and yaw in degrees, as --pose spells them; each edit is sent at once.
-void pose_fields(UiModel& m, std::size_t index, const SourceLook& look) {
+// Position in metres and yaw in degrees, as --pose spells them (REP-103: x forward, y left, yaw
+// counter-clockwise); each edit is sent at once.
+void pose_fields(UiModel& m, PanelEdits& e, std::size_t index, const SourceLook& look) {
   SourceLook edited = look;
   float xy[2] = {static_cast<float>(look.pose.x_m), static_cast<float>(look.pose.y_m)};
   float yaw = static_cast<float>(look.pose.yaw_deg);
-  bool changed = ImGui::DragFloat2("x, y m", xy, 0.01f, -static_cast<float>(kMaxPoseOffsetM),
+  float offset = static_cast<float>(look.pose.angle_offset_deg);
+  bool changed = ImGui::DragFloat2("x fwd, y left m", xy, 0.01f, -static_cast<float>(kMaxPoseOffsetM),
                                    static_cast<float>(kMaxPoseOffsetM), "%.2f");
-  changed |= ImGui::DragFloat("yaw deg", &yaw, 0.5f, -360.0f, 360.0f, "%.1f");
+  changed |= ImGui::DragFloat("yaw deg ccw", &yaw, 0.5f, -360.0f, 360.0f, "%.1f");
   changed |= ImGui::Checkbox("upside down", &edited.pose.upside_down);
+  changed |= ImGui::DragFloat("angle offset deg", &offset, 0.1f, -360.0f, 360.0f, "%.1f");
+  help_marker(
+      "Added to the unit's own angles (clockwise, as they run): where its 0 really points. The view marks "
+      "each unit's 0 and the way it sweeps.");
+  if (ImGui::Button(e.forward_click_armed ? "click the view: straight ahead..." : "set straight ahead by click"))
+    e.forward_click_armed = !e.forward_click_armed;
+  help_marker(
+      "Then click a point of this lidar's cloud that lies straight ahead of the robot (a wall you know is "
+      "ahead): its yaw turns so that point lies on the robot's forward axis. Click the button again to cancel.");
+  help_marker(
+      "Where the lidar sits on the robot, as ROS says it (REP-103): x forward, y to the left, yaw "
+      "counter-clockwise from forward. At yaw 0 the unit's 180 degrees points forward, as the ROS "
+      "driver's laser frame has it; the view draws forward up.");
   if (!changed) return;
   edited.pose.x_m = xy[0];
   edited.pose.y_m = xy[1];
   edited.pose.yaw_deg = yaw;
+  edited.pose.angle_offset_deg = offset;
   m.requests.push_back(SetSourceLook{index, edited});
 }
 
@@ -117,7 +133,7 @@ void draw_sources_panel(UiModel& m, PanelEdits& e) {
       if (ImGui::SmallButton("remove")) m.requests.push_back(RemoveSource{i});
     }
     if (i == m.selected_source) {
-      pose_fields(m, i, row.look);
+      pose_fields(m, e, i, row.look);
       ImGui::TextDisabled("Alt+drag on the view moves it, Ctrl+drag turns it");
     }
     ImGui::Separator();

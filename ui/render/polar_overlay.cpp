@@ -6,6 +6,9 @@
 
 #include <imgui.h>
 
+#include "ui/view/geometry/unit_marks.h"
+#include "ui/view/geometry/view_frame.h"
+
 namespace ydscope::ui {
 namespace {
 
@@ -59,12 +62,11 @@ void sector_wedge(ImDrawList* draw, const ViewTransform& view, const SectorShape
         sector.label.c_str(), edge, true);
 }
 
-// A lidar: a dot and a chevron pointing along its 0 deg (the heading), turned with its pose.
+// A lidar: a dot and a chevron pointing along its laser frame's forward (+x, the unit's 180 deg),
+// turned with its pose.
 void lidar_mark(ImDrawList* draw, const ViewTransform& view, const Pose& pose, ImU32 accent, bool selected) {
-  const CommonPoint at = pose.to_common(CommonPoint{0.0f, 0.0f});
-  const CommonPoint ahead = pose.to_common(CommonPoint{0.0f, 1000.0f});
-  const Vec2 o = view.world_to_screen({at.x_mm, at.y_mm});
-  Vec2 forward = view.world_to_screen({ahead.x_mm, ahead.y_mm}) - o;
+  const Vec2 o = view.world_to_screen(view_of(pose.to_common(CommonPoint{0.0f, 0.0f})));
+  Vec2 forward = view.world_to_screen(view_of(pose.to_common(CommonPoint{1000.0f, 0.0f}))) - o;
   forward = forward * (1.0f / std::max(length(forward), 1e-3f));
   const Vec2 side{-forward.y, forward.x};
   draw->AddCircleFilled(im(o), 4.0f, accent, 16);
@@ -72,6 +74,14 @@ void lidar_mark(ImDrawList* draw, const ViewTransform& view, const Pose& pose, I
   if (selected) draw->AddCircle(im(o), 15.0f, accent, 32, 2.0f);
   draw->AddTriangleFilled(im(o + forward * 24.0f), im(o + forward * 13.0f - side * 7.0f),
                           im(o + forward * 13.0f + side * 7.0f), accent);
+  // The unit's own 0 and the way it sweeps, so a rotated or mirrored mount shows at a glance.
+  const UnitMarks unit = unit_marks(view, pose);
+  const ImU32 pale = IM_COL32(140, 200, 255, 230);  // not white: the lidar's own dot stays the one white disc
+  draw->AddLine(im(unit.zero_from), im(unit.zero_to), pale, 2.0f);
+  label(draw, unit.zero_label, "0\xC2\xB0", pale, true);
+  for (std::size_t i = 1; i < unit.sweep.size(); ++i)
+    draw->AddLine(im(unit.sweep[i - 1]), im(unit.sweep[i]), pale, 1.5f);
+  draw->AddTriangleFilled(im(unit.head_tip), im(unit.head_left), im(unit.head_right), pale);
 }
 
 }  // namespace

@@ -44,6 +44,11 @@ void PolarView::handle_input(ViewSettings& settings, bool pointer_in_window, dou
     settings.auto_range = false;
   }
   const float angle = world_angle_deg(*cursor_world_);
+  if (forward_click_armed_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    forward_click_ = *cursor_world_;
+    forward_click_armed_ = false;
+    return;
+  }
   if (io.KeyShift && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     sweep_from_deg_ = sweep_last_deg_ = angle;
     sweep_turned_deg_ = 0.0f;
@@ -90,6 +95,12 @@ std::optional<PoseDrag> PolarView::take_pose_drag() {
   auto drag = pose_drag_;
   pose_drag_.reset();
   return drag;
+}
+
+std::optional<Vec2> PolarView::take_forward_click() {
+  auto clicked = forward_click_;
+  forward_click_.reset();
+  return clicked;
 }
 
 std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
@@ -156,7 +167,7 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
                         view_.viewport_size().x, view_.viewport_size().y, status_band_px_};
   if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
     std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
-    grid_ = layout_grid(view_, ring_spacing_px(view_.viewport_size()), 30.0f, 45.0f, 18.0f, status_band_px_);
+    grid_ = layout_grid(view_, ring_spacing_px(view_.viewport_size()), 30.0f, 225.0f, 18.0f, status_band_px_);
     build_grid_geometry(view_, grid_, PolarStyle{}.grid, grid_lines_);
     renderer_.upload_grid(grid_lines_);
     ++gl_generation_;

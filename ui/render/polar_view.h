@@ -42,6 +42,10 @@ class PolarView {
   // drag no longer pans, and the frame's drag is taken once here.
   void enable_pose_drag(bool on) { pose_drag_enabled_ = on; }
   std::optional<PoseDrag> take_pose_drag();
+  // "This is straight ahead" (the Sources tab's tool): while armed, the next left click on the view
+  // does not pan or sweep; its world point is taken once here (forward_click.h).
+  void arm_forward_click(bool on) { forward_click_armed_ = on; }
+  std::optional<Vec2> take_forward_click();
   // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
   void invalidate() { dirty_ = true; }
   // Fits the view to the newest lap when auto-range is on.
@@ -100,6 +104,8 @@ class PolarView {
   std::vector<SourceMark> marks_;
   bool pose_drag_enabled_ = false;
   std::optional<PoseDrag> pose_drag_;
+  bool forward_click_armed_ = false;
+  std::optional<Vec2> forward_click_;
 
   std::optional<SectorShape> sweep_shape() const;
   // The colours to build with this frame; marks the cloud dirty when they or the filter changed.

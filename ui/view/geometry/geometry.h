@@ -24,17 +24,20 @@ struct Rgba8 {
   friend bool operator==(const Rgba8&, const Rgba8&) = default;
 };
 
-// Lidar angles grow clockwise seen from above, 0 deg straight ahead. World: x right, y ahead, mm.
+// The view's world: x to the right of the screen, y up it, millimetres. A lidar is drawn in its
+// laser frame the way ROS tools draw a REP-103 frame (view_frame.h): its forward (+x, the unit's
+// 180 degrees) up, its left (+y, 90 degrees) to the left, so the unit's 0 degrees points down the
+// screen and its clockwise angles (seen from above) sweep clockwise on screen.
 inline Vec2 polar_to_world(float angle_deg, float range_mm) {
   constexpr float kDegToRad = 3.14159265358979f / 180.0f;
   const float a = angle_deg * kDegToRad;
-  return {range_mm * std::sin(a), range_mm * std::cos(a)};
+  return {-range_mm * std::sin(a), -range_mm * std::cos(a)};
 }
 
 // Inverse of polar_to_world: angle in [0, 360).
 inline float world_angle_deg(Vec2 world) {
   constexpr float kRadToDeg = 180.0f / 3.14159265358979f;
-  float a = std::atan2(world.x, world.y) * kRadToDeg;
+  float a = std::atan2(-world.x, -world.y) * kRadToDeg;
   if (a < 0.0f) a += 360.0f;
   if (a >= 360.0f) a -= 360.0f;
   return a;

@@ -35,10 +35,11 @@ struct GridLayout {
 // whatever the screen (a 1080p full-screen view once drew fourteen), never closer than 70 px.
 float ring_spacing_px(Vec2 viewport_size);
 
-// `label_angle_deg` is the direction along which ring labels are written. No label goes into the
+// `label_angle_deg` is the device angle along which ring labels are written (225: up and to the
+// right, as polar_to_world draws the unit's angles). No label goes into the
 // bottom `status_band_px` of the view, where the status line is written.
 GridLayout layout_grid(const ViewTransform& view, float min_ring_px = 70.0f, float spoke_step_deg = 30.0f,
-                       float label_angle_deg = 45.0f, float edge_margin_px = 18.0f, float status_band_px = 0.0f);
+                       float label_angle_deg = 225.0f, float edge_margin_px = 18.0f, float status_band_px = 0.0f);
 
 // Room a label needs around its anchor: ring labels are written right of and above theirs, spoke
 // labels centred on theirs (the overlay draws each on a small dark plate this size).

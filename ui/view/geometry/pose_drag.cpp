@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ui/view/geometry/view_frame.h"
+
 namespace ydscope::ui {
 namespace {
 
@@ -17,11 +19,17 @@ double wrapped_deg(double deg) {
 Pose dragged_pose(const Pose& pose, const PoseDrag& drag) {
   Pose out = pose;
   if (!drag.turn) {
-    out.x_m += (drag.to_world.x - drag.from_world.x) / 1000.0;
-    out.y_m += (drag.to_world.y - drag.from_world.y) / 1000.0;
+    // The pose is in the common frame (REP-103), the drag in the view's world.
+    const CommonPoint from = common_of(drag.from_world);
+    const CommonPoint to = common_of(drag.to_world);
+    out.x_m += (to.x_mm - from.x_mm) / 1000.0;
+    out.y_m += (to.y_mm - from.y_mm) / 1000.0;
     return out;
   }
-  const double cx = pose.x_m * 1000.0, cy = pose.y_m * 1000.0;
+  // The view is the common frame turned a quarter, so angles swept on screen are yaw angles.
+  const Vec2 centre =
+      view_of(CommonPoint{static_cast<float>(pose.x_m * 1000.0), static_cast<float>(pose.y_m * 1000.0)});
+  const double cx = centre.x, cy = centre.y;
   // A pointer on the lidar itself has no direction to turn by.
   if (std::hypot(drag.from_world.x - cx, drag.from_world.y - cy) < 1.0 ||
       std::hypot(drag.to_world.x - cx, drag.to_world.y - cy) < 1.0)

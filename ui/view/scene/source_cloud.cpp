@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ui/view/geometry/grid_layout.h"
+#include "ui/view/geometry/view_frame.h"
 
 namespace ydscope::ui {
 
@@ -23,9 +24,9 @@ PointCloudStats build_source_clouds(std::span<const SourceLayer> layers, const C
     total.newest_no_return += stats.newest_no_return;
     const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
     for (PointVertex v : scratch) {
-      const CommonPoint common = layer.pose.to_common(CommonPoint{v.x, v.y});
-      v.x = common.x_mm;
-      v.y = common.y_mm;
+      const Vec2 posed = posed_in_view(layer.pose, {v.x, v.y});
+      v.x = posed.x;
+      v.y = posed.y;
       if (by_source) {
         // The lap's fade stays in the alpha; the hue says whose point it is.
         v.colour.r = layer.colour.r;

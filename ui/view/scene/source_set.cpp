@@ -42,20 +42,21 @@ Pose free_spread_pose(const std::vector<Pose>& taken) {
 
 std::vector<Pose> spread_poses(std::size_t count) {
   std::vector<Pose> poses(count);
-  if (count == 2) {
-    poses[0].x_m = -2.0;
-    poses[1].x_m = 2.0;
-    poses[1].yaw_deg = 180.0;
+  if (count == 2) {  // one on the left facing back, one on the right facing forward
+    poses[0].y_m = 2.0;
+    poses[0].yaw_deg = 180.0;
+    poses[1].y_m = -2.0;
   } else if (count >= 3) {
     constexpr double kRadiusM = 3.0;
     for (std::size_t i = 0; i < count; ++i) {
-      // Evenly round a circle, the first straight ahead of the common origin.
+      // Evenly round a circle clockwise seen from above, the first straight ahead of the origin.
       const double turn = 360.0 * static_cast<double>(i) / static_cast<double>(count);
       const double rad = turn * 3.14159265358979 / 180.0;
-      poses[i].x_m = std::round(kRadiusM * std::sin(rad) * 100.0) / 100.0;
-      poses[i].y_m = std::round(kRadiusM * std::cos(rad) * 100.0) / 100.0;
+      poses[i].x_m = std::round(kRadiusM * std::cos(rad) * 100.0) / 100.0 + 0.0;
+      poses[i].y_m = std::round(-kRadiusM * std::sin(rad) * 100.0) / 100.0 + 0.0;
       // Each faces its own way, so the clouds differ in shape too; within (-180, 180], never -0.
-      poses[i].yaw_deg = i == 0 ? 0.0 : (turn > 180.0 ? 360.0 - turn : -turn);
+      const double yaw = 180.0 - turn;
+      poses[i].yaw_deg = (yaw <= -180.0 ? yaw + 360.0 : yaw) + 0.0;
     }
   }
   return poses;

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "core/frame/pose_convention.h"
 #include "ui/view/history/sector_watch.h"
 
 namespace ydscope::ui {
@@ -65,6 +66,7 @@ std::filesystem::path config_directory() {
 
 ViewSettings parse_settings(const std::string& text, std::vector<std::string>* notes) {
   ViewSettings s;
+  bool poses_in_rep103 = false;
   std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
@@ -127,6 +129,8 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
         if (!name.empty()) s.last_sources.push_back(std::move(name));
         at = comma + 1;
       }
+    } else if (key == kPoseConventionKey) {
+      poses_in_rep103 = value == kPoseConvention;
     } else if (key == "source") {
       std::string error;
       if (auto look = parse_source_line(value, error))
@@ -145,6 +149,10 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
         notes->push_back("sector = " + value + " is left out: " + error);
       }
     }
+  }
+  if (!poses_in_rep103 && !s.sources.empty()) {
+    for (SourceLook& look : s.sources) look.pose = pose_from_pre_rep103(look.pose);
+    if (notes) notes->push_back(std::string(kPreRep103Note));
   }
   return s;
 }
@@ -173,7 +181,8 @@ std::string format_settings(const ViewSettings& s) {
       << "show_grid = " << yes(s.show_grid) << "\n"
       << "smooth = " << yes(s.smooth) << "\n"
       << "split_view = " << yes(s.split_view) << "\n"
-      << "last_replay_file = " << s.last_replay_file << "\n";
+      << "last_replay_file = " << s.last_replay_file << "\n"
+      << kPoseConventionKey << " = " << kPoseConvention << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
   for (const SourceLook& source : s.sources) out << "source = " << format_source_line(source) << "\n";
   if (!s.last_sources.empty()) {
