@@ -205,8 +205,9 @@ int run_decode(std::span<const std::string> raw) {
                      ", and X4 or X2 to decode their bytes");
   const auto mcap = args.value("mcap");
   if (mcap) refuse_to_overwrite(*mcap, args, "--mcap");
-  if (!mcap && (args.value("compression") || args.value("frame-id") || args.has("no-link-bytes") || args.has("force")))
-    throw UsageError("--compression, --frame-id, --no-link-bytes and --force go with --mcap OUT.mcap");
+  if (!mcap && (args.value("compression") || args.value("frame-id") || args.value("parent-frame") ||
+                args.has("no-link-bytes") || args.has("force")))
+    throw UsageError("--compression, --frame-id, --parent-frame, --no-link-bytes and --force go with --mcap OUT.mcap");
   if (mcap && !input.regular())  // it is read twice
     throw UsageError("--mcap needs a FILE, not standard input, a FIFO or a device");
   const LapFormat format = parse_lap_format(args.value("format"), mcap ? LapFormat::Summary : LapFormat::Jsonl);

@@ -48,8 +48,10 @@ wall-clock time plus each record's time.
 
 A recording of several lidars (`record` with several --port) puts each lidar's topics under its
 name, /NAME/scan, /NAME/points, /NAME/diagnostics, /NAME/ydscope/device_bytes and host_bytes,
-with NAME as their frame_id, and adds /tf_static (tf2_msgs/msg/TFMessage): every lidar's pose
-as a transform from the common frame "ydscope" to NAME (an upside-down lidar rolled 180 degrees).
+with NAME as their frame_id. /tf_static (tf2_msgs/msg/TFMessage) places every lidar, one too:
+its pose as the transform from the robot's frame (--parent-frame, default base_link; x forward,
+y left) to its frame (an upside-down lidar rolled 180 degrees), and under that NAME_unit, whose x
+is the unit's 0 degrees and y its 90 (z down: the unit sweeps clockwise seen from above).
 
 options:
   --mcap OUT.mcap    the file to write; an existing file is refused unless --force is given
@@ -97,6 +99,10 @@ int run_export(std::span<const std::string> raw) {
   auto reader = RecordingReader::open(path, error);
   if (!reader) throw std::runtime_error(error);
   // Several lidars: each under its name, decoded as its own model, and /tf_static.
+  if (plan.several_sources() && args.value("frame-id"))
+    throw UsageError("--frame-id names one lidar's frame, but " + path + " holds " +
+                     std::to_string(plan.sources.size()) +
+                     " lidars, each written in a frame named after it; leave --frame-id out");
   std::vector<McapSource> sources;
   if (plan.several_sources())
     for (std::size_t id = 0; id < plan.sources.size(); ++id)

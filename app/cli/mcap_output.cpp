@@ -2,10 +2,12 @@
 
 #include <filesystem>
 
+#include "app/common/source_list_options.h"
+
 namespace ydscope::cli {
 
 std::set<std::string> with_mcap_value_options(std::set<std::string> own) {
-  own.insert({"compression", "frame-id"});
+  own.insert({"compression", "frame-id", "parent-frame"});
   return own;
 }
 
@@ -21,10 +23,10 @@ McapExportOptions mcap_options_from(const Arguments& args) {
     if (!compression) throw UsageError("--compression takes zstd, lz4 or none, not '" + *name + "'");
     options.mcap.compression = *compression;
   }
-  if (const auto frame = args.value("frame-id")) {
-    if (frame->empty()) throw UsageError("--frame-id needs a name, e.g. --frame-id laser");
-    options.ros.frame.frame_id = *frame;
-  }
+  // With several lidars each --frame-id is one lidar's (source_list_options.h); alone, the first.
+  if (const auto frame = args.value("frame-id")) options.ros.frame.frame_id = checked_frame_id("frame-id", *frame);
+  if (const auto parent = args.value("parent-frame"))
+    options.ros.frame.parent_frame_id = checked_frame_id("parent-frame", *parent);
   options.ros.link_bytes = !args.has("no-link-bytes");
   return options;
 }

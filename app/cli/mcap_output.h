@@ -15,17 +15,20 @@ namespace ydscope::cli {
 std::set<std::string> with_mcap_value_options(std::set<std::string> own);
 std::set<std::string> with_mcap_flags(std::set<std::string> own);
 
-// --compression zstd|lz4|none, --frame-id ID, --no-link-bytes. UsageError on mistakes.
+// --compression zstd|lz4|none, --frame-id ID, --parent-frame ID, --no-link-bytes. UsageError on
+// mistakes (a frame name tf2 would not take).
 McapExportOptions mcap_options_from(const Arguments& args);
 
 // UsageError when `path` exists and --force was not given.
 void refuse_to_overwrite(const std::string& path, const Arguments& args, std::string_view option);
 
 // The lines of these options in --help texts (a literal, so help texts can splice it in).
-#define YDSCOPE_MCAP_OPTIONS_HELP                                                                   \
-  "  --compression C    MCAP chunk compression: zstd (default), lz4 or none\n"                      \
-  "  --frame-id ID      frame_id of /scan, /points and /diagnostics (default: laser)\n"             \
-  "  --no-link-bytes    leave out /ydscope/device_bytes and /ydscope/host_bytes (a smaller file,\n" \
+#define YDSCOPE_MCAP_OPTIONS_HELP                                                                     \
+  "  --compression C    MCAP chunk compression: zstd (default), lz4 or none\n"                        \
+  "  --frame-id ID      frame_id of /scan, /points and /diagnostics (default: laser); with several\n" \
+  "                     --port, once per --port (default: each lidar's --name)\n"                     \
+  "  --parent-frame ID  the robot's frame /tf_static places each lidar in (default: base_link)\n"     \
+  "  --no-link-bytes    leave out /ydscope/device_bytes and /ydscope/host_bytes (a smaller file,\n"   \
   "                     but it can no longer be decoded again like a recording)\n"
 
 }  // namespace ydscope::cli

@@ -27,7 +27,24 @@ bool valid_source_name(const std::string& name) {
   return true;
 }
 
-std::set<std::string> source_repeatable_options() { return {"port", "name", "pose", "model", "baud"}; }
+bool valid_frame_id(const std::string& frame) {
+  // What tf2 takes as is: no leading '/', no spaces; letters, digits, _ and / between parts.
+  if (frame.empty() || frame.size() > 128 || !std::isalpha(static_cast<unsigned char>(frame.front())) ||
+      frame.back() == '/')
+    return false;
+  for (const char c : frame)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '/') return false;
+  return true;
+}
+
+std::string checked_frame_id(const std::string& option, const std::string& frame) {
+  if (!valid_frame_id(frame))
+    throw UsageError("--" + option + " '" + frame +
+                     "' must be a ROS frame name: letters, digits, _ and /, starting with a letter (e.g. base_link)");
+  return frame;
+}
+
+std::set<std::string> source_repeatable_options() { return {"port", "name", "pose", "model", "baud", "frame-id"}; }
 
 std::vector<SourceText> source_texts_from(const Arguments& args) {
   const std::vector<std::string> ports = args.values("port");
@@ -35,6 +52,8 @@ std::vector<SourceText> source_texts_from(const Arguments& args) {
   const auto poses = per_port(args, "pose", ports.size(), false);
   const auto models = per_port(args, "model", ports.size(), true);
   const auto bauds = per_port(args, "baud", ports.size(), true);
+  // One frame for several lidars would put their clouds on top of each other: once per --port.
+  const auto frames = per_port(args, "frame-id", ports.size(), false);
   std::vector<SourceText> sources;
   std::set<std::string> seen_names;
   for (std::size_t i = 0; i < ports.size(); ++i) {
@@ -46,6 +65,7 @@ std::vector<SourceText> source_texts_from(const Arguments& args) {
     if (!valid_source_name(source.name))
       throw UsageError("--name '" + source.name + "' must be letters, digits and _, starting with a letter (up to 64)");
     if (!seen_names.insert(source.name).second) throw UsageError("--name " + source.name + " is given to two ports");
+    if (frames[i]) source.frame_id = checked_frame_id("frame-id", *frames[i]);
     if (poses[i]) {
       std::string error;
       const auto pose = parse_pose(*poses[i], error);

@@ -182,8 +182,13 @@ void LiveTopics::tell_clients(std::size_t source, Reading& reading) {
 
 void LiveTopics::publish_poses() {
   std::vector<RosTransform> transforms;
-  for (const McapSource& source : sources_)
-    transforms.push_back(ros_transform_of(source.pose, options_.topics.ros.frame, kCommonFrameId, source.name));
+  for (std::size_t id = 0; id < lanes_.size(); ++id) {
+    // One lidar: the options' frame; one of several: its name (ros_options_of).
+    const RosFrameOptions frame =
+        sources_.empty() ? options_.topics.ros.frame : ros_options_of(options_.topics.ros, sources_[id]).frame;
+    append_lidar_transforms(sources_.empty() ? Pose{} : sources_[id].pose, frame, frame.parent_frame_id,
+                            frame.frame_id, transforms);
+  }
   std::vector<std::uint8_t> cdr;
   const std::uint64_t now_ns = unix_now_ns();
   encode_tf_message(transforms, now_ns, cdr);
@@ -222,7 +227,7 @@ void LiveTopics::run() {
       for (std::size_t id = 0; id < readings.size(); ++id) tell_clients(id, readings[id]);
       // Once: /tf_static is latched (ros_topic_channels), so the server gives it to every client
       // that subscribes, whenever it does.
-      if (several() && !poses_told) {
+      if (!poses_told) {
         publish_poses();
         poses_told = true;
       }

@@ -2,7 +2,7 @@
 // The bridge's channels: one per ROS topic the encoder writes (core/export/ros_topic_encoder.h),
 // with the same ros2msg schemas as the MCAP files. Ids start at 1 (0 reads as "unset" in clients).
 // One lidar: its topics are 1..kRosTopicCount, named as ever ("/scan"). Several: lidar i's topics
-// are the i-th block of kRosTopicCount ids, named "/NAME/scan", and /tf_static comes after them.
+// are the i-th block of kRosTopicCount ids, named "/NAME/scan". /tf_static comes after them.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -19,7 +19,7 @@ inline std::uint32_t channel_id(RosTopic topic, std::size_t source = 0) {
   return static_cast<std::uint32_t>(source * kRosTopicCount + static_cast<std::size_t>(topic) + 1);
 }
 inline std::uint32_t tf_static_channel_id(std::size_t sources) {
-  return static_cast<std::uint32_t>(sources * kRosTopicCount + 1);
+  return static_cast<std::uint32_t>((sources < 1 ? 1 : sources) * kRosTopicCount + 1);
 }
 
 // `sources`: empty for one lidar, else several, by source id. Without `link_bytes` (serve
@@ -32,12 +32,10 @@ inline std::vector<ServerChannel> ros_topic_channels(std::span<const McapSource>
       if (link_bytes || !is_link_bytes(t.topic))
         out.push_back({channel_id(t.topic, id), source_topic_name(sources, id, t.name), std::string(t.schema->name),
                        std::string(t.schema->text)});
-  if (!sources.empty()) {
-    const RosSchema& tf = tf_message_schema();
-    // Latched, as in ROS: a client that subscribes at any time gets every pose at once.
-    out.push_back(
-        {tf_static_channel_id(sources.size()), "/tf_static", std::string(tf.name), std::string(tf.text), true});
-  }
+  // Every lidar's mount and unit frame, one lidar's too (core/export/ros_tf.h). Latched, as in
+  // ROS: a client that subscribes at any time gets every pose at once.
+  const RosSchema& tf = tf_message_schema();
+  out.push_back({tf_static_channel_id(count), "/tf_static", std::string(tf.name), std::string(tf.text), true});
   return out;
 }
 

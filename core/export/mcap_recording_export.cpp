@@ -101,7 +101,7 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
     }
     lanes_.push_back(std::move(lane));
   }
-  if (!sources_.empty()) {
+  {  // every lidar, one too: its mount in the parent frame and its unit frame (ros_tf.h)
     const RosSchema& tf = tf_message_schema();
     const std::uint16_t schema =
         writer_.add_schema(tf.name, "ros2msg", {reinterpret_cast<const std::uint8_t*>(tf.text.data()), tf.text.size()});
@@ -164,11 +164,14 @@ void McapRecordingExport::write_due() {
 }
 
 void McapRecordingExport::write_tf_static() {
-  if (sources_.empty() || tf_written_) return;
+  if (tf_written_) return;
   tf_written_ = true;
   std::vector<RosTransform> transforms;
-  for (const McapSource& source : sources_)
-    transforms.push_back(ros_transform_of(source.pose, lanes_.front().encoder->frame(), kCommonFrameId, source.name));
+  for (std::size_t id = 0; id < lanes_.size(); ++id) {
+    const RosFrameOptions& frame = lanes_[id].encoder->frame();  // its frame_id: this lidar's frame
+    append_lidar_transforms(id < sources_.size() ? sources_[id].pose : Pose{}, frame, frame_.parent_frame_id,
+                            frame.frame_id, transforms);
+  }
   // At the recording's start: a static transform holds from then on.
   const auto& start = lanes_.front().encoder->recording_metadata().start_wall_time;
   const std::uint64_t stamp = start ? parse_iso8601_utc_ns(*start).value_or(0) : 0;

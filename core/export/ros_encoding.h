@@ -16,6 +16,8 @@ namespace ydscope {
 
 struct RosFrameOptions {
   std::string frame_id = "laser";
+  // The robot's frame every lidar is placed in on /tf_static (REP-103; core/export/ros_tf.h).
+  std::string parent_frame_id = "base_link";
   // The official driver's `reversion` (+180 degrees) and `inverted` (counter-clockwise, as ROS
   // angles run); its G1, G6 and TG parameter files set both, and so do we by default.
   bool reversion = true;

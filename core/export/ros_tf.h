@@ -21,9 +21,6 @@
 
 namespace ydscope {
 
-// The common frame's id in /tf_static.
-inline constexpr const char* kCommonFrameId = "ydscope";
-
 struct RosTransform {
   std::string parent_frame;
   std::string child_frame;

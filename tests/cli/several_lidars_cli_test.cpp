@@ -112,9 +112,10 @@ TEST_F(SeveralLidarsCli, RecordsTwoLidarsLiveIntoOneMcapEachUnderItsName) {
   test::SimOnPty g1(Model::G1);
   test::SimOnPty g6(Model::G6);
   const std::string mcap = path("two.mcap");
-  const auto record =
-      run_cli_apart("record --port '" + g1.port() + "' --name front --pose 0.2,0,0 --port '" + g6.port() +
-                    "' --name back --pose -0.2,0,180,flip --mcap '" + mcap + "' --seconds 2");
+  const auto record = run_cli_apart(
+      "record --port '" + g1.port() + "' --name front --pose 0.2,0,0 --frame-id front_laser --port '" + g6.port() +
+      "' --name back --pose -0.2,0,180,flip --frame-id rear_laser --parent-frame robot --mcap '" + mcap +
+      "' --seconds 2");
   ASSERT_EQ(record.status, 0) << record.out << record.err;
   EXPECT_EQ(record.out.rfind("wrote " + mcap + ": ", 0), 0u) << record.out;
 
@@ -125,7 +126,30 @@ TEST_F(SeveralLidarsCli, RecordsTwoLidarsLiveIntoOneMcapEachUnderItsName) {
   const test::McapContents contents = test::read_mcap(bytes);
   EXPECT_TRUE(contents.complete);
   std::map<std::string, std::size_t> per_topic;
-  for (const test::ReadMessage& m : contents.messages) ++per_topic[contents.channels.at(m.channel_id).topic];
+  for (const test::ReadMessage& m : contents.messages) {
+    const std::string& topic = contents.channels.at(m.channel_id).topic;
+    ++per_topic[topic];
+    test::CdrReader r(m.data);
+    if (topic == "/front/points" || topic == "/back/scan") {  // each lidar's --frame-id in its headers
+      r.i32();
+      r.u32();
+      EXPECT_EQ(r.str(), topic == "/front/points" ? "front_laser" : "rear_laser");
+    }
+    if (topic != "/tf_static") continue;
+    // Each lidar placed in --parent-frame under its --frame-id, each with its unit frame under it.
+    std::vector<std::pair<std::string, std::string>> links;
+    for (std::uint32_t n = r.u32(), i = 0; i < n; ++i) {
+      r.i32();
+      r.u32();
+      std::string parent = r.str();
+      links.emplace_back(std::move(parent), r.str());
+      for (int v = 0; v < 7; ++v) r.take(8, 8);
+    }
+    EXPECT_EQ(links, (std::vector<std::pair<std::string, std::string>>{{"robot", "front_laser"},
+                                                                       {"front_laser", "front_laser_unit"},
+                                                                       {"robot", "rear_laser"},
+                                                                       {"rear_laser", "rear_laser_unit"}}));
+  }
   EXPECT_GE(per_topic["/front/points"], 5u);
   EXPECT_GE(per_topic["/back/points"], 5u);
   EXPECT_EQ(per_topic["/front/scan"], per_topic["/front/points"]);
@@ -218,6 +242,10 @@ TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
            path("x.ydrec") + "'",
        "must be different files"},
       {"record --port " + port + " --name front" + out, "--name and --pose"},
+      // One frame for two lidars would lay their clouds on top of each other: refused, not ignored.
+      {"record --port " + port + " --frame-id laser --port tcp://127.0.0.1:9" + out, "once per --port (2 ports)"},
+      {"record --port " + port + " --frame-id 'front laser' --port tcp://127.0.0.1:9 --frame-id b" + out,
+       "must be a ROS frame name"},
   };
   for (const auto& [arguments, says] : cases) {
     const auto run = run_cli_apart(arguments);
@@ -226,6 +254,27 @@ TEST_F(SeveralLidarsCli, MistakesInPlacingTheLidarsAreOneSentenceAndUsage) {
     EXPECT_NE(run.err.find(says), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(path("x.ydrec"))) << arguments;
   }
+}
+
+// A recording of several lidars writes each in a frame named after it: one --frame-id cannot name
+// them, so export says so instead of dropping it; a bad --parent-frame is one sentence too.
+TEST_F(SeveralLidarsCli, ExportRefusesOneFrameIdForSeveralLidarsAndABadParentFrame) {
+  test::RawRecording raw(2, 16, "name=front\nmodel=G6\n");
+  raw.add(RecordType::Metadata, 0,
+          {'n', 'a', 'm', 'e', '=', 'b', 'a', 'c', 'k', '\n', 'm', 'o', 'd', 'e', 'l', '=', 'G', '6', '\n'}, 1);
+  raw.write(path("two.ydrec"));
+  const auto one_frame =
+      run_cli_apart("export '" + path("two.ydrec") + "' --mcap '" + path("x.mcap") + "' --frame-id laser");
+  EXPECT_EQ(one_frame.status, 2) << one_frame.err;
+  EXPECT_EQ(count(one_frame.err, "\n"), 1u) << one_frame.err;
+  EXPECT_NE(one_frame.err.find("holds 2 lidars"), std::string::npos) << one_frame.err;
+  EXPECT_NE(one_frame.err.find("leave --frame-id out"), std::string::npos) << one_frame.err;
+  const auto bad_parent =
+      run_cli_apart("export '" + path("two.ydrec") + "' --mcap '" + path("x.mcap") + "' --parent-frame /base_link");
+  EXPECT_EQ(bad_parent.status, 2) << bad_parent.err;
+  EXPECT_NE(bad_parent.err.find("--parent-frame '/base_link' must be a ROS frame name"), std::string::npos)
+      << bad_parent.err;
+  EXPECT_FALSE(fs::exists(path("x.mcap")));
 }
 
 TEST_F(SeveralLidarsCli, ASourceWithoutAModelIsNamedAndNeedsModel) {

@@ -69,18 +69,21 @@ TEST(McapRecordingExport, SeveralSourcesEachUnderItsNameWithTfStatic) {
     if (topic != "/tf_static") continue;
     EXPECT_EQ(m.log_time, 1'796'202'000'000'000'000ull);  // the recording's start
     test::CdrReader r(m.data);
-    ASSERT_EQ(r.u32(), 2u);
+    ASSERT_EQ(r.u32(), 4u);  // each lidar's mount in base_link, then its unit frame
     for (const char* child : {"front", "back"}) {
-      r.i32();
-      r.u32();
-      EXPECT_EQ(r.str(), kCommonFrameId);
-      EXPECT_EQ(r.str(), child);
-      double v[7];
-      for (double& x : v) std::memcpy(&x, r.take(8, 8), 8);
-      const RosTransform expected = ros_transform_of(
-          std::string(child) == "front" ? Pose{0.2, 0, 0, false} : Pose{-0.2, 0, 180, true}, {}, kCommonFrameId, child);
-      for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(v[i], expected.translation[i]);
-      for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(v[3 + i], expected.rotation[i]);
+      std::vector<RosTransform> expected;
+      append_lidar_transforms(std::string(child) == "front" ? Pose{0.2, 0, 0, false} : Pose{-0.2, 0, 180, true}, {},
+                              "base_link", child, expected);
+      for (const RosTransform& t : expected) {
+        r.i32();
+        r.u32();
+        EXPECT_EQ(r.str(), t.parent_frame);
+        EXPECT_EQ(r.str(), t.child_frame);
+        double v[7];
+        for (double& x : v) std::memcpy(&x, r.take(8, 8), 8);
+        for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(v[i], t.translation[i]);
+        for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(v[3 + i], t.rotation[i]);
+      }
     }
     EXPECT_TRUE(r.at_end());
   }

@@ -299,15 +299,23 @@ if (raw && !killed && name === undefined) {
 }
 }
 
-// 7. Several lidars: /tf_static places each one in the common frame.
-if (args.sources) {
+// 7. /tf_static places each lidar (one too: its /scan's frame) in the robot's frame, with its unit frame.
+{
   const tf = byTopic.get("/tf_static") ?? [];
   if (tf.length === 0) fail("no /tf_static message");
-  const children = tf[0].decoded.transforms.map((t) => t.child_frame_id);
-  for (const name of names) if (!children.includes(name)) fail(`/tf_static has no transform to ${name} (it has ${children})`);
-  const parents = new Set(tf[0].decoded.transforms.map((t) => t.header.frame_id));
-  if (parents.size !== 1) fail(`/tf_static transforms hang from ${[...parents]}, not one common frame`);
-  ok(`/tf_static: ${children.length} transforms from ${[...parents][0]} to ${children.join(", ")}`);
+  const frames = args.sources ? names : [byTopic.get("/scan")[0].decoded.header.frame_id];
+  const transforms = tf[0].decoded.transforms;
+  const children = transforms.map((t) => t.child_frame_id);
+  for (const name of frames) {
+    if (!children.includes(name)) fail(`/tf_static has no transform to ${name} (it has ${children})`);
+    // Each lidar's unit frame (its 0 degrees and sweep) hangs from its laser frame.
+    const unit = transforms.find((t) => t.child_frame_id === `${name}_unit`);
+    if (!unit || unit.header.frame_id !== name) fail(`/tf_static has no ${name}_unit under ${name}`);
+  }
+  const mounts = transforms.filter((t) => frames.includes(t.child_frame_id));
+  const parents = new Set(mounts.map((t) => t.header.frame_id));
+  if (parents.size !== 1) fail(`/tf_static places the lidars in ${[...parents]}, not one robot frame`);
+  ok(`/tf_static: ${mounts.length} lidar(s) placed in ${[...parents][0]} (${frames.join(", ")}), each with its unit frame`);
   // Latched, as rosbag2 records a transient-local topic, so tf2's static listener gets it on replay.
   const qos = qosByTopic.get("/tf_static");
   for (const line of ["- history: 1", "  depth: 1", "  reliability: 1", "  durability: 1"])

@@ -44,12 +44,13 @@ TEST(LapMcap, WritesEveryShownLapOldestFirstWithEveryPoint) {
   ASSERT_TRUE(saved.error.empty()) << saved.error;
   EXPECT_FALSE(std::filesystem::exists(part_name(path))) << "the part it was written as is left behind";
   EXPECT_EQ(saved.laps, 4u) << "all the view holds, not more";
-  EXPECT_EQ(saved.messages, 8u);
+  EXPECT_EQ(saved.messages, 9u);  // four /scan, four /points, one /tf_static
 
   const auto contents = test::read_mcap(file_bytes(path));
   ASSERT_TRUE(contents.complete);
   EXPECT_EQ(contents.profile, "ros2");
-  EXPECT_EQ(contents.stat_messages, 8u);
+  EXPECT_EQ(contents.stat_messages, 9u);  // and /tf_static: where the lidar sits (ros_tf.h)
+  EXPECT_NE(test::channel_on(contents, "/tf_static"), 0);
   const std::uint16_t scan = test::channel_on(contents, "/scan"), points = test::channel_on(contents, "/points");
   ASSERT_NE(scan, 0);
   ASSERT_NE(points, 0);
