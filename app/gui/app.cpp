@@ -1,4 +1,5 @@
 #include "app/gui/app.h"
+#include "app/gui/zone_setup.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,6 +41,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   std::snprintf(sel().edits.replay_text, sizeof sel().edits.replay_text, "%s", settings_.last_replay_file.c_str());
   model().ports = discover_ports();
   restore_watched_sectors(model().sectors, settings_, options_.sector);
+  zones_ = zones_to_watch(settings_.zones, options_.zones);
   sync_sectors();
 }
 
@@ -57,6 +59,9 @@ void App::frame() {
   last_frame_ = std::chrono::steady_clock::now();
   const double now_s = seconds_since_start(last_frame_);
   for (const auto& slot : sources_.slots()) {
+    // Each source watches the zones from its own pose; one added since gets them here.
+    if (slot->model.zones.zones().size() != zones_.size()) slot->model.zones = ZoneWatch(zones_);
+    slot->zone_beep = settings_.zone_beep || options_.zone_beep;
     if (slot->take_laps(now_s)) stage_.view().invalidate();
     update_model(*slot);
     if (static_cast<int>(slot->history.depth()) != settings_.persistence_laps) {

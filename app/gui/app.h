@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/gui/app_options.h"
+#include "core/analysis/zone.h"
 #include "app/gui/booth_window.h"
 #include "app/gui/source_list.h"
 #include "app/gui/source_outputs.h"
@@ -102,6 +103,7 @@ class App {
   BoothWindow booth_{window_};    // F11: the full-screen booth view
   WindowEvents events_{window_};  // keys and repaints since the last frame
   AppOptions options_;
+  std::vector<Zone> zones_;  // settings.ini's and --zone's, watched from every source
   SourceOutputs outputs_{options_.share_port, options_.record};  // Share and the Record tab, of the selected source
   SettingsStore store_;
   ui::ViewSettings settings_ = store_.load();

@@ -8,6 +8,7 @@
 
 #include "app/common/source_list_options.h"
 #include "core/analysis/sector.h"
+#include "core/analysis/zone.h"
 #include "core/protocol/model_profile.h"
 
 namespace ydscope::gui {
@@ -63,8 +64,12 @@ std::vector<SourceChoice> several_sims(const std::string& models) {
 AppOptions parse_app_options(std::span<const std::string> raw) {
   const Arguments args(raw,
                        {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed",
-                        "share-port", "record", "name", "pose"},
-                       {"fullscreen", "once", "share", "split"}, 0, source_repeatable_options());
+                        "share-port", "record", "name", "pose", "zone"},
+                       {"fullscreen", "once", "share", "split", "zone-beep"}, 0, [] {
+                         auto repeatable = source_repeatable_options();
+                         repeatable.insert("zone");
+                         return repeatable;
+                       }());
   AppOptions options;
   const bool port = args.has("port"), sim = args.has("sim"), replay = args.has("replay");
   if (int(port) + int(sim) + int(replay) > 1)
@@ -108,6 +113,12 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
     if (options.screenshot_path.empty()) throw UsageError("--frames goes with --screenshot PNG.");
     options.frames = static_cast<int>(*frames);
   }
+  for (const std::string& zone : args.values("zone")) {
+    std::string error;
+    if (!parse_zone(zone, error)) throw UsageError("--zone: " + error);
+    options.zones.push_back(zone);
+  }
+  options.zone_beep = args.has("zone-beep");
   if (const auto sector = args.value("sector")) {
     std::string error;
     if (!parse_sector_spec(*sector, error)) throw UsageError("--sector: " + error);

@@ -38,6 +38,8 @@ struct AppOptions {
   std::string screenshot_path;        // --screenshot PNG
   int frames = 120;                   // --frames N with --screenshot
   std::optional<std::string> sector;  // --sector "FROM:TO [MIN:MAX]": watch it from the start
+  std::vector<std::string> zones;     // --zone SPEC, repeatable (core/analysis/zone.h)
+  bool zone_beep = false;             // --zone-beep: ring the bell when a zone's rule is raised
   std::string record;                 // --record ydrec|mcap|both: record from the start (timestamped names)
   bool share = false;                 // --share: serve the source to Foxglove from the start
   std::uint16_t share_port = 8765;    // --share-port N: where Share listens (127.0.0.1; 0 a free port)

@@ -1,5 +1,6 @@
 // SourceSlot: starting a source, forgetting the last one, and taking its laps each frame.
 #include "app/gui/source_slot.h"
+#include "app/gui/zone_setup.h"
 
 #include <cstdio>
 
@@ -44,6 +45,8 @@ void SourceSlot::clear() {
   m.timeline.clear();
   m.plots.clear();
   for (ui::SectorWatch& sector : m.sectors) sector.clear();
+  m.dropouts.clear();
+  m.zones.clear();
   m.replay = {};
   m.paused_view = false;
   m.feedback->clear();
@@ -91,6 +94,9 @@ void SourceSlot::measure(const Lap& measured) {
     model.scan_rate.reset();
   model.plots.add_lap({model.scan_rate.hz(), model.snap.scan_hz, measured.points.size(), !measured.whole()});
   for (ui::SectorWatch& sector : model.sectors) sector.add_lap(measured);
+  model.dropouts.add_lap(measured);
+  model.zones.set_pose(look.pose);
+  if (raises_a_zone(model.zones, model.zones.add_lap(measured)) && zone_beep) ring_bell();
   if (measured.health_bits) {
     model.ct_health = measured.health_bits;
     model.ct_health_trusted = measured.ct_info_trusted();

@@ -77,13 +77,14 @@ struct SourceSlot {
   LidarSource source;  // after the session it drives, so it stops first
   ui::LapHistory history;
   ui::LapHistory recent_laps{10};  // every lap's points, the newest 10: what Align matches
-  ui::LapPhase lap_phase;       // how far between two laps, for fading persistence at display rate
-  ui::MotionBackground motion;  // the room, learned from the laps the view shows
-  Lap lap;                      // the newest drained
+  ui::LapPhase lap_phase;          // how far between two laps, for fading persistence at display rate
+  ui::MotionBackground motion;     // the room, learned from the laps the view shows
+  Lap lap;                         // the newest drained
   std::optional<double> last_set_scan_hz;
   std::optional<ReplayStatus> last_replay_status;                    // the replay link's, as follow_replay last saw it
   std::optional<std::chrono::steady_clock::time_point> last_lap_at;  // newest lap of this source
   bool has_source = false;
+  bool zone_beep = false;                  // ring the bell when one of this source's zones is raised
   std::int64_t pending_latency_rx_ns = 0;  // newest lap drawn this frame, measured after present
 
  private:

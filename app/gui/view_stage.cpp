@@ -58,6 +58,12 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
   const bool layered = several || settings.colours.mode == ui::ColourMode::Source;
   const auto layers = layered ? layers_of(sources) : std::span<const ui::SourceLayer>();
   view_->set_source_marks(marks_);
+  if (!model.zones.zones().empty())
+    view_->set_zones(ui::ZoneShapes{several ? selected.look.pose : Pose{}, model.zones.zones(), model.zones.states()});
+  else
+    view_->set_zones(std::nullopt);
+  view_->set_dropout_ring(ui::DropoutRingShape{several ? selected.look.pose : Pose{}, model.dropouts.no_return_share(),
+                                               model.dropouts.blocked()});
   if (layered)
     view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
   else

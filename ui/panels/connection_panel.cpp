@@ -106,6 +106,13 @@ void sim_section(UiModel& m, PanelEdits& e) {
     e.sim_faults.drop_byte_rate = drop * 1e-3;
     e.sim_faults.lost_packet_rate = lost * 1e-2;
     e.sim_faults.health_bits = static_cast<std::uint8_t>(bits & 0xFF);
+    // Something in front of the window: no returns from..to degrees (equal ends: off).
+    int blocked[2] = {static_cast<int>(e.sim_faults.blocked_from_deg),
+                      static_cast<int>(e.sim_faults.blocked_from_deg + e.sim_faults.blocked_width_deg) % 360};
+    changed |= ImGui::InputInt2("blocked from:to \xC2\xB0", blocked);
+    for (int& end : blocked) end = ((end % 360) + 360) % 360;
+    e.sim_faults.blocked_from_deg = blocked[0];
+    e.sim_faults.blocked_width_deg = (blocked[1] - blocked[0] + 360) % 360;
     if (changed && m.sim_active) m.requests.push_back(SetSimFaults{e.sim_faults});
     if (m.sim_active) {
       if (ImGui::SmallButton("unplug")) m.requests.push_back(UnplugSim{});

@@ -138,7 +138,7 @@ void draw_device_panel(UiModel& m, PanelEdits& e) {
 }
 
 void draw_health_panel(UiModel& m) {
-  if (!ImGui::CollapsingHeader("Health", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!draw_health_header(m)) return;
   const SessionSnapshot& s = m.snap;
   const Model model = s.device && s.device->profile ? s.device->profile->model : Model::G6;
   const StaleValues stale(m);

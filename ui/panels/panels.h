@@ -12,12 +12,15 @@ namespace ydscope::ui {
 void draw_connection_panel(UiModel& model, PanelEdits& edits);
 void draw_device_panel(UiModel& model, PanelEdits& edits);
 void draw_health_panel(UiModel& model);
+// The Health section's header, which also says a blocked sector (blockage_panel.cpp); true when open.
+bool draw_health_header(const UiModel& model);
 void draw_frequency_panels(UiModel& model, PanelEdits& edits);
 void draw_view_panel(UiModel& model, ViewSettings& settings);
 void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
 void draw_plots_panel(const UiModel& model);
 void draw_sectors_panel(UiModel& model, PanelEdits& edits);
+void draw_zones_panel(UiModel& model, ViewSettings& settings);
 // Several sources: the selector over the tabs (which source the panels show and command), and the
 // Sources tab (the list, hide/pause, pose, add and remove).
 void draw_source_selector(UiModel& model);

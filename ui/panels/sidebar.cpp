@@ -46,6 +46,7 @@ float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
         draw_view_panel(m, v);
         draw_filter_panel(m, v);
         draw_sectors_panel(m, e);
+        draw_zones_panel(m, v);
         ImGui::EndTabItem();
       }
       if (tab("Statistics", SidebarTab::Statistics)) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/dropout_ring.h"
+#include "core/analysis/zone_watch.h"
 #include "core/link/session_snapshot.h"
 #include "ui/panels/ui_request.h"
 #include "ui/view/scene/colour_legend.h"
@@ -101,6 +103,8 @@ struct UiModel {
   CounterRate bytes_rate, packets_rate, laps_rate;
   RunPlots plots;                    // the Plots panel's history
   std::vector<SectorWatch> sectors;  // the Sectors panel's, in settings order
+  ZoneWatch zones;                   // the zones, watched from this source (its pose)
+  DropoutRing dropouts;              // no returns per degree, blocked sectors: the ring and the Lidar tab
   ReplayControl replay;
   bool paused_view = false;         // the view holds the current laps
   ViewState view_state;             // live, or dimmed with the reason in words

@@ -101,6 +101,8 @@ void draw_polar_overlay(ImDrawList* draw, const OverlayInput& in) {
     sector_wedge(draw, view, sector, IM_COL32(249, 168, 37, 38), IM_COL32(249, 168, 37, 200));
   if (in.sweep) sector_wedge(draw, view, *in.sweep, IM_COL32(120, 200, 255, 45), IM_COL32(120, 200, 255, 230));
 
+  if (in.zones) draw_zones(draw, view, *in.zones);
+  if (in.dropouts) draw_dropout_ring(draw, view, *in.dropouts);
   if (in.marks.empty()) {
     lidar_mark(draw, view, {}, IM_COL32(255, 255, 255, 230), false);
   } else {

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "core/frame/pose.h"
+#include "ui/render/dropout_ring_overlay.h"
+#include "ui/render/zone_overlay.h"
 #include "ui/view/geometry/geometry.h"
 #include "ui/view/geometry/grid_layout.h"
 #include "ui/view/geometry/hit_test.h"
@@ -37,8 +39,10 @@ struct OverlayInput {
   const Ruler* ruler = nullptr;
   std::optional<Vec2> ruler_cursor_world;  // rubber band from the first end to the cursor
   std::vector<SectorShape> sectors;
-  std::optional<SectorShape> sweep;  // the sector a Shift+drag is sweeping out
-  std::vector<SourceMark> marks;     // several sources; empty: the lone lidar at the origin
+  std::optional<SectorShape> sweep;          // the sector a Shift+drag is sweeping out
+  std::vector<SourceMark> marks;             // several sources; empty: the lone lidar at the origin
+  std::optional<ZoneShapes> zones;           // the selected source's zones and their states
+  std::optional<DropoutRingShape> dropouts;  // the selected lidar's no-return ring and blocked sectors
 };
 
 void draw_polar_overlay(ImDrawList* draw, const OverlayInput& input);

@@ -183,6 +183,8 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
   overlay.sectors = sectors_;
   overlay.sweep = sweep_shape();
   overlay.marks = marks_;
+  overlay.dropouts = dropouts_;
+  overlay.zones = zones_;
   if (hover_cursor_ && !history.empty())
     overlay.hover = nearest_point(history.newest().points, view_, *hover_cursor_, 12.0f);
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);

@@ -60,6 +60,10 @@ class PolarView {
   const PointCloudStats& update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings, float phase);
   // Each source's position and heading, drawn in place of the lone lidar's mark (none: that mark).
   void set_source_marks(std::vector<SourceMark> marks) { marks_ = std::move(marks); }
+  // The selected lidar's dropout ring (dropout_ring_overlay.h); empty: none drawn.
+  void set_dropout_ring(std::optional<DropoutRingShape> ring) { dropouts_ = std::move(ring); }
+  // The zones to colour by their states (zone_overlay.h); empty: none drawn.
+  void set_zones(std::optional<ZoneShapes> zones) { zones_ = std::move(zones); }
   // The grid for the current view, and the labels, ruler, sectors and hover box into ImGui's
   // background draw list (under the panels). Before ImGui::Render.
   void lay_out(const LapHistory& history, const ViewSettings& settings);
@@ -102,6 +106,8 @@ class PolarView {
 
   std::vector<PointVertex> scratch_;  // one source's cloud before it is posed
   std::vector<SourceMark> marks_;
+  std::optional<DropoutRingShape> dropouts_;
+  std::optional<ZoneShapes> zones_;
   bool pose_drag_enabled_ = false;
   std::optional<PoseDrag> pose_drag_;
   bool forward_click_armed_ = false;

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "core/frame/pose_convention.h"
+#include "core/analysis/zone.h"
 #include "ui/view/history/sector_watch.h"
 
 namespace ydscope::ui {
@@ -117,6 +118,14 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       s.smooth = *b;
     } else if (key == "split_view" && b) {
       s.split_view = *b;
+    } else if (key == "zone_beep" && b) {
+      s.zone_beep = *b;
+    } else if (key == "zone") {
+      std::string error;
+      if (parse_zone(value, error))
+        s.zones.push_back(value);
+      else if (notes)
+        notes->push_back("zone = " + value + " is left out: " + error);
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
     } else if (key == "last_sources") {
@@ -181,9 +190,11 @@ std::string format_settings(const ViewSettings& s) {
       << "show_grid = " << yes(s.show_grid) << "\n"
       << "smooth = " << yes(s.smooth) << "\n"
       << "split_view = " << yes(s.split_view) << "\n"
+      << "zone_beep = " << yes(s.zone_beep) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n"
       << kPoseConventionKey << " = " << kPoseConvention << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
+  for (const std::string& zone : s.zones) out << "zone = " << zone << "\n";
   for (const SourceLook& source : s.sources) out << "source = " << format_source_line(source) << "\n";
   if (!s.last_sources.empty()) {
     out << "last_sources = ";

@@ -33,6 +33,8 @@ struct ViewSettings {
   bool split_view = false;
   std::string last_replay_file;
   std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
+  std::vector<std::string> zones;    // zone_spec() of each zone (core/analysis/zone.h)
+  bool zone_beep = false;            // ring the bell when a zone's rule is raised
   // Sources by name: a source of a remembered name gets its pose and colour back.
   std::vector<SourceLook> sources;
   // The last run's lidars, by name, when it had several: a run with no source named starts them
