@@ -37,5 +37,19 @@ TEST(BoothCalm, TheBoothKeepsThirtyToSixtyLaps) {
   EXPECT_EQ(booth_persistence(200), kBoothMaxPersistence);
 }
 
+TEST(BoothCalm, VisitorsAreNotToldWhichCommandListsThePorts) {
+  ViewState state;
+  state.dim = true;
+  state.headline = "No data";
+  state.subtitle = "the lidar stopped sending, last lap 12 s ago";
+  state.detail = "no such device; is the lidar plugged in? 'ydscope-cli ports' lists serial ports";
+  const ViewState booth = for_audience(state, true);
+  EXPECT_TRUE(booth.detail.empty()) << booth.detail;
+  EXPECT_EQ(booth.headline, state.headline);
+  EXPECT_EQ(booth.subtitle, state.subtitle);
+  EXPECT_TRUE(booth.dim);
+  EXPECT_EQ(for_audience(state, false).detail, state.detail) << "the window keeps the operator's sentence";
+}
+
 }  // namespace
 }  // namespace ydscope::ui

@@ -5,12 +5,13 @@
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
+#include "ui/view/status/booth_calm.h"
 #include "ui/render/theme.h"
 
 namespace ydscope::ui {
 
 void draw_view_overlay(const UiModel& m, float view_left, float view_width, float view_height, float view_top) {
-  const ViewState& v = m.view_state;
+  const ViewState v = for_audience(m.view_state, m.booth);
   if (!v.dim) return;
   // Under the panels, over the cloud: the old picture stays visible but plainly not live.
   ImDrawList* draw = ImGui::GetBackgroundDrawList();

@@ -20,4 +20,9 @@ int booth_persistence(int windowed_laps) {
   return std::clamp(windowed_laps, kBoothMinPersistence, kBoothMaxPersistence);
 }
 
+ViewState for_audience(ViewState state, bool booth) {
+  if (booth) state.detail.clear();
+  return state;
+}
+
 }  // namespace ydscope::ui

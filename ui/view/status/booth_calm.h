@@ -3,6 +3,8 @@
 // visitors' way: a banner ("No lidar found, showing the virtual G6") says its piece and fades, the
 // pointer hides once nobody moves it, and persistence is long enough for trails to read as motion.
 // The windowed view keeps all of them as they are.
+#include "ui/view/status/view_state.h"
+
 namespace ydscope::ui {
 
 // A banner is shown whole this long, then fades out over kBannerFadeSeconds.
@@ -23,5 +25,9 @@ bool banner_fading(double age_s, bool booth);
 bool cursor_hidden(double rested_s, bool booth);
 // The persistence the booth view uses, given the windowed view's.
 int booth_persistence(int windowed_laps);
+// What the dimmed view says, for who is looking: the session's own sentence (advice such as which
+// command lists the serial ports) is for an operator, so the booth view keeps the headline and the
+// subtitle and leaves it out.
+ViewState for_audience(ViewState state, bool booth);
 
 }  // namespace ydscope::ui
