@@ -9,6 +9,9 @@ void CommandWatch::host_bytes(std::span<const std::uint8_t> bytes, std::int64_t 
     if (start_byte_pending_) {
       start_byte_pending_ = false;
       if (const auto command = command_from_code(byte)) {
+        const bool keep_alive =
+            *command == Command::Scan && !last_ && last_lap_t_ns_ && t_ns - *last_lap_t_ns_ <= kKeepAliveLapNs;
+        if (keep_alive) continue;
         last_ = command;
         last_t_ns_ = t_ns;
         continue;

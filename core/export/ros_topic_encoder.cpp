@@ -158,7 +158,7 @@ void RosTopicEncoder::on_lap(const Lap& decoded, MessageFn emit) {
   if (!window_first_close_ns_) window_first_close_ns_ = decoded.last_rx_ns;
   window_last_close_ns_ = decoded.last_rx_ns;
   ++window_laps_;
-  commands_.lap_closed();
+  commands_.lap_closed(decoded.last_rx_ns);
   dropouts_.add_lap(decoded);
   zones_.set_pose(metadata_.pose.value_or(Pose{}));
   const bool zone_news = !zones_.add_lap(decoded).empty();

@@ -25,8 +25,13 @@ TEST(CommandWatch, ACommandIsInFlightUntilALapClosesEvenSplitAcrossRecords) {
   EXPECT_EQ(watch.settling(300), "command in progress: device info (A5 90)");
   watch.host_bytes(Bytes{0xA5, 0x60}, 400);
   EXPECT_EQ(watch.settling(500), "spinning up (scan command sent, no lap yet)");
-  watch.lap_closed();
+  watch.lap_closed(550);
   EXPECT_FALSE(watch.settling(600));
+  // A5 60 while laps still come is the session's keep-alive, not a spin-up; later it is one.
+  watch.host_bytes(Bytes{0xA5, 0x60}, 700);
+  EXPECT_FALSE(watch.settling(800));
+  watch.host_bytes(Bytes{0xA5, 0x60}, 550 + kKeepAliveLapNs + 1);
+  EXPECT_TRUE(watch.settling(550 + kKeepAliveLapNs + 2));
 }
 
 TEST(CommandWatch, StrayBytesAreNoCommandAndAStuckOneStopsBeingRoutine) {
