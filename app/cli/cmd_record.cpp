@@ -59,9 +59,9 @@ options:
   --port PATH      serial port (see `ydscope-cli ports`) or tcp://host:port; repeat for several lidars
   --name NAME      several lidars: each one's name (letters, digits, _), once per --port in the
                    same order (default lidar0, lidar1, ...)
-  --pose X,Y,YAW[,flip]  several lidars: where each sits in the common frame, once per --port:
-                   metres, metres, degrees counter-clockwise, flip when mounted upside down
-                   (default 0,0,0)
+  --pose X,Y,YAW[,flip]  several lidars: where each sits on the robot, once per --port, as
+                   ROS says it (REP-103): metres forward, metres left, degrees counter-clockwise;
+                   flip when mounted upside down (default 0,0,0)
   --out FILE       the recording to write (.ydrec by convention): a regular file in a folder
                    that exists (not a device such as /dev/null: a recording is read back); an
                    existing file is refused unless --force is given

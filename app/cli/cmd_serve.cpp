@@ -57,8 +57,9 @@ so on; --mcap records the same topics. One lidar's fault is a status message nam
 options:
   --port PATH        serial port (see `ydscope-cli ports`) or tcp://host:port; repeat for several
   --name NAME        several lidars: each one's name, once per --port in order (default lidar0, ...)
-  --pose X,Y,YAW[,flip]  several lidars: each one's place, once per --port (metres, metres,
-                     degrees counter-clockwise; flip when mounted upside down; default 0,0,0)
+  --pose X,Y,YAW[,flip]  several lidars: each one's place, once per --port (REP-103: metres
+                     forward, metres left, degrees counter-clockwise; flip when mounted upside
+                     down; default 0,0,0)
   --listen HOST:PORT where to accept WebSocket clients (default 127.0.0.1:8765, this machine
                      only). Any other address serves the lidar to the network, without any
                      authentication: a warning says so. Port 0 picks a free port.
