@@ -65,7 +65,7 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   const Arguments args(raw,
                        {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed",
                         "share-port", "record", "name", "pose", "zone"},
-                       {"fullscreen", "once", "share", "split", "zone-beep"}, 0, [] {
+                       {"fullscreen", "once", "share", "split", "zone-beep", "check"}, 0, [] {
                          auto repeatable = source_repeatable_options();
                          repeatable.insert("zone");
                          return repeatable;
@@ -128,6 +128,7 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if (!options.record.empty() && options.record != "ydrec" && options.record != "mcap" && options.record != "both")
     throw UsageError("--record takes ydrec, mcap or both, not '" + options.record + "'.");
   options.share = args.has("share");
+  options.check = args.has("check");
   if (const auto share_port = args.integer("share-port", 0, 65535))
     options.share_port = static_cast<std::uint16_t>(*share_port);
   if (options.model && !find_profile(*options.model) &&

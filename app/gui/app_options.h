@@ -44,6 +44,7 @@ struct AppOptions {
   bool share = false;                 // --share: serve the source to Foxglove from the start
   std::uint16_t share_port = 8765;    // --share-port N: where Share listens (127.0.0.1; 0 a free port)
   bool split = false;                 // --split: several sources side by side (View > split)
+  bool check = false;                 // --check: Run check on the lidar at the start (Lidar > Check)
   std::vector<SourceChoice> sources;  // several at once (then they, not the fields above, are the source)
 };
 

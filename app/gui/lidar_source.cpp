@@ -102,6 +102,7 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       break;
     }
   }
+  config_ = config;
   session_.connect(config);
   return {};
 }

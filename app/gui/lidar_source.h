@@ -31,6 +31,9 @@ class LidarSource {
   void stop();
 
   std::string description() const { return description_; }
+  // How the session was last connected (its port or the virtual lidar's, model, baud): what
+  // Run check opens while the session lets the port go.
+  const SessionConfig& config() const { return config_; }
   // What is wrong with the current source but does not stop it (a recording cut off at its end,
   // damaged record times or fields), one sentence each, in ydscope-cli's words.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -42,6 +45,7 @@ class LidarSource {
  private:
   Session& session_;
   std::unique_ptr<SimServer> sim_;
+  SessionConfig config_;
   std::string description_;
   std::vector<std::string> warnings_;
   bool replay_ = false;

@@ -29,6 +29,8 @@ std::string SourceSlot::start(const ui::ConnectRequest& request) {
 }
 
 void SourceSlot::clear() {
+  unit_check.abandon();  // a check of the old source must not take the port back from the new one
+  check_when_scanning = false;
   ui::UiModel& m = model;
   m.snap = {};
   m.scan_rate.reset();

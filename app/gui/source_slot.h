@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "app/gui/lidar_source.h"
+#include "app/gui/unit_check.h"
 #include "core/link/session.h"
 #include "ui/panels/panel_edits.h"
 #include "ui/panels/ui_model.h"
@@ -65,6 +66,7 @@ struct SourceSlot {
   void carry_out(const ui::SetScanHz& request);
   void carry_out(const ui::SetRangingKhz& request);
   void carry_out(const ui::RefreshHealth& request);
+  void carry_out(const ui::RunCheck& request);
   void carry_out(const ui::SetDistanceScale& request);
   void carry_out(const ui::SetReading& request);
 
@@ -74,7 +76,9 @@ struct SourceSlot {
   Session session;
   std::unique_ptr<LapSubscription> measured_laps;  // every lap, for rates, plots, sectors, health
   Lap measured_lap;
-  LidarSource source;  // after the session it drives, so it stops first
+  LidarSource source;                // after the session it drives, so it stops first
+  UnitCheck unit_check;              // after the session it borrows, so a run is cut short first
+  bool check_when_scanning = false;  // Run check asked for, to start once the session scans
   ui::LapHistory history;
   ui::LapHistory recent_laps{10};  // every lap's points, the newest 10: what Align matches
   ui::LapPhase lap_phase;          // how far between two laps, for fading persistence at display rate

@@ -12,6 +12,17 @@ namespace ydscope::gui {
 
 void SourceSlot::refresh_model() {
   model.sim_active = source.sim_active();
+  // A session that failed lets the check try and say why it could not.
+  if (check_when_scanning && (model.snap.state == LinkState::Scanning || model.snap.state == LinkState::Failed)) {
+    check_when_scanning = false;
+    unit_check.start(session, source.config(), report_folder());
+  }
+  model.unit_check = unit_check.view();
+  if (check_when_scanning) {
+    model.unit_check.state = ui::UnitCheckView::State::Running;
+    model.unit_check.progress = "waiting for the lidar to scan ...";
+  }
+  model.unit_check.available = has_source && !source.replay_active();
   const SessionSnapshot& s = model.snap;
   // The target field starts from the device's set value whenever that changes.
   if (s.scan_hz && s.scan_hz != last_set_scan_hz) edits.scan_target_hz = static_cast<float>(*s.scan_hz);

@@ -37,6 +37,13 @@ void SourceSlot::carry_out(const ui::RefreshHealth&) {
   session.refresh_health(ui::track_command(model, ui::CommandControl::Health));
 }
 
+void SourceSlot::carry_out(const ui::RunCheck&) {
+  if (!has_source || source.replay_active()) return;  // the panel offers it only for a lidar
+  // Once the session is scanning (refresh_model starts it): a session still opening the port
+  // would hold it beside the check's, and each would read half the bytes.
+  check_when_scanning = true;
+}
+
 void SourceSlot::carry_out(const ui::SetDistanceScale& request) { session.set_distance_scale(request.mm_per_count); }
 void SourceSlot::carry_out(const ui::SetReading& request) { session.set_reading(request.reading); }
 

@@ -135,6 +135,9 @@ void draw_device_panel(UiModel& m, PanelEdits& e) {
       m.requests.push_back(SetDistanceScale{static_cast<double>(e.distance_scale_value)});
     }
   }
+  // Run check ends the panel's last line: the check judges the unit described above.
+  ImGui::SameLine();
+  draw_run_check_button(m);
 }
 
 void draw_health_panel(UiModel& m) {

@@ -15,6 +15,10 @@ void draw_health_panel(UiModel& model);
 // The Health section's header, which also says a blocked sector (blockage_panel.cpp); true when open.
 bool draw_health_header(const UiModel& model);
 void draw_frequency_panels(UiModel& model, PanelEdits& edits);
+// Run check (check_panel.cpp): the button, on the Device panel's last line, and below the Device
+// panel its progress, then its verdict.
+void draw_run_check_button(UiModel& model);
+void draw_check_panel(const UiModel& model);
 void draw_view_panel(UiModel& model, ViewSettings& settings);
 void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);

@@ -38,6 +38,7 @@ float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
       if (tab("Lidar", SidebarTab::Lidar)) {
         draw_connection_panel(m, e);
         draw_device_panel(m, e);
+        draw_check_panel(m);  // under what the unit says it is: the check judges that unit
         draw_health_panel(m);
         draw_frequency_panels(m, e);
         ImGui::EndTabItem();

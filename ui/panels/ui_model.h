@@ -15,6 +15,7 @@
 #include "ui/view/scene/colour_legend.h"
 #include "ui/view/status/command_feedback.h"
 #include "ui/view/status/health_alerts.h"
+#include "ui/view/status/unit_check_view.h"
 #include "ui/view/history/health_timeline.h"
 #include "ui/view/scene/point_cloud.h"
 #include "ui/view/scene/source_alignment.h"
@@ -103,6 +104,7 @@ struct UiModel {
   CounterRate bytes_rate, packets_rate, laps_rate;
   RunPlots plots;                    // the Plots panel's history
   std::vector<SectorWatch> sectors;  // the Sectors panel's, in settings order
+  UnitCheckView unit_check;          // the Check panel's: Run check's progress, then its verdict
   ZoneWatch zones;                   // the zones, watched from this source (its pose)
   DropoutRing dropouts;              // no returns per degree, blocked sectors: the ring and the Lidar tab
   ReplayControl replay;

@@ -57,6 +57,8 @@ struct SetRangingKhz {
   std::uint16_t khz = 0;
 };
 struct RefreshHealth {};
+// The acceptance check of `ydscope-cli check` on this lidar (docs/check.md), its report opened.
+struct RunCheck {};
 // Either file, or both at once: every byte as .ydrec (the session writes it), and the live topics
 // as MCAP (written beside the I/O thread).
 struct StartRecording {
@@ -118,9 +120,9 @@ struct UnwatchSector {
 
 using UiRequest =
     std::variant<ConnectRequest, Disconnect, RefreshPorts, ControlReplay, SetSimFaults, UnplugSim, ReplugSim, SetScanHz,
-                 SetRangingKhz, RefreshHealth, StartRecording, StopRecording, SetDistanceScale, SetReading, SetShare,
-                 ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap, WatchSector, UnwatchSector, SelectSource,
-                 SetSourceLook, AddSource, RemoveSource, AlignSources, AnswerAlignment>;
+                 SetRangingKhz, RefreshHealth, RunCheck, StartRecording, StopRecording, SetDistanceScale, SetReading,
+                 SetShare, ResetView, SaveScreenshot, ExportLapCsv, ExportLapMcap, WatchSector, UnwatchSector,
+                 SelectSource, SetSourceLook, AddSource, RemoveSource, AlignSources, AnswerAlignment>;
 
 // The requests that change the source list rather than one source.
 template <class R>
@@ -132,6 +134,7 @@ template <class R>
 inline constexpr bool is_device_request =
     std::is_same_v<R, ControlReplay> || std::is_same_v<R, SetSimFaults> || std::is_same_v<R, UnplugSim> ||
     std::is_same_v<R, ReplugSim> || std::is_same_v<R, SetScanHz> || std::is_same_v<R, SetRangingKhz> ||
-    std::is_same_v<R, RefreshHealth> || std::is_same_v<R, SetDistanceScale> || std::is_same_v<R, SetReading>;
+    std::is_same_v<R, RefreshHealth> || std::is_same_v<R, RunCheck> || std::is_same_v<R, SetDistanceScale> ||
+    std::is_same_v<R, SetReading>;
 
 }  // namespace ydscope::ui
