@@ -11,6 +11,7 @@
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "core/analysis/sector.h"
+#include "core/frame/pose.h"
 #include "core/protocol/model_profile.h"
 #include "core/sim/delivery.h"
 #include "core/sim/host_compat.h"
@@ -21,7 +22,7 @@ namespace ydscope::cli {
 namespace {
 
 constexpr std::string_view kHelpText =
-    R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth]
+    R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth] [--pose X,Y,YAW]
                        [--seed N] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
                        [--delivery whole|burst:BYTES:US|random:MAX] [fault options] [--verbose]
 
@@ -41,6 +42,10 @@ G6/TG 512000), and can inject faults. It serves until SIGINT or SIGTERM, then ex
                          moons and a star-shaped wall, made to look good on a trade-show screen.
                          booth: a stand facing an aisle where visitors walk past (the app's
                          motion highlighting paints them hot).
+  --pose X,Y,YAW[,flip]  stand somewhere else in the scene (room and booth): where a lidar at the
+                         scene's origin would see it, as --pose of record and align spells it
+                         (metres, degrees). Two virtual lidars, one posed, see the same walls from
+                         two places; `ydscope-cli align` should find this pose.
   --seed N               seed of the scene's noise and motion, the serial number and every fault
                          decision (default 1). The same seed gives the same bytes.
   --distance-scale X     encode ranges with X mm per raw unit instead of the manual's (G1 1,
@@ -134,6 +139,7 @@ int run_sim(std::span<const std::string> raw) {
                         "pty",
                         "tcp",
                         "scene",
+                        "pose",
                         "seed",
                         "distance-scale",
                         "conventions",
@@ -165,6 +171,13 @@ int run_sim(std::span<const std::string> raw) {
   options.device.scene = args.value("scene").value_or("demo");
   if (!make_scene(options.device.scene, 0))
     throw UsageError("unknown scene '" + options.device.scene + "'; the scenes are " + std::string(scene_names()));
+  if (const auto pose = args.value("pose")) {
+    std::string error;
+    options.device.pose = parse_pose(*pose, error);
+    if (!options.device.pose) throw UsageError("--pose: " + error);
+    if (!make_scene(options.device.scene, 0)->sample_from(0, 0, 0, 0))
+      throw UsageError("--pose needs a scene of walls to stand in: room or booth, not " + options.device.scene);
+  }
   options.device.seed = static_cast<std::uint64_t>(args.integer("seed", 0, INT64_MAX).value_or(1));
   options.device.distance_scale = args.number("distance-scale", 0.001, 1000.0);
   options.device.reading = reading_option(args).value_or(Reading::Field);
