@@ -1,22 +1,26 @@
 // ydscope-cli serve: the headless robot-side server. Scans a lidar (reconnecting by itself),
-// serves it live over the Foxglove WebSocket protocol and optionally records it to MCAP.
+// serves it live over the Foxglove WebSocket protocol and optionally records it to MCAP. One lidar
+// or several alike: a SourceSet shared by one SessionShare (a set of one keeps the plain names).
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "app/common/arguments.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/mcap_output.h"
-#include "app/cli/serve_sources.h"
+#include "app/cli/link_loss_notes.h"
 #include "app/cli/session_cli.h"
 #include "app/cli/source_options.h"
 #include "core/analysis/zone.h"
 #include "core/bridge/session_share.h"
+#include "core/link/source_set.h"
 
 namespace ydscope::cli {
 namespace {
@@ -119,6 +123,52 @@ foxglove::ServerOptions listen_options(const Arguments& args) {
   return options;
 }
 
+// The warning for a share reachable from other machines: there is no authentication.
+void warn_if_not_loopback(const SessionShare& share) {
+  if (is_loopback_host(share.host())) return;
+  std::fprintf(stderr,
+               "ydscope-cli serve: warning: serving on %s: anyone who can reach this address can watch the "
+               "lidar and change its settings (there is no authentication)\n",
+               share.host().c_str());
+}
+
+// Until `stop` or `seconds`: then the clients' counters, the share stopped (the MCAP file gets
+// its summary), the sessions disconnected and what was written said. Throws with one sentence
+// when writing the file failed.
+void serve_until_stopped(SessionShare& share, SourceSet& set, std::optional<double> seconds) {
+  const auto start = Clock::now();
+  // A lidar's loss and its return ("scanning again after 1.6 s; reconnected; re-applied ..."),
+  // as record and scan say them.
+  std::vector<LinkLossNotes> notes;
+  for (std::size_t id = 0; id < set.size(); ++id)
+    notes.emplace_back("ydscope-cli serve", named_apart(set.infos()) ? set.info(id).name : "the lidar",
+                       "serving on; the clients see the outage on /diagnostics");
+  Lap lap;
+  while (!stop_requested.load() &&
+         (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (const std::string failed = share.topics().error(); !failed.empty()) throw std::runtime_error(failed);
+    for (std::size_t id = 0; id < set.size(); ++id) {
+      set.session(id).laps().drain_newest(lap);  // the served laps come from the tap; keep the queue empty
+      notes[id].follow(set.session(id).snapshot(), /*tty=*/false);
+    }
+  }
+
+  for (const auto& c : share.clients())
+    std::fprintf(stderr, "ydscope-cli serve: client %s: %llu messages sent, %llu dropped\n", c.peer.c_str(),
+                 static_cast<unsigned long long>(c.sent), static_cast<unsigned long long>(c.dropped));
+  const bool written = share.stop();
+  for (std::size_t id = 0; id < set.size(); ++id) set.session(id).disconnect();
+  if (!written) throw std::runtime_error(share.topics().error());
+  if (const auto dropped = share.topics().dropped())
+    std::fprintf(stderr, "ydscope-cli serve: warning: %llu records were dropped: serving fell behind the lidars\n",
+                 static_cast<unsigned long long>(dropped));
+  if (!share.topics().mcap_path().empty())
+    std::fprintf(stderr, "ydscope-cli serve: wrote %s: %llu laps, %llu messages\n", share.topics().mcap_path().c_str(),
+                 static_cast<unsigned long long>(share.topics().laps()),
+                 static_cast<unsigned long long>(share.topics().messages()));
+}
+
 int run_serve(std::span<const std::string> raw) {
   const Arguments args(
       raw,
@@ -128,6 +178,11 @@ int run_serve(std::span<const std::string> raw) {
         repeatable.insert("zone");
         return repeatable;
       }());
+  ShareOptions options;
+  options.server = listen_options(args);
+  const auto seconds = args.number("seconds", 0.001, 1e9);
+  const auto mcap_path = args.value("mcap");
+  if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
   // Zones first: a mistaken one is a usage error before any port is looked for.
   std::vector<Zone> zones;
   for (const std::string& spec : args.values("zone")) {
@@ -136,39 +191,34 @@ int run_serve(std::span<const std::string> raw) {
     if (!zone) throw UsageError("--zone: " + error);
     zones.push_back(std::move(*zone));
   }
-  if (args.values("port").size() > 1) {
-    const foxglove::ServerOptions options = listen_options(args);
-    end_on_signals(serve_on_signal);
-    return serve_sources(args, options, stop_requested);
-  }
-  for (const std::string& option : source_repeatable_options())
-    if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
-  if (args.value("name") || args.value("pose"))
-    throw UsageError("--name and --pose place one of several lidars; give them with two or more --port");
-  SessionConfig config = session_config_from(args, /*scan=*/true);
-  config.reconnect = true;
-  ShareOptions options;
-  options.server = listen_options(args);
-  const auto seconds = args.number("seconds", 0.001, 1e9);
-  const auto mcap_path = args.value("mcap");
-  if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
+  std::vector<SourceSpec> specs = source_specs_from(args, /*scan=*/true);
+  for (SourceSpec& spec : specs) spec.config.reconnect = true;  // a robot's server rides out faults
+  SourceSet set(std::move(specs));
+  const bool several = named_apart(set.infos());
   options.topics = mcap_options_from(args);
-  options.topics.ros.model = config.model;
   options.topics.ros.zones = std::move(zones);
   options.mcap_path = mcap_path.value_or("");
-  options.server.name = "ydscope on " + config.address;
+  options.server.name = "ydscope on " + (several ? std::to_string(set.size()) + " lidars" : set.config(0).address);
 
-  Session session(4);
   end_on_signals(serve_on_signal);
-  // Clients and the MCAP file get the session's records from its tap, on a thread of their own.
+  // Clients and the MCAP file get the sessions' records from their taps, on a thread of their own.
+  std::vector<SessionShare::Source> shared;
+  for (std::size_t id = 0; id < set.size(); ++id) shared.push_back({&set.session(id), set.info(id)});
   std::string error;
-  auto share = SessionShare::start(session, options, error);
+  auto share = SessionShare::start(shared, std::move(options), error);
   if (!share) throw std::runtime_error(error);
   warn_if_not_loopback(*share);
-  session.connect(config);
-  std::printf("serving %s for %s\n", share->address().c_str(), config.address.c_str());
+  set.connect_all();
+  if (several) {
+    std::printf("serving %s for %zu lidars:", share->address().c_str(), set.size());
+    for (std::size_t id = 0; id < set.size(); ++id)
+      std::printf(" %s on %s", set.info(id).name.c_str(), set.config(id).address.c_str());
+    std::printf("\n");
+  } else {
+    std::printf("serving %s for %s\n", share->address().c_str(), set.config(0).address.c_str());
+  }
   std::fflush(stdout);
-  serve_until_stopped(*share, {{"", &session}}, seconds, stop_requested);
+  serve_until_stopped(*share, set, seconds);
   return kExitOk;
 }
 

@@ -5,8 +5,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
-#include <future>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -15,13 +13,14 @@
 
 #include "app/cli/cli_command.h"
 #include "app/cli/health_watch.h"
+#include "app/cli/line_quality.h"
+#include "app/cli/link_loss_notes.h"
 #include "app/cli/mcap_output.h"
 #include "app/cli/recording_input.h"
-#include "app/cli/link_loss_notes.h"
 #include "app/cli/source_options.h"
-#include "core/record/recorded_conventions.h"
 #include "core/bridge/live_topics.h"
-#include "core/link/sources_recording.h"
+#include "core/link/source_set.h"
+#include "core/record/recorded_conventions.h"
 #include "core/record/recording_reader.h"
 #include "core/record/source_decoders.h"
 
@@ -30,40 +29,30 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A lidar that stalls or drops gets this long to come back (the session reconnects by itself)
-// before the recording waits on without it; it keeps trying all along.
+// A lidar gets this long to start scanning (the session reconnects by itself) before the recording
+// goes on without it (it keeps trying all along), or gives up when none scans.
 constexpr std::chrono::seconds kSettlePatience{60};
 
-// One lidar of the recording, as the CLI watches it.
-struct Source {
-  SourceSpec spec;
-  std::unique_ptr<Session> session;
+// What the command line says of each lidar as it records: its health and its losses.
+struct Watch {
+  std::string program;  // "ydscope-cli record", or with the lidar's name for one of several
   std::unique_ptr<HealthWatch> health;
-  LinkLossNotes notes;
+  std::unique_ptr<LinkLossNotes> notes;
 };
 
-CommandResult wait_for(const std::function<void(CommandCallback)>& post) {
-  std::promise<CommandResult> promise;
-  auto result = promise.get_future();
-  post([&promise](const CommandResult& r) { promise.set_value(r); });
-  return result.get();
-}
-
-// "NAME (PORT)": how every line names a lidar.
-std::string who(const SourceSpec& spec) { return spec.name + " (" + spec.config.address + ")"; }
-
-void show_progress(const std::string& out, double seconds, const std::vector<Source>& sources) {
+void show_progress(const std::string& out, double seconds, const SourceSet& set) {
   std::string line;
-  for (const Source& source : sources) {
-    const SessionSnapshot s = source.session->snapshot();
-    line += ", " + source.spec.name + " " + std::to_string(s.counters.laps) + " laps" +
+  for (std::size_t id = 0; id < set.size(); ++id) {
+    const SessionSnapshot s = set.session(id).snapshot();
+    line += ", " + (named_apart(set.infos()) ? set.info(id).name + " " : std::string()) +
+            std::to_string(s.counters.laps) + " laps" +
             (scanning(s.state) ? "" : " (" + std::string(link_state_name(s.state)) + ")");
   }
   std::fprintf(stderr, "\r\033[Krecording %s: %.1f s%s", out.c_str(), seconds, line.c_str());
   std::fflush(stderr);
 }
 
-// Per source: ", L laps" decoded from the finished file, as a replay will give them.
+// Per source: the laps decoded from the finished file, as a replay will give them.
 std::vector<std::uint64_t> laps_per_source(const std::string& path, const RecordingSummary& summary) {
   std::vector<SourcePlan> plans;
   for (std::size_t id = 0; id < summary.sources.size(); ++id) {
@@ -85,19 +74,28 @@ std::vector<std::uint64_t> laps_per_source(const std::string& path, const Record
   return laps;
 }
 
-// What the .ydrec holds, per lidar, as replay will decode it.
-void print_recording_summary(const std::string& out, const std::vector<Source>& sources,
+// What the .ydrec holds, as replay will decode it: one line for a lone lidar, else a line for the
+// file and one per lidar.
+void print_recording_summary(const std::string& out, const SourceSet& set, const std::vector<Watch>& watches,
                              const RecordingSummary& summary) {
   const auto laps = laps_per_source(out, summary);
-  std::printf("recorded %s: %.1f s, %zu lidars\n", out.c_str(), static_cast<double>(summary.duration_ns) / 1e9,
-              sources.size());
-  for (std::size_t id = 0; id < sources.size(); ++id) {
-    const SourceSummary& s = summary.sources.at(id);
-    std::printf("  %s: %s on %s, %llu bytes from the device, %llu bytes to it, %llu laps%s\n",
-                sources[id].spec.name.c_str(), s.metadata.model.value_or("unknown model").c_str(),
-                sources[id].spec.config.address.c_str(), static_cast<unsigned long long>(s.device_bytes),
-                static_cast<unsigned long long>(s.host_bytes), static_cast<unsigned long long>(laps[id]),
-                sources[id].health->summary_note().c_str());
+  const double seconds = static_cast<double>(summary.duration_ns) / 1e9;
+  if (!named_apart(set.infos())) {
+    std::printf("recorded %s: %.1f s, %llu bytes from the device, %llu bytes to it%s%s\n", out.c_str(), seconds,
+                static_cast<unsigned long long>(summary.device_bytes),
+                static_cast<unsigned long long>(summary.host_bytes),
+                summary.metadata.model ? (", " + std::to_string(laps.at(0)) + " laps").c_str() : "",
+                watches[0].health->summary_note().c_str());
+  } else {
+    std::printf("recorded %s: %.1f s, %zu lidars\n", out.c_str(), seconds, set.size());
+    for (std::size_t id = 0; id < set.size(); ++id) {
+      const SourceSummary& s = summary.sources.at(id);
+      std::printf("  %s: %s on %s, %llu bytes from the device, %llu bytes to it, %llu laps%s\n",
+                  set.info(id).name.c_str(), s.metadata.model.value_or("unknown model").c_str(),
+                  set.config(id).address.c_str(), static_cast<unsigned long long>(s.device_bytes),
+                  static_cast<unsigned long long>(s.host_bytes), static_cast<unsigned long long>(laps[id]),
+                  watches[id].health->summary_note().c_str());
+    }
   }
   print_recording_warnings("ydscope-cli record", summary.damage);
 }
@@ -109,55 +107,55 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   const auto mcap_path = args.value("mcap");
   if (!out && !mcap_path) throw UsageError("say where to record: --out FILE.ydrec, --mcap FILE.mcap, or both");
   if (out && mcap_path && *out == *mcap_path) throw UsageError("--out and --mcap must be different files");
-  if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
   const auto seconds = args.number("seconds", 0.001, 1e7);
-  std::vector<Source> sources;
-  std::vector<RecordingMetadata> metadata;
-  for (SourceSpec& spec : source_specs_from(args, /*scan=*/true)) {
-    spec.config.reconnect = true;  // one lidar's fault must not end the others' recording
-    metadata.push_back(source_metadata(spec));
-    LinkLossNotes notes("ydscope-cli record", who(spec), "the other lidars keep recording");
-    sources.push_back({std::move(spec), nullptr, nullptr, std::move(notes)});
-  }
+  // Before connecting: /dev/null once recorded for a second and then failed as "not a recording".
   if (out)
     if (const std::string problem = recording_output_problem(*out); !problem.empty()) throw UsageError(problem);
+  if (out) refuse_to_overwrite(*out, args, "--out");
+  if (mcap_path) refuse_to_overwrite(*mcap_path, args, "--mcap");
+  std::vector<SourceSpec> specs = source_specs_from(args, /*scan=*/true);
+  // An unattended recording outlives a USB glitch: each session reconnects, the file marks the gap.
+  const bool reconnect = !args.has("no-reconnect");
+  for (SourceSpec& spec : specs) spec.config.reconnect = reconnect;
+  SourceSet set(std::move(specs));
+  const bool several = named_apart(set.infos());
   const bool tty = ::isatty(STDERR_FILENO) == 1;
   const std::string shown = out.value_or(mcap_path.value_or(""));
 
+  std::vector<Watch> watches;
+  for (std::size_t id = 0; id < set.size(); ++id) {
+    const std::string program = "ydscope-cli record" + (several ? ": " + set.info(id).name : std::string());
+    Watch watch{program, std::make_unique<HealthWatch>(program),
+                std::make_unique<LinkLossNotes>(
+                    "ydscope-cli record", who(set, id),
+                    several ? "the other lidars keep recording" : "recording on; the gap is marked in the file")};
+    watch.health->clear_line_first(tty);
+    watches.push_back(std::move(watch));
+  }
   std::string error;
-  std::unique_ptr<SourcesRecording> recording;
-  if (out) {
-    recording = SourcesRecording::create(*out, std::move(metadata), error);
-    if (!recording) throw std::runtime_error(error);
-  }
-  for (Source& source : sources) {
-    source.session = std::make_unique<Session>(4);
-    source.health = std::make_unique<HealthWatch>("ydscope-cli record: " + source.spec.name);
-    source.health->clear_line_first(tty);
-  }
-  // The MCAP file is written from taps of its own, on a thread of its own (/NAME/scan ...).
+  // The MCAP file is written from taps of its own, on a thread of its own.
   std::unique_ptr<LiveTopics> live;
   if (mcap_path) {
     std::vector<LiveSource> live_sources;
-    for (const Source& source : sources)
-      live_sources.push_back({source.session.get(), {source.spec.name, source.spec.pose, source.spec.config.model}});
+    for (std::size_t id = 0; id < set.size(); ++id) live_sources.push_back({&set.session(id), set.info(id), nullptr});
     LiveTopicsOptions options;
     options.topics = mcap_options_from(args);
     options.mcap_path = *mcap_path;
-    options.attach = false;  // each session's tap right after its connect, below
+    options.attach = false;  // each session's tap before its connect, below
     live = LiveTopics::start(std::move(live_sources), std::move(options), error);
     if (!live) throw std::runtime_error(error);
   }
-  for (std::size_t id = 0; id < sources.size(); ++id) {
-    Source& source = sources[id];
-    // Both taps before the connect intent (they run in order on its I/O thread), so the start-up
-    // exchange is in the .ydrec and the MCAP file alike: a tap posted after the connect missed
-    // the first A5 65 whenever the connect's first write came before it (seen under ASan).
-    if (live) live->attach_source(id);
-    if (recording)
-      wait_for([&](CommandCallback done) { source.session->start_tap(recording->tap(id), std::move(done)); });
-    source.session->connect(source.spec.config);
+  // Every tap before the connect intents (each session runs them in order), so the start-up
+  // exchange is in the .ydrec and the MCAP file alike: a tap posted after the connect missed the
+  // first A5 65 whenever the connect's first write came before it (seen under ASan).
+  if (live)
+    for (std::size_t id = 0; id < set.size(); ++id) live->attach_source(id);
+  std::unique_ptr<SourcesRecording> recording;
+  if (out) {
+    recording = set.record(*out, error);
+    if (!recording) throw std::runtime_error(error);
   }
+  set.connect_all();
 
   const auto start = Clock::now();
   std::optional<Clock::time_point> scan_start;
@@ -175,20 +173,40 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
       failure = live->error();
       break;
     }
-    bool settled = true;
-    for (Source& source : sources) {
-      if (source.session->laps().drain_newest(lap) > 0) source.health->observe_lap(lap);
-      const SessionSnapshot s = source.session->snapshot();
-      source.health->observe_answer(s.health);
-      source.notes.follow(s, tty);
-      settled = settled && (source.notes.ever_scanned() || source.notes.down());
+    if (!scan_start) {
+      // --seconds counts from when every lidar scans (or is in trouble); with none scanning there
+      // is nothing to record: a lone lidar's first connect that fails ends the run at once.
+      const SetStart state = set.start_state();
+      const bool patience_out = Clock::now() - start > kSettlePatience;
+      if (!state.any_scanned && (state.settled || patience_out)) {
+        failure = state.settled ? state.failure
+                                : "gave up after " + std::to_string(kSettlePatience.count()) + " s waiting for " +
+                                      who(set, 0) + " (" + describe_snapshot(set.session(0).snapshot()) + ")";
+        break;
+      }
+      if (state.settled || patience_out) scan_start = Clock::now();
     }
-    // --seconds counts from when every lidar scans (or was said to be in trouble).
-    if (!scan_start && (settled || Clock::now() - start > kSettlePatience)) scan_start = Clock::now();
+    // A lidar that fails for good leaves the others recording; with --no-reconnect the first
+    // fault ends the recording.
+    bool all_failed = true;
+    std::string stopped;  // why the last lidar that stopped did
+    for (std::size_t id = 0; id < set.size(); ++id) {
+      // Nobody looks at laps here beyond the newest one's CT health; keep the queue from filling.
+      if (set.session(id).laps().drain_newest(lap) > 0) watches[id].health->observe_lap(lap);
+      const SessionSnapshot s = set.session(id).snapshot();
+      watches[id].health->observe_answer(s.health);
+      if (scan_start) watches[id].notes->follow(s, tty);
+      const bool stopped_here = s.state == LinkState::Failed || (scan_start && !reconnect && !scanning(s.state));
+      if (stopped_here) stopped = s.message.empty() ? "the scan stopped (" + describe_snapshot(s) + ")" : s.message;
+      all_failed = all_failed && s.state == LinkState::Failed;
+      if (stopped_here && !reconnect) failure = stopped;
+    }
+    if (all_failed) failure = stopped;
+    if (!failure.empty()) break;
     const double elapsed = scan_start ? std::chrono::duration<double>(Clock::now() - *scan_start).count() : 0.0;
     if (seconds && scan_start && elapsed >= *seconds) break;
     if (tty && Clock::now() - last_progress >= std::chrono::milliseconds(250)) {
-      show_progress(shown, elapsed, sources);
+      show_progress(shown, elapsed, set);
       last_progress = Clock::now();
     }
   }
@@ -198,32 +216,24 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   // close is asked for before waiting on any, so the .ydrec and the MCAP end at the same byte of
   // each lidar (each session closes its taps in the order asked, between two reads).
   std::vector<std::future<CommandResult>> closed;
-  if (recording)
-    for (std::size_t id = 0; id < sources.size(); ++id) {
-      auto promise = std::make_shared<std::promise<CommandResult>>();
-      closed.push_back(promise->get_future());
-      sources[id].session->stop_tap(recording->tap(id), [promise](const CommandResult& r) { promise->set_value(r); });
-    }
+  if (recording) closed = set.stop_recording(*recording);
   if (live && !live->stop() && failure.empty()) failure = live->error();
   for (auto& tap_closed : closed) tap_closed.wait();
   if (recording && !recording->finish() && failure.empty()) failure = recording->error();
-  for (Source& source : sources) source.session->disconnect();
-  for (Source& source : sources)
-    source.session->wait_until(
-        [](const SessionSnapshot& x) { return x.state == LinkState::Idle || x.state == LinkState::Failed; },
-        std::chrono::seconds(3));
+  set.disconnect_all();
 
   bool health_error = false;
   bool any_bytes = false;
-  for (const Source& source : sources) {
-    const auto c = source.session->snapshot().counters;
+  for (std::size_t id = 0; id < set.size(); ++id) {
+    const auto c = set.session(id).snapshot().counters;
+    std::fputs(checksum_warning(watches[id].program, c.packets, c.checksum_errors).c_str(), stderr);
     any_bytes = any_bytes || c.bytes_received > 0 || c.bytes_sent > 0;
-    health_error = health_error || source.health->worst() == HealthLevel::Error;
+    health_error = health_error || watches[id].health->worst() == HealthLevel::Error;
   }
   std::optional<RecordingSummary> summary;
   if (recording) {
     if (recording->dropped())
-      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidars\n",
+      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidar\n",
                    out->c_str(), static_cast<unsigned long long>(recording->dropped()));
     summary = summarize_recording(*out, error);
     if (!summary) throw std::runtime_error(error);
@@ -234,20 +244,22 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
     if (mcap_path) std::filesystem::remove(*mcap_path);
     throw std::runtime_error(failure.empty() ? "no lidar answered; nothing was recorded" : failure);
   }
-  if (summary) print_recording_summary(*out, sources, *summary);
+  if (summary) print_recording_summary(*out, set, watches, *summary);
   if (live) {
-    std::printf("%s\n", live->file_summary().c_str());
+    std::printf("%s%s\n", live->file_summary().c_str(),
+                summary || several ? "" : watches[0].health->summary_note().c_str());
     if (live->dropped())
-      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidars\n",
+      std::fprintf(stderr, "ydscope-cli record: warning: %s lacks %llu records: writing it fell behind the lidar\n",
                    mcap_path->c_str(), static_cast<unsigned long long>(live->dropped()));
   }
   std::fflush(stdout);
   if (!failure.empty()) throw std::runtime_error(failure + "; what was recorded until then is in " + shown);
-  for (const Source& source : sources)
-    if (!source.notes.ever_scanned())
-      throw std::runtime_error(who(source.spec) + " never scanned (" +
-                               (source.notes.last_problem().empty() ? "no reason given" : source.notes.last_problem()) +
-                               "); the other lidars are in " + shown);
+  for (std::size_t id = 0; id < set.size(); ++id)
+    if (!set.ever_scanned(id) && several)
+      throw std::runtime_error(
+          who(set, id) + " never scanned (" +
+          (watches[id].notes->last_problem().empty() ? "no reason given" : watches[id].notes->last_problem()) +
+          "); the other lidars are in " + shown);
   return health_error ? kExitLidarFault : kExitOk;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// ydscope-cli record with several --port: every lidar into one recording (format version 2), each
-// with its own Session and its own reconnect. A lidar that stops is said in one sentence and the
-// others keep recording; when it comes back that is said too.
+// ydscope-cli record's running part, for one lidar or several alike: a SourceSet (one Session per
+// --port, each reconnecting by itself) recorded into one .ydrec (version 1 for one lidar, 2 for
+// several), one live MCAP, or both. A lidar that stops is said in one sentence and the others keep
+// recording; when it comes back that is said too.
 #include <atomic>
 
 #include "app/common/arguments.h"

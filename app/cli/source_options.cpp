@@ -7,6 +7,12 @@ namespace ydscope::cli {
 
 std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
   if (!args.has("port")) throw UsageError("missing required option --port (see --help)");
+  if (args.values("port").size() == 1) {
+    for (const std::string& option : source_repeatable_options())
+      if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
+    if (args.value("name") || args.value("pose"))
+      throw UsageError("--name and --pose place one of several lidars; give them with two or more --port");
+  }
   std::vector<SourceSpec> specs;
   std::set<std::string> seen_ports;
   for (SourceText& text : source_texts_from(args)) {
@@ -16,20 +22,17 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
     std::string error;
     const auto address = parse_link_address(text.port, error);
     if (!seen_ports.insert(address->text()).second) throw UsageError("--port " + text.port + " is given twice");
-    spec.name = std::move(text.name);
-    spec.pose = text.pose.value_or(Pose{});  // no --pose: the common frame's origin
+    spec.info.name = std::move(text.name);
+    spec.info.pose = text.pose.value_or(Pose{});      // no --pose: the common frame's origin
+    spec.info.frame_id = text.frame_id.value_or("");  // no --frame-id: its name (alone: laser)
+    spec.info.model = spec.config.model;
     specs.push_back(std::move(spec));
   }
   return specs;
 }
 
-RecordingMetadata source_metadata(const SourceSpec& spec) {
-  RecordingMetadata metadata;
-  metadata.name = spec.name;
-  metadata.pose = spec.pose;
-  metadata.port = spec.config.address;
-  if (spec.config.model) metadata.model = std::string(profile_for(*spec.config.model).name);
-  return metadata;
+std::string who(const SourceSet& set, std::size_t id) {
+  return named_apart(set.infos()) ? set.info(id).name + " (" + set.config(id).address + ")" : set.config(id).address;
 }
 
 }  // namespace ydscope::cli

@@ -1,6 +1,6 @@
 #pragma once
-// Several lidars on one command line (record, serve), as app/common/source_list_options.h spells
-// them, turned into sessions' configurations.
+// The lidars on one command line (record, serve), as app/common/source_list_options.h spells
+// them, turned into a set's specs.
 #include <set>
 #include <string>
 #include <vector>
@@ -8,25 +8,19 @@
 #include "app/common/arguments.h"
 #include "app/common/source_list_options.h"
 #include "core/frame/pose.h"
-#include "core/link/session.h"
-#include "core/record/recording_metadata.h"
+#include "core/link/source_set.h"
 
 namespace ydscope::cli {
 
 using ydscope::source_repeatable_options;
 
-struct SourceSpec {
-  std::string name;  // letters, digits and _, starting with a letter: a ROS namespace and a CSV field as is
-  Pose pose;
-  SessionConfig config;
-};
-
-// One spec per --port. UsageError, one sentence, on a mistake: a count of --name/--pose/--model/
-// --baud that does not match the ports, a bad or repeated name, a bad pose, a port given twice, or
-// a serial port that does not exist.
+// One spec (core/link/source_set.h) per --port: one lidar is a set of one. UsageError, one
+// sentence, on a mistake: a count of --name/--pose/--model/--baud that does not match the ports, a
+// bad or repeated name, a bad pose, a port given twice, a serial port that does not exist, or a
+// --name or --pose for a lone lidar (they place one of several).
 std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan);
 
-// What a recording says about the source before it connects: name, pose, port, model if given.
-RecordingMetadata source_metadata(const SourceSpec& spec);
+// "NAME (PORT)" for one of several, "PORT" for a lone lidar: how every line names it.
+std::string who(const SourceSet& set, std::size_t id);
 
 }  // namespace ydscope::cli

@@ -48,8 +48,8 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
 App::~App() {
   if (booth_.on()) booth_.toggle(settings_, sources_.size());  // leave the monitor before the window goes away
   // Files get their summaries and the clients a closed server before the source goes.
-  outputs_.stop_recording(sel());
-  outputs_.stop_share(sel());
+  outputs_.stop_recording(sources_);
+  outputs_.stop_share(sources_);
   for (const auto& slot : sources_.slots()) slot->source.stop();
   ui::remember_looks(settings_, sources_.looks());
   store_.save(settings_);
@@ -114,7 +114,7 @@ void App::frame() {
   const bool damaged = events_.take_damage();
   drew_ = stage_.render_if_changed(settings_, fb_scale, fb_w, fb_h, screenshot || damaged);
   carry_out_requests(fb_w, fb_h);
-  outputs_.follow(sel());
+  outputs_.follow(sources_);
 }
 
 void App::handle_keys() {

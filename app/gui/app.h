@@ -72,9 +72,10 @@ class App {
     return std::chrono::duration<double>(t - start_).count();
   }
 
-  // The source list (app_sources.cpp). --sim G1,G6,TG30 or several --port: every one started,
-  // at its pose. Empty, or the first failure.
-  std::string start_several();
+  // The source list (app_sources.cpp). Every lidar the command line names started, each a layer
+  // at its pose: --sim G1,G6,TG30, one --port or several, or --replay (one lidar: the identity
+  // pose). Empty, or the first failure.
+  std::string start_listed();
   // Before a new source or after a Disconnect: the selected source's link stops (and its
   // recordings with it), and everything measured from it goes.
   void leave_source();
@@ -104,7 +105,7 @@ class App {
   WindowEvents events_{window_};  // keys and repaints since the last frame
   AppOptions options_;
   std::vector<Zone> zones_;  // settings.ini's and --zone's, watched from every source
-  SourceOutputs outputs_{options_.share_port, options_.record};  // Share and the Record tab, of the selected source
+  SourceOutputs outputs_{options_.share_port, options_.record};  // Share and the Record tab, of every source
   SettingsStore store_;
   ui::ViewSettings settings_ = store_.load();
   SourceList sources_;

@@ -149,8 +149,6 @@ AppOptions parse_app_options(std::span<const std::string> raw) {
   if (options.split && options.sources.empty())
     throw UsageError(
         "--split puts several sources side by side; give --sim with several models or --port more than once.");
-  if (!options.sources.empty() && (options.share || !options.record.empty()))
-    throw UsageError("--share and --record serve or record one source; with several, use ydscope-cli serve or record.");
   return options;
 }
 

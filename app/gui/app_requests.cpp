@@ -39,14 +39,14 @@ void App::carry_out(const ui::UiRequest& request, int framebuffer_width, int fra
         } else if constexpr (ui::is_device_request<R>) {
           sel().carry_out(r);
         } else if constexpr (std::is_same_v<R, ui::StartRecording>) {
-          outputs_.start_recording(sel(), r);
+          outputs_.start_recording(sources_, r);
         } else if constexpr (std::is_same_v<R, ui::StopRecording>) {
-          outputs_.stop_recording(sel());
+          outputs_.stop_recording(sources_);
         } else if constexpr (std::is_same_v<R, ui::SetShare>) {
           if (r.on)
-            outputs_.start_share(sel());
+            outputs_.start_share(sources_);
           else
-            outputs_.stop_share(sel());
+            outputs_.stop_share(sources_);
         } else if constexpr (std::is_same_v<R, ui::ResetView>) {
           stage_.view().reset(settings_);
         } else if constexpr (std::is_same_v<R, ui::SaveScreenshot>) {

@@ -18,44 +18,59 @@ constexpr double kAutoProbeSeconds = 8.0;
 
 std::string App::start_source() {
   if (options_.share) model().requests.push_back(ui::SetShare{true});  // carried out after the first frame
-  if (options_.check) model().requests.push_back(ui::RunCheck{});
-  if (!options_.sources.empty()) return start_several();
-  if (options_.source == SourceKind::Auto) {
+  std::string banner;
+  if (options_.sources.empty() && options_.source == SourceKind::Auto) {
     // The last run had several lidars: the same ones again, as they were placed.
-    if (std::vector<SourceChoice> last = last_run_choices(settings_); !last.empty()) {
-      options_.sources = std::move(last);
-      const std::string error = start_several();
-      // Short: centred over the view, it must clear the legend in its top-left corner.
-      model().banner = "the last run's " + std::to_string(sources_.size()) + " lidars, as placed";
-      return error;
+    std::vector<SourceChoice> last = last_run_choices(settings_);
+    if (last.empty()) {
+      start_clean();
+      sel().has_source = true;
+      model().banner = sel().source.start_auto();
+      model().source_text = sel().source.description();
+      model().sim_active = sel().source.sim_active();
+      model().show_source_tab = model().sim_active ? 1 : 0;
+      return {};
     }
-    start_clean();
-    sel().has_source = true;
-    model().banner = sel().source.start_auto();
-    model().source_text = sel().source.description();
-    model().sim_active = sel().source.sim_active();
-    model().show_source_tab = model().sim_active ? 1 : 0;
-    return {};
+    options_.sources = std::move(last);
+    // Short: centred over the view, it must clear the legend in its top-left corner.
+    banner = "the last run's " + std::to_string(options_.sources.size()) + " lidars, as placed";
   }
-  start_clean();
-  const ui::ConnectRequest request = command_line_request(options_, sel().edits);
-  if (request.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = request.address;
-  model().show_source_tab = static_cast<int>(request.kind);
-  return sel().start(request);
+  const std::string error = start_listed();
+  if (!banner.empty()) model().banner = banner;
+  return error;
 }
 
-std::string App::start_several() {
+std::string App::start_listed() {
+  struct Listed {
+    ui::SourceLook look;
+    ui::ConnectRequest request;
+  };
+  std::vector<Listed> listed;
+  if (options_.sources.empty()) {
+    // The lone --port, --sim or --replay: a layer at the identity pose, its look as the settings
+    // left it, its Connection tab filled in to show what runs.
+    start_clean();
+    listed.push_back({sel().look, command_line_request(options_, sel().edits)});
+    const ui::ConnectRequest& request = listed.back().request;
+    if (request.kind == ui::ConnectRequest::Kind::Replay) settings_.last_replay_file = request.address;
+    model().show_source_tab = static_cast<int>(request.kind);
+  }
   const std::vector<Pose> spread = ui::spread_poses(options_.sources.size());
-  // Several lidars are told apart by colour first; by-range stays one click away. (One port
-  // given a --name or --pose is still one lidar, drawn as always.)
-  if (options_.sources.size() > 1) settings_.colours.mode = ui::ColourMode::Source;
-  std::string first_error;
   for (std::size_t i = 0; i < options_.sources.size(); ++i) {
     const SourceChoice& choice = options_.sources[i];
     ui::SourceLook look;
     look.name = choice.name.empty() ? choice.model.value_or("lidar") : choice.name;
     look.pose = choice.pose.value_or(spread[i]);
     ui::recall_look(settings_, sources_.looks(), look, choice.pose.has_value());
+    listed.push_back({std::move(look), connect_request_for(choice, options_.scene)});
+  }
+  // Several lidars are told apart by colour first; by-range stays one click away. (One port
+  // given a --name or --pose is still one lidar, drawn as always.)
+  const bool several = listed.size() > 1;
+  if (several) settings_.colours.mode = ui::ColourMode::Source;
+  std::string first_error;
+  for (std::size_t i = 0; i < listed.size(); ++i) {
+    ui::SourceLook& look = listed[i].look;
     if (i == 0) {
       look.colour = look.colour == ui::Rgba8{} ? sel().look.colour : look.colour;
       sel().look = look;
@@ -63,11 +78,11 @@ std::string App::start_several() {
       sources_.add(std::move(look), static_cast<std::size_t>(settings_.persistence_laps));
     }
     sources_.select(i);  // the panels' model filled as it starts is this source's
-    const std::string error = sel().start(connect_request_for(choice, options_.scene));
-    if (!error.empty()) {
-      std::fprintf(stderr, "ydscope: %s: %s\n", sel().look.name.c_str(), error.c_str());
-      if (first_error.empty()) first_error = sel().look.name + ": " + error;
-    }
+    const std::string error = sel().start(listed[i].request);
+    if (error.empty()) continue;
+    // Several: each failure named on stderr, the first returned with its name.
+    if (several) std::fprintf(stderr, "ydscope: %s: %s\n", sel().look.name.c_str(), error.c_str());
+    if (first_error.empty()) first_error = several ? sel().look.name + ": " + error : error;
   }
   sources_.select(0);
   sync_sectors();  // several: the first source's sectors are no longer outlined round the origin
@@ -75,7 +90,7 @@ std::string App::start_several() {
 }
 
 void App::leave_source() {
-  outputs_.leave_source(sel());
+  outputs_.leave_source(sources_, sources_.selected_index());
   sel().source.stop();
   start_clean();
 }
@@ -88,9 +103,7 @@ void App::start_clean() {
 
 void App::select_source(std::size_t index) {
   if (index >= sources_.size() || index == sources_.selected_index()) return;
-  // Share and recordings follow one session; they end rather than silently follow another.
-  if (model().recording()) outputs_.stop_recording(sel(), " (another source was selected)");
-  if (outputs_.sharing()) outputs_.stop_share(sel());
+  // Share and Record cover every source: selecting another changes neither.
   sources_.select(index);
   shown_banner_ = model().banner;
   sync_sectors();
@@ -112,10 +125,12 @@ void App::change_sources(const ui::AddSource& request) {
   look.name = request.name.empty() ? request.request.model.value_or("lidar") : request.name;
   look.pose = ui::free_spread_pose(sources_.poses());  // beside the others, not on top of them
   ui::recall_look(settings_, sources_.looks(), look, false);
+  outputs_.before_change(sources_);
   SourceSlot& added = sources_.add(std::move(look), static_cast<std::size_t>(settings_.persistence_laps));
   const std::string error = added.start(request.request);
   if (!error.empty()) model().status_message = added.look.name + ": " + error;
   select_source(sources_.size() - 1);
+  outputs_.after_change(sources_);
   if (settings_.colours.mode != ui::ColourMode::Source && sources_.size() == 2)
     settings_.colours.mode = ui::ColourMode::Source;
 }
@@ -123,7 +138,9 @@ void App::change_sources(const ui::AddSource& request) {
 void App::change_sources(const ui::RemoveSource& request) {
   if (request.index >= sources_.size() || !sources_.several()) return;  // the list is never empty
   if (request.index == sources_.selected_index()) select_source(request.index == 0 ? 1 : 0);
+  outputs_.before_change(sources_);  // nothing may serve or record the removed session
   sources_.remove(request.index);
+  outputs_.after_change(sources_);
   sync_sectors();  // back to one lidar: its sectors are outlined again
   stage_.view().invalidate();
 }
@@ -137,7 +154,7 @@ void App::update_model(SourceSlot& slot) {
       slot.source.auto_probe_done();
       slot.model.banner.clear();
     } else if (slot.model.now_s > kAutoProbeSeconds) {  // only ever the lone, selected source
-      outputs_.leave_source(slot);
+      outputs_.leave_source(sources_, sources_.selected_index());
       start_clean();
       slot.model.banner = slot.source.fall_back_to_sim();
       slot.model.source_text = slot.source.description();

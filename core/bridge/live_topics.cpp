@@ -24,14 +24,9 @@ std::uint64_t unix_now_ns() {
 
 LiveTopics::LiveTopics(std::vector<LiveSource> sources, LiveTopicsOptions options) : options_(std::move(options)) {
   for (LiveSource& source : sources) {
-    if (sources.size() > 1) sources_.push_back(source.about);
+    sources_.push_back(source.info);
     lanes_.push_back({std::move(source), nullptr});
   }
-}
-
-std::unique_ptr<LiveTopics> LiveTopics::start(Session& session, LiveTopicsOptions options, std::string& error) {
-  std::vector<LiveSource> one{{&session, {}, options.parameters}};
-  return begin(std::unique_ptr<LiveTopics>(new LiveTopics(std::move(one), std::move(options))), error);
 }
 
 std::unique_ptr<LiveTopics> LiveTopics::start(std::vector<LiveSource> sources, LiveTopicsOptions options,
@@ -80,6 +75,17 @@ void LiveTopics::attach_source(std::size_t id) {
     new_taps_ = true;
   }
   lane.source.session->start_tap(lane.tap);
+}
+
+void LiveTopics::detach_source(std::size_t id) {
+  Lane& lane = lanes_.at(id);
+  if (!lane.tap) return;
+  lane.source.session->stop_tap(lane.tap);
+  lane.tap.reset();
+  std::lock_guard lock(mutex_);
+  next_taps_.resize(lanes_.size());
+  next_taps_[id] = nullptr;
+  new_taps_ = true;
 }
 
 void LiveTopics::detach() {
@@ -157,7 +163,7 @@ void LiveTopics::tell_clients(std::size_t source, Reading& reading) {
   if (lidar.parameters) {
     std::vector<foxglove::Parameter> values = lidar.parameters->updates(s);
     if (several())
-      for (foxglove::Parameter& p : values) p.name = foxglove::source_parameter_name(lidar.about.name, p.name);
+      for (foxglove::Parameter& p : values) p.name = foxglove::source_parameter_name(lidar.info.name, p.name);
     if (!values.empty()) options_.server->broadcast_parameters(std::move(values));
   }
   if (s.state == reading.told_state) return;
@@ -169,12 +175,12 @@ void LiveTopics::tell_clients(std::size_t source, Reading& reading) {
   // Foxglove lists every status message under Problems, info too: only trouble is told, and
   // withdrawn once the link is fine again. Routine states (connecting, scanning, a command in
   // progress) are no problem and /diagnostics says how the lidar is.
-  const std::string id = "ydscope-link" + (several() ? "-" + lidar.about.name : std::string());
+  const std::string id = "ydscope-link" + (several() ? "-" + lidar.info.name : std::string());
   if (!bad(s.state)) {
     if (was_bad) options_.server->remove_status(id);
     return;
   }
-  const std::string who = several() ? lidar.about.name + ": lidar " : "lidar ";
+  const std::string who = several() ? lidar.info.name + ": lidar " : "lidar ";
   options_.server->broadcast_status(
       foxglove::StatusLevel::Warning,
       who + std::string(link_state_name(s.state)) + (s.message.empty() ? "" : ": " + s.message), id);
@@ -184,10 +190,9 @@ void LiveTopics::publish_poses() {
   std::vector<RosTransform> transforms;
   for (std::size_t id = 0; id < lanes_.size(); ++id) {
     // One lidar: the options' frame; one of several: its name (ros_options_of).
-    const RosFrameOptions frame =
-        sources_.empty() ? options_.topics.ros.frame : ros_options_of(options_.topics.ros, sources_[id]).frame;
-    append_lidar_transforms(sources_.empty() ? Pose{} : sources_[id].pose, frame, frame.parent_frame_id,
-                            frame.frame_id, transforms);
+    const RosFrameOptions frame = ros_options_of(options_.topics.ros, sources_, id).frame;
+    append_lidar_transforms(sources_.empty() ? Pose{} : sources_[id].pose, frame, frame.parent_frame_id, frame.frame_id,
+                            transforms);
   }
   std::vector<std::uint8_t> cdr;
   const std::uint64_t now_ns = unix_now_ns();
@@ -206,8 +211,7 @@ void LiveTopics::take_new_taps(std::vector<Reading>& readings, std::uint64_t& la
     readings[id].last_t_ns.reset();  // a new tap counts its own time
     if (mcap_) continue;
     if (readings[id].encoder) laps_before += readings[id].encoder->laps();
-    readings[id].encoder = std::make_unique<RosTopicEncoder>(
-        several() ? ros_options_of(options_.topics.ros, sources_[id]) : options_.topics.ros);
+    readings[id].encoder = std::make_unique<RosTopicEncoder>(ros_options_of(options_.topics.ros, sources_, id));
   }
 }
 

@@ -35,29 +35,26 @@
 namespace ydscope {
 
 struct LiveTopicsOptions {
-  McapExportOptions topics;                           // frame, model, link bytes; the file's compression
-  std::string mcap_path;                              // empty: no file
-  foxglove::FoxgloveServer* server = nullptr;         // publish to its clients (must outlive this)
-  foxglove::SessionParameters* parameters = nullptr;  // one lidar: the clients' filter choice
+  McapExportOptions topics;                    // frame, model, link bytes; the file's compression
+  std::string mcap_path;                       // empty: no file
+  foxglove::FoxgloveServer* server = nullptr;  // publish to its clients (must outlive this)
   // False: start() taps no session; the caller calls attach_source(id) right after connecting
   // each one, so its start-up exchange (the first A5 65) is in the topics too.
   bool attach = true;
 };
 
-// One of several lidars.
+// One lidar of the set served: its session and what it is (a set of one keeps the topics a
+// lone lidar always had; several are named apart).
 struct LiveSource {
   Session* session = nullptr;
-  McapSource about;                                   // its name (the topics' namespace), pose, model
+  SourceInfo info;                                    // its name (the topics' namespace), pose, model
   foxglove::SessionParameters* parameters = nullptr;  // the clients' filter choice for it
 };
 
 class LiveTopics {
  public:
-  // Creates the MCAP file (when asked) and taps the session. Null plus one sentence in `error`
-  // when the file cannot be created.
-  static std::unique_ptr<LiveTopics> start(Session& session, LiveTopicsOptions options, std::string& error);
-  // Several lidars, each under its name (a single one is served as the overload above serves
-  // it); options.parameters is not used.
+  // Creates the MCAP file (when asked) and taps the sessions (one or more). Null plus one
+  // sentence in `error` when the file cannot be created.
   static std::unique_ptr<LiveTopics> start(std::vector<LiveSource> sources, LiveTopicsOptions options,
                                            std::string& error);
   ~LiveTopics();  // stop()
@@ -76,6 +73,9 @@ class LiveTopics {
   // Taps source `id`'s session afresh (each session runs what it is asked in order: asked right
   // after connect(), the tap sees every byte of the connection).
   void attach_source(std::size_t id);
+  // Closes source `id`'s tap only (it is changing source); the others go on being served.
+  void detach_source(std::size_t id);
+  bool attached(std::size_t id) const { return lanes_.at(id).tap != nullptr; }
   bool attached() const { return !lanes_.empty() && lanes_.front().tap != nullptr; }
 
   // Empty, or the sentence saying why writing the file failed (any thread).
@@ -116,11 +116,11 @@ class LiveTopics {
   // The link's state and the parameters' new values, to the server's clients.
   void tell_clients(std::size_t source, Reading& reading);
   void publish_poses();
-  bool several() const { return lanes_.size() > 1; }
+  bool several() const { return named_apart(sources_); }
 
   LiveTopicsOptions options_;
   std::vector<Lane> lanes_;
-  std::vector<McapSource> sources_;  // several lidars; empty for one
+  std::vector<SourceInfo> sources_;  // by source id
   std::unique_ptr<McapRecordingExport> mcap_;
 
   // Handed from the creator to the thread: the taps to read, one per lane (null: none).

@@ -3,6 +3,7 @@
 // with the same ros2msg schemas as the MCAP files. Ids start at 1 (0 reads as "unset" in clients).
 // One lidar: its topics are 1..kRosTopicCount, named as ever ("/scan"). Several: lidar i's topics
 // are the i-th block of kRosTopicCount ids, named "/NAME/scan". /tf_static comes after them.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -22,11 +23,11 @@ inline std::uint32_t tf_static_channel_id(std::size_t sources) {
   return static_cast<std::uint32_t>((sources < 1 ? 1 : sources) * kRosTopicCount + 1);
 }
 
-// `sources`: empty for one lidar, else several, by source id. Without `link_bytes` (serve
+// `sources`: by source id; none or one is one lidar (/scan), several are named apart (/NAME/scan). Without `link_bytes` (serve
 // --no-link-bytes) the link-byte topics are not advertised at all, as in an MCAP file.
-inline std::vector<ServerChannel> ros_topic_channels(std::span<const McapSource> sources = {}, bool link_bytes = true) {
+inline std::vector<ServerChannel> ros_topic_channels(std::span<const SourceInfo> sources = {}, bool link_bytes = true) {
   std::vector<ServerChannel> out;
-  const std::size_t count = sources.empty() ? 1 : sources.size();
+  const std::size_t count = std::max<std::size_t>(sources.size(), 1);
   for (std::size_t id = 0; id < count; ++id)
     for (const RosTopicInfo& t : ros_topics())
       if (link_bytes || !is_link_bytes(t.topic))

@@ -4,42 +4,36 @@
 
 namespace ydscope {
 
-std::unique_ptr<SessionShare> SessionShare::start(Session& session, ShareOptions options, std::string& error) {
-  std::unique_ptr<SessionShare> share(new SessionShare());
-  share->parameters_.push_back(std::make_unique<foxglove::SessionParameters>(session));
-  foxglove::SessionParameters* parameters = share->parameters_.back().get();
-  const auto channels = foxglove::ros_topic_channels({}, options.topics.ros.link_bytes);
-  if (!share->serve(options, channels, parameters, {{&session, {}, parameters}}, error)) return nullptr;
-  return share;
-}
-
 std::unique_ptr<SessionShare> SessionShare::start(const std::vector<Source>& sources, ShareOptions options,
                                                   std::string& error) {
+  if (sources.empty()) {
+    error = "there is no lidar to share; start one first";
+    return nullptr;
+  }
   std::unique_ptr<SessionShare> share(new SessionShare());
-  std::vector<McapSource> about;
+  std::vector<SourceInfo> infos;
   std::vector<LiveSource> topics;
   for (const Source& source : sources) {
     share->parameters_.push_back(std::make_unique<foxglove::SessionParameters>(*source.session));
-    share->named_parameters_.add(source.about.name, share->parameters_.back().get());
-    about.push_back(source.about);
-    topics.push_back({source.session, source.about, share->parameters_.back().get()});
+    share->named_parameters_.add(source.info.name, share->parameters_.back().get());
+    infos.push_back(source.info);
+    topics.push_back({source.session, source.info, share->parameters_.back().get()});
   }
-  const auto channels = foxglove::ros_topic_channels(about, options.topics.ros.link_bytes);
-  if (!share->serve(options, channels, &share->named_parameters_, std::move(topics), error)) return nullptr;
-  return share;
-}
-
-bool SessionShare::serve(ShareOptions& options, std::vector<foxglove::ServerChannel> channels,
-                         foxglove::ParameterBackend* backend, std::vector<LiveSource> topics, std::string& error) {
-  host_ = options.server.host;
-  server_ = std::make_unique<foxglove::FoxgloveServer>(std::move(options.server), std::move(channels), backend);
-  if (!server_->start(error)) return false;
+  // A lone lidar's parameters keep their plain names (scan_hz); several are named apart.
+  foxglove::ParameterBackend* backend = named_apart(infos)
+                                            ? static_cast<foxglove::ParameterBackend*>(&share->named_parameters_)
+                                            : share->parameters_.front().get();
+  share->host_ = options.server.host;
+  share->server_ = std::make_unique<foxglove::FoxgloveServer>(
+      std::move(options.server), foxglove::ros_topic_channels(infos, options.topics.ros.link_bytes), backend);
+  if (!share->server_->start(error)) return nullptr;
   LiveTopicsOptions live;
   live.topics = std::move(options.topics);
   live.mcap_path = std::move(options.mcap_path);
-  live.server = server_.get();
-  topics_ = LiveTopics::start(std::move(topics), std::move(live), error);
-  return topics_ != nullptr;
+  live.server = share->server_.get();
+  share->topics_ = LiveTopics::start(std::move(topics), std::move(live), error);
+  if (!share->topics_) return nullptr;
+  return share;
 }
 
 SessionShare::~SessionShare() { stop(); }

@@ -26,15 +26,15 @@ struct ShareOptions {
 
 class SessionShare {
  public:
-  // Binds, taps the session and serves. Null plus one sentence in `error` when the address
-  // cannot be bound (in use, a bad host) or the MCAP file cannot be created.
-  static std::unique_ptr<SessionShare> start(Session& session, ShareOptions options, std::string& error);
-  // Several lidars (two or more), each under its name: /NAME/scan, NAME/scan_hz, and every pose
-  // on /tf_static. The sessions' tap records go to the clients (and the file).
+  // One lidar of the set: its session and what it is.
   struct Source {
     Session* session = nullptr;
-    McapSource about;  // name, pose, model
+    SourceInfo info;  // name, pose, model
   };
+  // Binds, taps the sessions and serves. A set of one is served as a lone lidar always was
+  // (/scan, scan_hz); several each under its name (/NAME/scan, NAME/scan_hz) with every pose on
+  // /tf_static. Null plus one sentence in `error` when the address cannot be bound (in use, a
+  // bad host) or the MCAP file cannot be created.
   static std::unique_ptr<SessionShare> start(const std::vector<Source>& sources, ShareOptions options,
                                              std::string& error);
   ~SessionShare();  // stop()
@@ -53,10 +53,6 @@ class SessionShare {
 
  private:
   SessionShare() = default;
-  // Binds with `channels` and starts `topics` (their parameters pointing into parameters_).
-  bool serve(ShareOptions& options, std::vector<foxglove::ServerChannel> channels, foxglove::ParameterBackend* backend,
-             std::vector<LiveSource> topics, std::string& error);
-
   std::string host_;
   std::vector<std::unique_ptr<foxglove::SessionParameters>> parameters_;  // one per lidar
   foxglove::SourcesParameters named_parameters_;                          // several lidars: under their names

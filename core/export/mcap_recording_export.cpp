@@ -7,15 +7,16 @@
 
 namespace ydscope {
 
-RosExportOptions ros_options_of(const RosExportOptions& base, const McapSource& source) {
+RosExportOptions ros_options_of(const RosExportOptions& base, std::span<const SourceInfo> sources, std::size_t id) {
   RosExportOptions ros = base;
-  ros.frame.frame_id = source.name;
-  if (source.model) ros.model = source.model;
+  if (id >= sources.size()) return ros;
+  if (named_apart(sources)) ros.frame.frame_id = sources[id].frame();
+  if (sources[id].model) ros.model = sources[id].model;
   return ros;
 }
 
-std::string source_topic_name(std::span<const McapSource> sources, std::size_t id, std::string_view topic) {
-  return (sources.empty() ? std::string() : "/" + sources[id].name) + std::string(topic);
+std::string source_topic_name(std::span<const SourceInfo> sources, std::size_t id, std::string_view topic) {
+  return (!named_apart(sources) ? std::string() : "/" + sources[id].name) + std::string(topic);
 }
 
 namespace {
@@ -58,20 +59,20 @@ const McapMetadataMap& ros2_latched_channel_metadata() {
 
 std::unique_ptr<McapRecordingExport> McapRecordingExport::create(const std::string& path,
                                                                  const McapExportOptions& options, std::string& error,
-                                                                 std::vector<McapSource> sources) {
+                                                                 std::vector<SourceInfo> sources) {
   auto file = McapFileSink::create(path, error);
   if (!file) return nullptr;
   return std::unique_ptr<McapRecordingExport>(new McapRecordingExport(std::move(file), options, std::move(sources)));
 }
 
 McapRecordingExport::McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options,
-                                         std::vector<McapSource> sources)
+                                         std::vector<SourceInfo> sources)
     : McapRecordingExport(*file, options, std::move(sources)) {
   file_ = std::move(file);
 }
 
 McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions& options,
-                                         std::vector<McapSource> sources)
+                                         std::vector<SourceInfo> sources)
     : writer_(sink, options.mcap), sources_(std::move(sources)), frame_(options.ros.frame) {
   std::uint16_t schema_ids[kRosTopicCount] = {};
   for (const RosTopicInfo& topic : ros_topics()) {
@@ -87,12 +88,12 @@ McapRecordingExport::McapRecordingExport(McapSink& sink, const McapExportOptions
                                          {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
     }
   }
-  const std::size_t count = sources_.empty() ? 1 : sources_.size();
+  const std::size_t count = std::max<std::size_t>(sources_.size(), 1);
   for (std::size_t id = 0; id < count; ++id) {
     Lane lane;
-    lane.encoder =
-        std::make_unique<RosTopicEncoder>(sources_.empty() ? options.ros : ros_options_of(options.ros, sources_[id]));
-    lane.metadata_name = std::string(kMcapRecordingMetadataName) + (sources_.empty() ? "" : "." + sources_[id].name);
+    lane.encoder = std::make_unique<RosTopicEncoder>(ros_options_of(options.ros, sources_, id));
+    lane.metadata_name =
+        std::string(kMcapRecordingMetadataName) + (!named_apart(sources_) ? "" : "." + sources_[id].name);
     for (const RosTopicInfo& topic : ros_topics()) {
       const auto i = static_cast<std::size_t>(topic.topic);
       if (!options.ros.link_bytes && is_link_bytes(topic.topic)) continue;  // not advertised at all

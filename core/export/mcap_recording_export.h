@@ -29,7 +29,7 @@
 #include "core/export/mcap_sink.h"
 #include "core/export/mcap_writer.h"
 #include "core/export/ros_topic_encoder.h"
-#include "core/frame/pose.h"
+#include "core/frame/source_info.h"
 #include "core/record/recording_format.h"
 
 namespace ydscope {
@@ -41,17 +41,14 @@ struct McapExportOptions {
 
 inline constexpr const char* kMcapRecordingMetadataName = "ydscope.recording";
 
-// One of several lidars in an export: its name (a ROS namespace) and where it sits.
-struct McapSource {
-  std::string name;
-  Pose pose;
-  std::optional<Model> model;  // decode as; empty: options.ros.model, else the recording's
-};
+// The export's old name for a source, kept only while a test still spells it.
+using McapSource = SourceInfo;
 
-// One of several lidars' encoder options: its name as the frame id, its model when known.
-RosExportOptions ros_options_of(const RosExportOptions& base, const McapSource& source);
-// A topic's name: "/scan" for one lidar (no sources), "/NAME/scan" for one of several.
-std::string source_topic_name(std::span<const McapSource> sources, std::size_t id, std::string_view topic);
+// Source `id`'s encoder options: its model when known (else base's, else the recording's), and
+// when several are named apart, its frame as the frame id (one lidar keeps base's frame).
+RosExportOptions ros_options_of(const RosExportOptions& base, std::span<const SourceInfo> sources, std::size_t id);
+// A topic's name: "/scan" for one lidar (a set of one, or none given), "/NAME/scan" for one of several.
+std::string source_topic_name(std::span<const SourceInfo> sources, std::size_t id, std::string_view topic);
 
 class McapRecordingExport {
  public:
@@ -59,11 +56,11 @@ class McapRecordingExport {
   static constexpr std::uint64_t kHoldLimitNs = 5'000'000'000;
 
   // Creates `path`; null plus one sentence in `error` when it cannot be created.
-  // `sources`: empty for one lidar (topics as ever), else several, by source id.
+  // `sources`: by source id; none or one is one lidar (topics as ever), several are named apart.
   static std::unique_ptr<McapRecordingExport> create(const std::string& path, const McapExportOptions& options,
-                                                     std::string& error, std::vector<McapSource> sources = {});
+                                                     std::string& error, std::vector<SourceInfo> sources = {});
   // Writes into `sink`, which must outlive the export (tests and fuzzing use a memory sink).
-  McapRecordingExport(McapSink& sink, const McapExportOptions& options, std::vector<McapSource> sources = {});
+  McapRecordingExport(McapSink& sink, const McapExportOptions& options, std::vector<SourceInfo> sources = {});
 
   // One record as a .ydrec holds it: link bytes (either direction) or a metadata payload
   // (key=value text). Records of unknown types, or of a source the export was not made with, are
@@ -113,7 +110,7 @@ class McapRecordingExport {
     std::vector<std::uint8_t> cdr;
   };
   McapRecordingExport(std::unique_ptr<McapFileSink> file, const McapExportOptions& options,
-                      std::vector<McapSource> sources);
+                      std::vector<SourceInfo> sources);
   void emit(Lane& lane, RosTopic topic, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
   void write_tf_static();
   void hold(std::uint16_t channel, std::uint32_t sequence, std::uint64_t log_time, std::span<const std::uint8_t> cdr);
@@ -125,7 +122,7 @@ class McapRecordingExport {
   std::unique_ptr<McapFileSink> file_;  // when the export owns its file
   McapWriter writer_;
   std::vector<Lane> lanes_;
-  std::vector<McapSource> sources_;  // several lidars; empty for one
+  std::vector<SourceInfo> sources_;  // by source id; none or one: one lidar
   std::uint16_t tf_channel_ = 0;
   bool tf_written_ = false;
   RosFrameOptions frame_;

@@ -58,7 +58,8 @@ bool SourcesRecording::write_up_to(std::int64_t t_ns) {
 bool SourcesRecording::pump(std::chrono::milliseconds wait) {
   if (writer_->failed()) return false;
   take_from_taps(wait);
-  const auto hold = std::chrono::duration_cast<std::chrono::nanoseconds>(kHoldBack).count();
+  // One tap's records come in order from one I/O thread: only several need the wait.
+  const auto hold = taps_.size() > 1 ? std::chrono::duration_cast<std::chrono::nanoseconds>(kHoldBack).count() : 0;
   return write_up_to(link_clock_ns() - epoch_ns_ - hold);
 }
 

@@ -6,7 +6,8 @@
 // the taps share one epoch, so their times are one timeline. pump() runs on one consumer thread
 // (the CLI's): it takes what the taps hold and writes it in time order. A record waits kHoldBack
 // before it is written, so a record another I/O thread pushes a little late still goes in its
-// place (the file's times never go back).
+// place (the file's times never go back); a single source's records, all from one thread, are
+// written as they come.
 #include <chrono>
 #include <cstdint>
 #include <memory>

@@ -171,8 +171,6 @@ TEST(CommandLine, TheAppsSeveralSourcesRefuseMistakesInOneSentence) {
       {"--sim G1,G6 --pose 0,0,0",
        "ydscope: --name and --pose go with --port, once per port; name and place virtual lidars in the Sources "
        "panel.\n"},
-      {"--sim G1,G6 --record ydrec",
-       "ydscope: --share and --record serve or record one source; with several, use ydscope-cli serve or record.\n"},
       {"--port /tmp/a --model G6 --model G1", "ydscope: --model is given twice; give it once (or once per --port).\n"},
       {"--sim G6 --split",
        "ydscope: --split puts several sources side by side; give --sim with several models or --port more than "

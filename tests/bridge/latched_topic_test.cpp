@@ -17,7 +17,7 @@ namespace {
 using namespace std::chrono_literals;
 
 TEST(LatchedTopic, ALateSubscriberToTfStaticGetsTheNewestPosesAtOnce) {
-  const std::vector<McapSource> sources{{"front", {}, {}}, {"back", {}, {}}};
+  const std::vector<SourceInfo> sources{{"front", {}, {}}, {"back", {}, {}}};
   foxglove::ServerOptions options;
   options.host = "127.0.0.1";
   options.port = 0;

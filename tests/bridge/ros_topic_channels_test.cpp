@@ -36,7 +36,7 @@ TEST(RosTopicChannels, WithoutLinkBytesNoLinkByteTopicIsAdvertised) {
 }
 
 TEST(RosTopicChannels, SeveralLidarsWithoutLinkBytesKeepTheirOtherTopicsAndTfStatic) {
-  const std::vector<McapSource> sources{{"front", {}, std::nullopt}, {"back", {}, std::nullopt}};
+  const std::vector<SourceInfo> sources{{"front", {}, std::nullopt}, {"back", {}, std::nullopt}};
   const auto names = topic_names(foxglove::ros_topic_channels(sources, /*link_bytes=*/false));
   for (const std::string lidar : {"front", "back"}) {
     EXPECT_TRUE(has(names, "/" + lidar + "/scan")) << lidar;

@@ -30,7 +30,7 @@ TEST(SessionShare, FollowsANewSourceWithItsClientsStillConnected) {
   ShareOptions options;
   options.server.port = 0;
   std::string error;
-  auto share = SessionShare::start(session, options, error);
+  auto share = SessionShare::start({{&session, {}}}, options, error);
   ASSERT_TRUE(share) << error;
   EXPECT_EQ(share->address(), "ws://127.0.0.1:" + std::to_string(share->port()));
   session.connect(config_for(g6.port()));
@@ -61,7 +61,7 @@ TEST(SessionShare, RoutineLinkStatesAreNoStatusMessages) {
   ShareOptions options;
   options.server.port = 0;
   std::string error;
-  auto share = SessionShare::start(session, options, error);
+  auto share = SessionShare::start({{&session, {}}}, options, error);
   ASSERT_TRUE(share) << error;
   WsTestClient client(share->port());
   ASSERT_TRUE(client.subscribe(1, "/scan"));
@@ -88,12 +88,12 @@ TEST(SessionShare, APortInUseIsOneSentenceNamingTheOption) {
   ShareOptions first_options;
   first_options.server.port = 0;
   std::string error;
-  auto first = SessionShare::start(session, first_options, error);
+  auto first = SessionShare::start({{&session, {}}}, first_options, error);
   ASSERT_TRUE(first) << error;
   ShareOptions second_options;
   second_options.server.port = first->port();
   second_options.server.port_option = "--share-port";
-  EXPECT_FALSE(SessionShare::start(session, second_options, error));
+  EXPECT_FALSE(SessionShare::start({{&session, {}}}, second_options, error));
   EXPECT_NE(error.find("cannot listen on 127.0.0.1:" + std::to_string(first->port())), std::string::npos) << error;
   EXPECT_NE(error.find("choose another port with --share-port"), std::string::npos) << error;
 }

@@ -49,7 +49,7 @@ struct Shared {
     options.server.port = 0;
     options.mcap_path = std::move(mcap_path);
     std::string error;
-    share = SessionShare::start(session, options, error);
+    share = SessionShare::start({{&session, {}}}, options, error);
     EXPECT_TRUE(share) << error;
     session.connect(config_for(sim.port(), model));
     const SessionSnapshot s = wait_for_state(session, LinkState::Scanning);
@@ -107,7 +107,7 @@ TEST(ShareBadDay, OneOfSeveralLidarsIsToldUnderItsOwnName) {
   options.server.port = 0;
   std::string error;
   auto share =
-      SessionShare::start({{&front, McapSource{"front", {}, {}}}, {&back, McapSource{"back", {}, {}}}}, options, error);
+      SessionShare::start({{&front, SourceInfo{"front", {}, {}}}, {&back, SourceInfo{"back", {}, {}}}}, options, error);
   ASSERT_TRUE(share) << error;
   front.connect(config_for(front_sim.port(), Model::G6));
   back.connect(config_for(back_sim.port(), Model::G6));

@@ -4,10 +4,6 @@
 // stops cleanly. A port already in use is one sentence, and the app goes on showing the lidar.
 #include <gtest/gtest.h>
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -16,44 +12,13 @@
 #include "support/ws_test_client.h"
 #include "export/laser_scan_reader.h"
 #include "private_display.h"
+#include "share_client.h"
 #include "x11_input.h"
 
 namespace ydscope::test {
 namespace {
 
 #ifdef YDSCOPE_APP_PATH
-
-// A listening socket on 127.0.0.1 at a port the kernel chose; closed by the destructor.
-struct Listener {
-  int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  std::uint16_t port = 0;
-  Listener() {
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 && ::listen(fd, 1) == 0 &&
-        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-      port = ntohs(address.sin_port);
-  }
-  ~Listener() { ::close(fd); }
-};
-
-// A port nobody listens on now (there is a small window for another program to take it).
-std::uint16_t free_port() { return Listener().port; }
-
-// A client of the app's share, trying until `timeout` (the app starts sharing after its first frame).
-std::unique_ptr<WsTestClient> connect_to(std::uint16_t port, std::chrono::seconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < deadline) {
-    try {
-      return std::make_unique<WsTestClient>(port, 0, std::chrono::seconds(2));
-    } catch (const std::exception&) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    }
-  }
-  return nullptr;
-}
 
 // Reads until the server lets the client go; false if it still talks after `timeout`.
 bool let_go(WsTestClient& client, std::chrono::seconds timeout) {

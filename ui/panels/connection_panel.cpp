@@ -195,6 +195,7 @@ void record_section(UiModel& m, PanelEdits& e, const SessionSnapshot& s) {
     ImGui::SameLine();
     ImGui::Text("%.1f s", m.now_s - m.record_started_s);
     if (s.recording) recording_file_line(s.recording_path);
+    if (m.ydrec_recording.active) recording_file_line(m.ydrec_recording.path);
     if (m.mcap_recording.active) recording_file_line(m.mcap_recording.path);
     if (ImGui::Button("Stop recording")) m.requests.push_back(StopRecording{});
     command_feedback_line(m, CommandControl::Recording);

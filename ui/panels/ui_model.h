@@ -59,7 +59,8 @@ struct ShareState {
   std::string error;        // why the last start failed ("cannot listen on ...: address in use")
 };
 
-// A live MCAP recording (the session's own .ydrec recording is in the snapshot).
+// A file the app records live: the MCAP, or the .ydrec of every lidar shown (a session's own .ydrec
+// recording is in its snapshot).
 struct McapRecordingState {
   bool active = false;
   std::string path;
@@ -113,8 +114,9 @@ struct UiModel {
   std::vector<HealthAlert> alerts;  // worst first, for the status line and the badge
   ShareState share;
   McapRecordingState mcap_recording;
-  bool booth = false;   // the full-screen view: large type and a legend
-  ColourLegend legend;  // what the colours mean, for the booth view
+  McapRecordingState ydrec_recording;  // the .ydrec of every lidar shown (app/gui/source_outputs.h)
+  bool booth = false;                  // the full-screen view: large type and a legend
+  ColourLegend legend;                 // what the colours mean, for the booth view
   // Outcomes of device commands for the panel beside the control that issued them. Shared with
   // the session's completion callbacks, which run on the I/O thread.
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();
@@ -128,7 +130,7 @@ struct UiModel {
   std::optional<double> stale_for_s() const { return view_state.live ? std::nullopt : seconds_since_lap; }
 
   // A .ydrec or an MCAP recording runs (the REC badge).
-  bool recording() const { return snap.recording || mcap_recording.active; }
+  bool recording() const { return snap.recording || mcap_recording.active || ydrec_recording.active; }
 
   // Every source in list order, and which one these panels show (filled each frame by the app).
   std::vector<SourceRow> sources;
