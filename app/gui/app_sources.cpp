@@ -18,6 +18,7 @@ constexpr double kAutoProbeSeconds = 8.0;
 
 std::string App::start_source() {
   if (options_.share) model().requests.push_back(ui::SetShare{true});  // carried out after the first frame
+  if (options_.check) model().requests.push_back(ui::RunCheck{});
   std::string banner;
   if (options_.sources.empty() && options_.source == SourceKind::Auto) {
     // The last run had several lidars: the same ones again, as they were placed.

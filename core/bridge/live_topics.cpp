@@ -189,10 +189,9 @@ void LiveTopics::tell_clients(std::size_t source, Reading& reading) {
 void LiveTopics::publish_poses() {
   std::vector<RosTransform> transforms;
   for (std::size_t id = 0; id < lanes_.size(); ++id) {
-    // One lidar: the options' frame; one of several: its name (ros_options_of).
-    const RosFrameOptions frame = ros_options_of(options_.topics.ros, sources_, id).frame;
-    append_lidar_transforms(sources_.empty() ? Pose{} : sources_[id].pose, frame, frame.parent_frame_id, frame.frame_id,
-                            transforms);
+    const RosFrameOptions frame = ros_options_of(options_.topics.ros, sources_, id).frame;  // this lidar's frame_id
+    append_lidar_transforms(id < sources_.size() ? sources_[id].pose : Pose{}, frame, frame.parent_frame_id,
+                            frame.frame_id, transforms);
   }
   std::vector<std::uint8_t> cdr;
   const std::uint64_t now_ns = unix_now_ns();
