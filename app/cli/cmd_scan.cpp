@@ -18,7 +18,7 @@
 #include "app/cli/lap_output.h"
 #include "app/cli/line_quality.h"
 #include "app/cli/session_cli.h"
-#include "core/link/session_io.h"
+#include "core/session/session_io.h"
 #include "core/record/recording_metadata.h"
 
 namespace ydscope::cli {

@@ -20,7 +20,7 @@
 #include "app/cli/source_options.h"
 #include "core/analysis/zone.h"
 #include "core/bridge/session_share.h"
-#include "core/link/source_set.h"
+#include "core/session/source_set.h"
 
 namespace ydscope::cli {
 namespace {

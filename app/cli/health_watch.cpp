@@ -1,6 +1,6 @@
 #include "app/cli/health_watch.h"
 
-#include "core/link/device_probe.h"
+#include "core/session/device_probe.h"
 
 namespace ydscope::cli {
 namespace {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/protocol/health_level.h"
 #include "core/protocol/lap.h"
 #include "core/text/json_writer.h"

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <string>
 
-#include "core/link/session_snapshot.h"
+#include "core/snapshot/session_snapshot.h"
 
 namespace ydscope::cli {
 

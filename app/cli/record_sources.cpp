@@ -19,7 +19,7 @@
 #include "app/cli/recording_input.h"
 #include "app/cli/source_options.h"
 #include "core/bridge/live_topics.h"
-#include "core/link/source_set.h"
+#include "core/session/source_set.h"
 #include "core/record/recorded_conventions.h"
 #include "core/record/recording_reader.h"
 #include "core/record/source_decoders.h"

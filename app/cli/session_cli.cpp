@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "app/common/device_connect.h"
-#include "core/link/device_probe.h"
+#include "core/session/device_probe.h"
 #include "app/common/source_list_options.h"
 #include "core/link/link_address.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/common/arguments.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/text/json_writer.h"
 
 namespace ydscope::cli {

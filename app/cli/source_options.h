@@ -8,13 +8,13 @@
 #include "app/common/arguments.h"
 #include "app/common/source_list_options.h"
 #include "core/frame/pose.h"
-#include "core/link/source_set.h"
+#include "core/session/source_set.h"
 
 namespace ydscope::cli {
 
 using ydscope::source_repeatable_options;
 
-// One spec (core/link/source_set.h) per --port: one lidar is a set of one. UsageError, one
+// One spec (core/session/source_set.h) per --port: one lidar is a set of one. UsageError, one
 // sentence, on a mistake: a count of --name/--pose/--model/--baud that does not match the ports, a
 // bad or repeated name, a bad pose, a port given twice, a serial port that does not exist, or a
 // --name or --pose for a lone lidar (they place one of several).

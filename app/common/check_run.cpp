@@ -11,7 +11,7 @@
 #include "core/analysis/dropout_ring.h"
 #include "core/analysis/lap_timing.h"
 #include "core/analysis/text_format.h"
-#include "core/link/device_probe.h"
+#include "core/session/device_probe.h"
 #include "core/protocol/health_level.h"
 #include "core/protocol/reply.h"
 

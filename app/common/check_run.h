@@ -12,7 +12,7 @@
 
 #include "core/analysis/acceptance.h"
 #include "core/analysis/sector.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 
 namespace ydscope {
 

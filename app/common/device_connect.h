@@ -3,7 +3,7 @@
 // run one job on one unit and then stop: the CLI's commands and the app's "Run check".
 #include <chrono>
 
-#include "core/link/session.h"
+#include "core/session/session.h"
 
 namespace ydscope {
 

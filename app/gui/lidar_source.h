@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/gui/replay_source.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/sim/sim_server.h"
 #include "ui/panels/ui_model.h"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/link/replay_link.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 
 namespace ydscope::gui {
 

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <optional>
 
-#include "core/link/recording_control.h"
+#include "core/session/recording_control.h"
 #include "app/gui/screenshot.h"
 #include "ui/view/export/lap_csv.h"
 #include "ui/view/export/lap_mcap.h"

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "core/link/session_snapshot.h"
+#include "core/snapshot/session_snapshot.h"
 #include "ui/view/scene/lap_history.h"
 
 namespace ydscope::gui {

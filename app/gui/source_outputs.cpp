@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <future>
 
-#include "core/link/source_set.h"
+#include "core/session/source_set.h"
 #include "core/record/recording_source.h"
 #include "ui/panels/panels.h"
 #include "ui/view/export/file_names.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Getting the lidars out of the window while they run: Share serves them to Foxglove (the server
 // and topics `ydscope-cli serve` uses, core/bridge/session_share.h), and the Record tab writes one
-// .ydrec (core/link/sources_recording.h), one MCAP (LiveTopics) or both. Both cover every lidar
+// .ydrec (core/session/sources_recording.h), one MCAP (LiveTopics) or both. Both cover every lidar
 // shown, as `serve` and `record` cover every --port: one lidar is served and recorded as it always
 // was (/scan, a version-1 file), several each under its name. A recording ends when a source
 // changes or the list does; the share keeps its clients, stops serving a source while it changes
@@ -17,7 +17,7 @@
 #include "app/gui/source_list.h"
 #include "core/bridge/live_topics.h"
 #include "core/bridge/session_share.h"
-#include "core/link/sources_recording.h"
+#include "core/session/sources_recording.h"
 
 namespace ydscope::gui {
 

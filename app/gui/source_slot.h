@@ -13,7 +13,7 @@
 
 #include "app/gui/lidar_source.h"
 #include "app/gui/unit_check.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "ui/panels/panel_edits.h"
 #include "ui/panels/ui_model.h"
 #include "ui/view/scene/lap_history.h"

@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "app/common/check_run.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "ui/view/status/unit_check_view.h"
 
 namespace ydscope::gui {

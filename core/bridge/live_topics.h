@@ -29,8 +29,8 @@
 #include "core/bridge/session_parameters.h"
 #include "core/bridge/sources_parameters.h"
 #include "core/export/mcap_recording_export.h"
-#include "core/link/record_tap.h"
-#include "core/link/session.h"
+#include "core/session/record_tap.h"
+#include "core/session/session.h"
 
 namespace ydscope {
 

@@ -6,7 +6,7 @@
 #include <atomic>
 
 #include "core/bridge/foxglove_server.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/protocol/interference_filter.h"
 
 namespace ydscope::foxglove {

@@ -148,7 +148,7 @@ void RosTopicEncoder::idle(std::int64_t t_ns, MessageFn emit) {
 }
 
 bool RosTopicEncoder::link_down() const {
-  const auto it = metadata_.extra.find("link_fault");  // core/link/link_outage.h writes it
+  const auto it = metadata_.extra.find("link_fault");  // core/session/link_outage.h writes it
   return it != metadata_.extra.end() && !it->second.empty();
 }
 

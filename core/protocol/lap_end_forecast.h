@@ -2,7 +2,7 @@
 // LapEndForecast: when the next lap can close, judged from the rhythm of the packets seen so far,
 // in bytes (how much can still arrive first) and in time (when laps have been closing). The
 // session uses it to stop watching the port mid-lap and read what piled up in one go, yet be
-// awake when the closing zero packet's last byte arrives (see core/link/read_hold.h).
+// awake when the closing zero packet's last byte arrives (see core/session/read_hold.h).
 //
 // The byte forecast errs early: it counts only packets that, at the current angular stride, end
 // well before the previous zero packet's angle comes round again, and then the smallest possible

@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "bench_options.h"
-#include "core/link/session.h"
-#include "core/link/session_io.h"
+#include "core/session/session.h"
+#include "core/session/session_io.h"
 #include "process_probe.h"
 
 using namespace ydscope;

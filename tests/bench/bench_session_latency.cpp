@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "bench_options.h"
-#include "core/link/session.h"
-#include "core/link/session_io.h"
+#include "core/session/session.h"
+#include "core/session/session_io.h"
 #include "process_probe.h"
 #include "core/sim/sim_server.h"
 

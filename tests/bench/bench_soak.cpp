@@ -23,7 +23,7 @@
 
 #include "bench_options.h"
 #include "core/link/serial_link.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/sim/sim_server.h"
 #include "process_probe.h"
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/link/read_hold.h"
+#include "core/session/read_hold.h"
 #include "core/protocol/scan_packet.h"
 
 namespace ydscope {

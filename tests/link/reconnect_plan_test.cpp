@@ -1,5 +1,5 @@
 // ReconnectPlan: the waits between reopen attempts, and what is watched meanwhile.
-#include "core/link/reconnect_plan.h"
+#include "core/session/reconnect_plan.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include <thread>
 
-#include "core/link/record_tap.h"
+#include "core/session/record_tap.h"
 
 namespace ydscope {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/link/recorded_device.h"
+#include "core/session/recorded_device.h"
 #include "core/protocol/model_profile.h"
 #include "core/record/recording_metadata.h"
 

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/replay_link.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
 #include "core/record/recorded_conventions.h"

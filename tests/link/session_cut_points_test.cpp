@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/replay_link.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/protocol_test_support.h"
 #include "support/raw_recording.h"
 #include "support/temp_dir.h"

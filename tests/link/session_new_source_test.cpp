@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/replay_link.h"
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/sim/sim_server.h"
 #include "test_data.h"
 

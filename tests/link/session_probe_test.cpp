@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "core/link/device_probe.h"
+#include "core/session/device_probe.h"
 
 namespace ydscope {
 namespace {

@@ -3,7 +3,7 @@
 // from the moment they start, and closing one leaves the other open and fed.
 #include <gtest/gtest.h>
 
-#include "core/link/record_tap.h"
+#include "core/session/record_tap.h"
 #include "support/session_test_support.h"
 
 namespace ydscope {

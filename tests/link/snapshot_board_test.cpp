@@ -1,5 +1,5 @@
 // The SnapshotBoard: what the I/O thread posts, others read and wait for.
-#include "core/link/snapshot_board.h"
+#include "core/session/snapshot_board.h"
 
 #include <gtest/gtest.h>
 

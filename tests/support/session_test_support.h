@@ -13,7 +13,7 @@
 #include <string>
 #include <thread>
 
-#include "core/link/session.h"
+#include "core/session/session.h"
 #include "core/sim/sim_server.h"
 #include "support/temp_dir.h"
 

@@ -10,7 +10,7 @@
 
 #include "core/analysis/dropout_ring.h"
 #include "core/analysis/zone_watch.h"
-#include "core/link/session_snapshot.h"
+#include "core/snapshot/session_snapshot.h"
 #include "ui/panels/ui_request.h"
 #include "ui/view/scene/colour_legend.h"
 #include "ui/view/status/command_feedback.h"

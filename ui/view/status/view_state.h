@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/link/link_state.h"
+#include "core/snapshot/link_state.h"
 #include "core/protocol/no_lap_reason.h"
 
 namespace ydscope::ui {
