@@ -172,7 +172,7 @@ void serve_until_stopped(SessionShare& share, SourceSet& set, std::optional<doub
 int run_serve(std::span<const std::string> raw) {
   const Arguments args(
       raw,
-      with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose", "zone"})),
+      with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose", "serial", "zone"})),
       with_mcap_flags({"force"}), 0, [] {
         auto repeatable = source_repeatable_options();
         repeatable.insert("zone");

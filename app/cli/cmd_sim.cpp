@@ -1,6 +1,7 @@
 // ydscope-cli sim: a virtual G1/G6/TG lidar on a pseudo-terminal or a TCP port, until SIGINT/SIGTERM.
 #include <signal.h>
 
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <iostream>
@@ -17,13 +18,14 @@
 #include "core/sim/host_compat.h"
 #include "core/sim/scene.h"
 #include "core/sim/sim_server.h"
+#include "core/sim/virtual_lidar.h"
 
 namespace ydscope::cli {
 namespace {
 
 constexpr std::string_view kHelpText =
     R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth] [--pose X,Y,YAW]
-                       [--seed N] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
+                       [--seed N] [--serial S] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
                        [--delivery whole|burst:BYTES:US|random:MAX] [fault options] [--verbose]
 
 Runs a virtual lidar that a host cannot tell from a real one by its bytes: it answers every command
@@ -48,6 +50,9 @@ G6/TG 512000), and can inject faults. It serves until SIGINT or SIGTERM, then ex
                          two places; `ydscope-cli align` should find this pose.
   --seed N               seed of the scene's noise and motion, the serial number and every fault
                          decision (default 1). The same seed gives the same bytes.
+  --serial S             the serial number A5 90 reports: 16 characters 0-9 or A-F (default: made
+                         from --seed). Two virtual lidars with two serials are two units that
+                         ydscope tells apart by serial, whatever port each is on.
   --distance-scale X     encode ranges with X mm per raw unit instead of the manual's (G1 1,
                          G6 0.25, TG 0.5), like vendor firmware variants.
   --conventions C        field (default): emit what a real unit of the model and firmware emits
@@ -141,6 +146,7 @@ int run_sim(std::span<const std::string> raw) {
                         "scene",
                         "pose",
                         "seed",
+                        "serial",
                         "distance-scale",
                         "conventions",
                         "zero-log",
@@ -179,6 +185,12 @@ int run_sim(std::span<const std::string> raw) {
       throw UsageError("--pose needs a scene of walls to stand in: room or booth, not " + options.device.scene);
   }
   options.device.seed = static_cast<std::uint64_t>(args.integer("seed", 0, INT64_MAX).value_or(1));
+  if (const auto serial = args.value("serial")) {
+    options.device.serial = *serial;
+    for (char& c : options.device.serial) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (!valid_sim_serial(options.device.serial))
+      throw UsageError("--serial needs 16 characters 0-9 or A-F, such as 0471655879731342, not '" + *serial + "'");
+  }
   options.device.distance_scale = args.number("distance-scale", 0.001, 1000.0);
   options.device.reading = reading_option(args).value_or(Reading::Field);
   options.device.health_quirk = args.has("health-quirk");

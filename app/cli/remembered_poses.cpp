@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ui/view/scene/source_set.h"
+#include "ui/view/settings/remembered_sources.h"
 #include "ui/view/settings/settings.h"
 
 namespace ydscope::cli {
@@ -18,6 +19,13 @@ std::optional<Pose> remembered_pose(const std::filesystem::path& file, const std
   for (const ui::SourceLook& look : settings.sources)
     if (look.name == name) return look.pose;
   return std::nullopt;
+}
+
+std::string remembered_serial(const std::filesystem::path& file, const std::string& name) {
+  if (file.empty()) return {};
+  for (const ui::SourceLook& look : ui::load_settings(file).sources)
+    if (look.name == name) return look.serial;
+  return {};
 }
 
 bool remember_poses(const std::filesystem::path& file, const std::vector<NamedPose>& poses, std::string& error) {
@@ -39,6 +47,7 @@ bool remember_poses(const std::filesystem::path& file, const std::vector<NamedPo
       it = settings.sources.end() - 1;
     }
     it->pose = named.pose;
+    if (!named.serial.empty()) ui::bind_serial(settings.sources, named.name, named.serial);
   }
   if (!ui::save_settings(file, settings)) {
     error = "could not write " + file.string() + "; check that its folder is writable";

@@ -1,6 +1,7 @@
 #include "app/cli/source_options.h"
 
 #include "app/cli/session_cli.h"
+#include "app/cli/units_by_serial.h"
 #include "core/link/link_address.h"
 
 namespace ydscope::cli {
@@ -10,8 +11,8 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
   if (args.values("port").size() == 1) {
     for (const std::string& option : source_repeatable_options())
       if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
-    if (args.value("name") || args.value("pose"))
-      throw UsageError("--name and --pose place one of several lidars; give them with two or more --port");
+    if (args.value("name") || args.value("pose") || args.value("serial"))
+      throw UsageError("--name, --pose and --serial place one of several lidars; give them with two or more --port");
   }
   std::vector<SourceSpec> specs;
   std::set<std::string> seen_ports;
@@ -26,8 +27,11 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
     spec.info.pose = text.pose.value_or(Pose{});      // no --pose: the common frame's origin
     spec.info.frame_id = text.frame_id.value_or("");  // no --frame-id: its name (alone: laser)
     spec.info.model = spec.config.model;
+    spec.info.serial = text.serial.value_or("");  // bound to this unit, wherever it is plugged in
     specs.push_back(std::move(spec));
   }
+  // Names and poses follow the units' serials before anything is recorded or served under them.
+  bind_units_by_serial(specs);
   return specs;
 }
 

@@ -27,6 +27,13 @@ bool valid_source_name(const std::string& name) {
   return true;
 }
 
+bool valid_unit_serial(const std::string& serial) {
+  if (serial.empty() || serial.size() > 32) return false;
+  for (const char c : serial)
+    if (!std::isalnum(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
 bool valid_frame_id(const std::string& frame) {
   // What tf2 takes as is: no leading '/', no spaces; letters, digits, _ and / between parts.
   if (frame.empty() || frame.size() > 128 || !std::isalpha(static_cast<unsigned char>(frame.front())) ||
@@ -44,7 +51,7 @@ std::string checked_frame_id(const std::string& option, const std::string& frame
   return frame;
 }
 
-std::set<std::string> source_repeatable_options() { return {"port", "name", "pose", "model", "baud", "frame-id"}; }
+std::set<std::string> source_repeatable_options() { return {"port", "name", "pose", "model", "baud", "frame-id", "serial"}; }
 
 std::vector<SourceText> source_texts_from(const Arguments& args) {
   const std::vector<std::string> ports = args.values("port");
@@ -54,6 +61,8 @@ std::vector<SourceText> source_texts_from(const Arguments& args) {
   const auto bauds = per_port(args, "baud", ports.size(), true);
   // One frame for several lidars would put their clouds on top of each other: once per --port.
   const auto frames = per_port(args, "frame-id", ports.size(), false);
+  // A serial names one unit: once per --port, like its name.
+  const auto serials = per_port(args, "serial", ports.size(), false);
   std::vector<SourceText> sources;
   std::set<std::string> seen_names;
   for (std::size_t i = 0; i < ports.size(); ++i) {
@@ -66,6 +75,12 @@ std::vector<SourceText> source_texts_from(const Arguments& args) {
       throw UsageError("--name '" + source.name + "' must be letters, digits and _, starting with a letter (up to 64)");
     if (!seen_names.insert(source.name).second) throw UsageError("--name " + source.name + " is given to two ports");
     if (frames[i]) source.frame_id = checked_frame_id("frame-id", *frames[i]);
+    if (serials[i]) {
+      if (!valid_unit_serial(*serials[i]))
+        throw UsageError("--serial '" + *serials[i] +
+                         "' must be the unit's serial as `ydscope-cli info` prints it: letters and digits (up to 32)");
+      source.serial = *serials[i];
+    }
     if (poses[i]) {
       std::string error;
       const auto pose = parse_pose(*poses[i], error);

@@ -64,7 +64,7 @@ std::vector<SourceChoice> several_sims(const std::string& models) {
 AppOptions parse_app_options(std::span<const std::string> raw) {
   const Arguments args(raw,
                        {"port", "sim", "replay", "model", "baud", "scene", "screenshot", "frames", "sector", "speed",
-                        "share-port", "record", "name", "pose", "zone"},
+                        "share-port", "record", "name", "pose", "serial", "zone"},
                        {"fullscreen", "once", "share", "split", "zone-beep", "check"}, 0, [] {
                          auto repeatable = source_repeatable_options();
                          repeatable.insert("zone");

@@ -45,10 +45,21 @@ VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns
   info_.hardware = config.hardware;
   FaultRandom serial_random(config.seed ^ 0x5E41A1);
   for (auto& digit : info_.serial) digit = static_cast<std::uint8_t>(serial_random.below(10));
+  if (!config.serial.empty()) {
+    if (!valid_sim_serial(config.serial))
+      throw std::invalid_argument("a serial is 16 characters 0-9 or A-F, not '" + config.serial + "'");
+    for (std::size_t i = 0; i < info_.serial.size(); ++i)  // one character per byte, as serial_string reads it
+      info_.serial[i] = static_cast<std::uint8_t>(std::stoi(config.serial.substr(i, 1), nullptr, 16));
+  }
   reset_to_power_on();
 }
 
 VirtualLidar::~VirtualLidar() = default;
+
+bool valid_sim_serial(std::string_view serial) {
+  return serial.size() == DeviceInfo{}.serial.size() &&
+         serial.find_first_not_of("0123456789ABCDEF") == std::string_view::npos;
+}
 
 void VirtualLidar::reset_to_power_on() {
   mode_ = DeviceMode::Idle;

@@ -57,6 +57,9 @@ struct VirtualLidarConfig {
   Model model = Model::G6;
   std::string scene = "demo";  // "room", "demo" or "booth" (scene_names())
   std::uint64_t seed = 1;      // scene noise, moving objects, serial number, fault decisions
+  // The serial A5 90 reports, 16 characters 0-9 and A-F (valid_sim_serial); empty: made from
+  // the seed. Two units told apart by serial (core/frame/unit_identity.h) are two of these.
+  std::string serial;
   // Where it stands in the scene (core/sim/posed_scene.h); empty: at the scene's origin.
   std::optional<Pose> pose;
   FaultConfig faults;
@@ -75,6 +78,9 @@ struct VirtualLidarConfig {
   // Manual: only the manual's answers. YdlidarSdk: also what the vendor SDK asks beyond them.
   HostCompat host_compat = HostCompat::Manual;
 };
+
+// Whether `serial` is what VirtualLidarConfig::serial takes: 16 characters 0-9 or A-F (upper case).
+bool valid_sim_serial(std::string_view serial);
 
 struct DeviceCounters {
   std::uint64_t commands = 0;             // A5 xx pairs received (any code)

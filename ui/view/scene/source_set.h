@@ -23,6 +23,10 @@ struct SourceLook {
   // How to start it again in the next run (app/gui/source_origin.h spells it): "sim G6 demo",
   // "port detect /dev/ttyUSB0". Empty: it cannot be (a recording's replay).
   std::string origin;
+  // The unit's serial (A5 90) it is bound to: a unit of this serial takes this name and pose on
+  // whatever port it comes up (core/frame/unit_identity.h). settings.ini keeps it on a line of
+  // its own, `unit = SERIAL; NAME`. Empty: bound by name and port only, as before serials.
+  std::string serial;
   friend bool operator==(const SourceLook&, const SourceLook&) = default;
 };
 

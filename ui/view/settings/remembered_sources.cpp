@@ -17,6 +17,7 @@ void recall_look(const ViewSettings& settings, const std::vector<SourceLook>& ot
       return other.name != look.name && other.colour == remembered.colour;
     });
     if (!colour_taken) look.colour = remembered.colour;
+    if (look.serial.empty()) look.serial = remembered.serial;
   }
 }
 
@@ -27,8 +28,19 @@ void remember_looks(ViewSettings& settings, const std::vector<SourceLook>& looks
   for (SourceLook look : looks) {
     look.hidden = look.paused = false;  // a new run shows everything live
     std::erase_if(settings.sources, [&](const SourceLook& l) { return l.name == look.name; });
+    const std::string name = look.name, serial = look.serial;
     settings.sources.push_back(std::move(look));
+    if (!serial.empty()) bind_serial(settings.sources, name, serial);
     if (settings.sources.size() > kRememberedLooks) settings.sources.erase(settings.sources.begin());
+  }
+}
+
+void bind_serial(std::vector<SourceLook>& remembered, const std::string& name, const std::string& serial) {
+  for (SourceLook& look : remembered) {
+    if (look.name == name)
+      look.serial = serial;
+    else if (look.serial == serial)
+      look.serial.clear();
   }
 }
 

@@ -57,6 +57,25 @@ std::optional<bool> to_bool(const std::string& v) {
   return std::nullopt;
 }
 
+// Each `unit = SERIAL; NAME` line binds the remembered source of that name to the unit's serial.
+void bind_units(const std::vector<std::string>& units, std::vector<SourceLook>& sources,
+                std::vector<std::string>* notes) {
+  for (const std::string& value : units) {
+    const auto semicolon = value.find(';');
+    const std::string serial = trim(value.substr(0, semicolon));
+    const std::string name = semicolon == std::string::npos ? std::string() : trim(value.substr(semicolon + 1));
+    auto look = std::find_if(sources.begin(), sources.end(), [&](const SourceLook& l) { return l.name == name; });
+    if (serial.empty() || serial.find(' ') != std::string::npos || look == sources.end()) {
+      if (notes)
+        notes->push_back("unit = " + value + " is left out: " +
+                         (look == sources.end() ? "no source = line has the name '" + name + "'"
+                                                : std::string("expected SERIAL; NAME")));
+      continue;
+    }
+    look->serial = serial;
+  }
+}
+
 }  // namespace
 
 std::filesystem::path config_directory() {
@@ -68,6 +87,7 @@ std::filesystem::path config_directory() {
 ViewSettings parse_settings(const std::string& text, std::vector<std::string>* notes) {
   ViewSettings s;
   bool poses_in_rep103 = false;
+  std::vector<std::string> units;  // `unit = SERIAL; NAME`, bound once every source line is read
   std::istringstream in(text);
   std::string line;
   while (std::getline(in, line)) {
@@ -140,6 +160,8 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       }
     } else if (key == kPoseConventionKey) {
       poses_in_rep103 = value == kPoseConvention;
+    } else if (key == "unit") {
+      units.push_back(value);
     } else if (key == "source") {
       std::string error;
       if (auto look = parse_source_line(value, error))
@@ -159,6 +181,7 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       }
     }
   }
+  bind_units(units, s.sources, notes);
   if (!poses_in_rep103 && !s.sources.empty()) {
     for (SourceLook& look : s.sources) look.pose = pose_from_pre_rep103(look.pose);
     if (notes) notes->push_back(std::string(kPreRep103Note));
@@ -196,6 +219,8 @@ std::string format_settings(const ViewSettings& s) {
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";
   for (const std::string& zone : s.zones) out << "zone = " << zone << "\n";
   for (const SourceLook& source : s.sources) out << "source = " << format_source_line(source) << "\n";
+  for (const SourceLook& source : s.sources)
+    if (!source.serial.empty()) out << "unit = " << source.serial << "; " << source.name << "\n";
   if (!s.last_sources.empty()) {
     out << "last_sources = ";
     for (std::size_t i = 0; i < s.last_sources.size(); ++i) out << (i ? ", " : "") << s.last_sources[i];
