@@ -14,16 +14,18 @@
 #include "app/cli/cli_command.h"
 #include "app/cli/remembered_poses.h"
 #include "app/cli/session_cli.h"
+#include "app/cli/units_by_serial.h"
 #include "app/common/arguments.h"
 #include "app/common/lap_bell.h"
 #include "app/common/source_list_options.h"
 #include "core/align/align.h"
+#include "core/frame/unit_identity.h"
 
 namespace ydscope::cli {
 namespace {
 
 constexpr std::string_view kHelpText =
-    R"(usage: ydscope-cli align --port A [--name N] [--pose X,Y,YAW[,flip]] --port B [--name N] [--pose ...] ...
+    R"(usage: ydscope-cli align --port A [--name N] [--serial S] [--pose X,Y,YAW[,flip]] --port B [--name N] ...
                          [--laps N] [--apply] [--model M] [--baud B] [--conventions field|manual]
 
 Finds where each lidar sits relative to the first --port (the reference), from the walls they both
@@ -32,7 +34,9 @@ mirror's ghosts drop out), a correlative search within 45 degrees and 1 m of eac
 finds candidates, and point-to-line ICP with trimmed pairs refines them (docs/align.md).
 
 A lidar's start is its --pose, else the pose remembered for its --name (what --apply writes),
-else the origin. The reference keeps its pose; the others' poses are in its frame.
+else the origin. The reference keeps its pose; the others' poses are in its frame. A name bound to
+a unit's serial (--serial, or by an earlier --apply) follows that unit to whatever port it
+answers on, and a swap is said (docs/identity.md).
 
 For each lidar it prints the pose, the residual (RMS distance of its points to the reference's
 walls, mm) and the overlap (its steady points on those walls), or "not enough overlap" with the
@@ -41,8 +45,8 @@ poses found, to paste after `ydscope-cli record`, `serve` or `ydscope`.
 
   --laps N      laps of each lidar to match (2..200, default 10).
   --apply       keep the poses found under each --name in the app's settings.ini (where `ydscope`
-                looks up a lidar's pose by its name); nothing is written for a lidar that was not
-                aligned.
+                looks up a lidar's pose by its name), each name bound to its unit's serial;
+                nothing is written for a lidar that was not aligned.
 
 Exit status: 0 every lidar aligned; 1 a lidar could not be read; 2 usage error; 3 some lidar was
 not aligned (the others are printed, and applied with --apply).
@@ -60,7 +64,28 @@ struct Lidar {
   Pose start;
   std::unique_ptr<Session> session;
   std::vector<Lap> laps;
+  std::string serial;  // as its unit answered A5 90
 };
+
+// Names and starts follow the units' serials (--serial, or settings.ini's unit lines) to the ports
+// they answered on; the laps stay with their port. Each move or swap is said on stderr.
+void follow_serials(std::vector<Lidar>& lidars) {
+  std::vector<SourceInfo> given;
+  std::vector<UnitSeen> seen;
+  for (Lidar& lidar : lidars) {
+    given.push_back({lidar.text.name, lidar.start, std::nullopt, "", lidar.text.serial.value_or("")});
+    const SessionSnapshot s = lidar.session->snapshot();
+    lidar.serial = s.device ? s.device->serial : std::string();
+    seen.push_back({lidar.text.port, lidar.serial});
+  }
+  recall_serials(given);
+  const UnitIdentity identity = identify_units(given, seen);
+  for (std::size_t i = 0; i < lidars.size(); ++i) {
+    lidars[i].text.name = identity.sources[i].name;
+    lidars[i].start = identity.sources[i].pose;
+  }
+  for (const std::string& note : identity.notes) std::fprintf(stderr, "ydscope-cli align: %s\n", note.c_str());
+}
 
 // Every lidar scanning, then `wanted` laps of each (the first one dropped: it may have begun
 // before the motor settled). Throws std::runtime_error when one stops.
@@ -119,10 +144,11 @@ int run_align(std::span<const std::string> raw) {
   std::fprintf(stderr, "ydscope-cli align: gathering %zu laps of each of %zu lidars\n", laps_wanted, lidars.size());
   gather(lidars, laps_wanted, bell);
   for (Lidar& lidar : lidars) lidar.session->disconnect();
+  follow_serials(lidars);
 
   const Lidar& reference = lidars.front();
   std::printf("%s: reference, pose %s\n", reference.text.name.c_str(), format_pose(reference.start).c_str());
-  std::vector<NamedPose> found{{reference.text.name, reference.start}};
+  std::vector<NamedPose> found{{reference.text.name, reference.start, reference.serial}};
   std::vector<Pose> shown{reference.start};
   bool all_aligned = true;
   for (std::size_t i = 1; i < lidars.size(); ++i) {
@@ -131,7 +157,7 @@ int run_align(std::span<const std::string> raw) {
     if (r.verdict == align::AlignVerdict::Aligned) {
       const Pose pose = align::reported_pose(r.pose);
       std::printf("%s: --pose %s (%s)\n", lidar.text.name.c_str(), format_pose(pose).c_str(), r.message.c_str());
-      found.push_back({lidar.text.name, pose});
+      found.push_back({lidar.text.name, pose, lidar.serial});
       shown.push_back(pose);
     } else {
       std::printf("%s: %s; its pose stays %s\n", lidar.text.name.c_str(), r.message.c_str(),
@@ -143,7 +169,7 @@ int run_align(std::span<const std::string> raw) {
   std::string list;
   for (std::size_t i = 0; i < lidars.size(); ++i)
     list += (i ? " " : "") + std::string("--port ") + lidars[i].text.port + " --name " + lidars[i].text.name +
-            " --pose " + format_pose(shown[i]);
+            (lidars[i].serial.empty() ? "" : " --serial " + lidars[i].serial) + " --pose " + format_pose(shown[i]);
   std::printf("source list: %s\n", list.c_str());
   if (args.has("apply")) {
     std::string error;
