@@ -39,7 +39,7 @@ std::optional<bool> crc_ok(CrcVerdict crc) {
 }
 }  // namespace
 
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s,
+void write_lap(JsonOut& out, const Lap& lap, std::optional<std::uint8_t> health, double t_s,
                std::optional<std::string_view> source) {
   {
     JsonObject line(out.buffer());

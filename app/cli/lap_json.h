@@ -37,11 +37,11 @@ class JsonOut {
   std::string text_;
 };
 
-// {"type":"lap",...} and a newline; g1_info: the model carries CT information (scan_hz, health),
-// `health` what is known of it (the lap's own CT, or a live session's answer), t_s the lap's time
+// {"type":"lap",...} and a newline; `health` what is known of the unit's health (the lap's own CT, or
+// a live session's answer; the printer leaves it out where the model's CT carries none), t_s the lap's time
 // (LapPrinter says which). Commands print laps through LapPrinter (lap_output.h).
 // `source`: the lidar of a several-lidar recording, as a "source" field after "type"; none for one.
-void write_lap(JsonOut& out, const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, double t_s,
+void write_lap(JsonOut& out, const Lap& lap, std::optional<std::uint8_t> health, double t_s,
                std::optional<std::string_view> source = std::nullopt);
 // {"type":"summary","bytes":B,"packets":P,"checksum_errors":E,"zero_packets":Z,"laps":L
 //  [,"cut_points":C][,"start":"ISO 8601 UTC"]} and a newline; start: the wall-clock time of the

@@ -37,20 +37,19 @@ void LapPrinter::print(const Lap& lap) {
 }
 
 void LapPrinter::print(const Lap& lap, std::optional<std::uint8_t> health) {
-  print(lap, g1_info_, health, std::nullopt);
+  print(lap, health, std::nullopt);
 }
 
 void LapPrinter::print_from(std::string_view source, bool g1_info, const Lap& lap) {
-  print(lap, g1_info, g1_info && lap.ct_info_trusted() ? lap.health_bits : std::nullopt, source);
+  print(lap, g1_info && lap.ct_info_trusted() ? lap.health_bits : std::nullopt, source);
 }
 
-void LapPrinter::print(const Lap& lap, bool g1_info, std::optional<std::uint8_t> health,
-                       std::optional<std::string_view> source) {
+void LapPrinter::print(const Lap& lap, std::optional<std::uint8_t> health, std::optional<std::string_view> source) {
   if (format_ == LapFormat::Summary) return;
   if (!origin_ns_) origin_ns_ = lap.first_rx_ns;
   const double t_s = static_cast<double>(lap.last_rx_ns - *origin_ns_) * 1e-9;
   if (format_ == LapFormat::Jsonl) {
-    write_lap(out_, lap, g1_info, health, t_s, source);
+    write_lap(out_, lap, health, t_s, source);
     return;
   }
   if (!header_written_) {

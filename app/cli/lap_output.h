@@ -38,7 +38,7 @@ class LapPrinter {
   bool wants_summary() const { return format_ != LapFormat::Csv; }
 
  private:
-  void print(const Lap& lap, bool g1_info, std::optional<std::uint8_t> health, std::optional<std::string_view> source);
+  void print(const Lap& lap, std::optional<std::uint8_t> health, std::optional<std::string_view> source);
 
   JsonOut& out_;
   LapFormat format_;

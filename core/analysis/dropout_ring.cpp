@@ -111,7 +111,7 @@ std::vector<BlockedSector> DropoutRing::blocked() const {
   std::uint64_t other_samples = 0, other_returns = 0;
   std::array<bool, kDropoutBins> in_sector{};
   for (const auto& [first, count] : runs) {
-    if (count * bin_deg < options_.min_width_deg) continue;
+    if (static_cast<double>(count) * bin_deg < options_.min_width_deg) continue;
     for (std::size_t i = 0; i < count; ++i) in_sector[(first + i) % kDropoutBins] = true;
   }
   for (std::size_t b = 0; b < kDropoutBins; ++b)
@@ -124,13 +124,13 @@ std::vector<BlockedSector> DropoutRing::blocked() const {
     return out;
   const std::int64_t now = laps_.back().t_ns;
   for (const auto& [first, count] : runs) {
-    if (count * bin_deg < options_.min_width_deg) continue;
+    if (static_cast<double>(count) * bin_deg < options_.min_width_deg) continue;
     std::int64_t last_return = first_ns_;
     for (std::size_t i = 0; i < count; ++i)
       last_return = std::max(last_return, last_return_ns_[(first + i) % kDropoutBins]);
     BlockedSector s;
-    s.from_deg = static_cast<int>(std::lround(first * bin_deg)) % 360;
-    s.to_deg = static_cast<int>(std::lround((first + count) * bin_deg)) % 360;
+    s.from_deg = static_cast<int>(std::lround(static_cast<double>(first) * bin_deg)) % 360;
+    s.to_deg = static_cast<int>(std::lround(static_cast<double>(first + count) * bin_deg)) % 360;
     s.for_s = static_cast<double>(now - last_return) * 1e-9;
     out.push_back(s);
   }

@@ -69,9 +69,9 @@ INSTANTIATE_TEST_SUITE_P(Models, BlockedSectorFound,
                                            BlockCase{Model::TG30, "room", 40, 75},
                                            BlockCase{Model::G6, "demo", 200, 230},
                                            BlockCase{Model::G1, "booth", 350, 15}),
-                         [](const auto& info) {
-                           return std::string(profile_for(info.param.model).name) + "_" + info.param.scene + "_" +
-                                  std::to_string(static_cast<int>(info.param.from_deg));
+                         [](const auto& test) {
+                           return std::string(profile_for(test.param.model).name) + "_" + test.param.scene + "_" +
+                                  std::to_string(static_cast<int>(test.param.from_deg));
                          });
 
 struct SceneCase {
@@ -93,14 +93,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(SceneCase{Model::G1, "room"}, SceneCase{Model::G6, "room"}, SceneCase{Model::TG30, "room"},
                       SceneCase{Model::G1, "demo"}, SceneCase{Model::G6, "demo"}, SceneCase{Model::TG30, "demo"},
                       SceneCase{Model::G1, "booth"}, SceneCase{Model::G6, "booth"}, SceneCase{Model::TG30, "booth"}),
-    [](const auto& info) { return std::string(profile_for(info.param.model).name) + "_" + info.param.scene; });
+    [](const auto& test) { return std::string(profile_for(test.param.model).name) + "_" + test.param.scene; });
 
 Lap lap_at(std::int64_t t_ns, float range_mm, float empty_from, float empty_to) {
   Lap lap;
   lap.last_rx_ns = t_ns;
   lap.angles_corrected = false;
   for (int i = 0; i < 720; ++i) {
-    const float a = i * 0.5f;
+    const float a = static_cast<float>(i) * 0.5f;
     const bool in_gap = empty_from <= empty_to ? a >= empty_from && a < empty_to : a >= empty_from || a < empty_to;
     lap.points.push_back({a, in_gap ? 0.0f : range_mm, PointFlag::None});
   }

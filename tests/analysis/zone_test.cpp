@@ -138,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(Zones, BoothVisitors,
                                                        [](double, double, double x, double y) {
                                                          return x >= 500 && x <= 3000 && y >= -1000 && y <= 1000;
                                                        }}),
-                         [](const auto& info) { return info.param.name; });
+                         [](const auto& test) { return test.param.name; });
 
 }  // namespace
 }  // namespace ydscope

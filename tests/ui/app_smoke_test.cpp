@@ -69,7 +69,7 @@ TEST(AppSmoke, AWatchedSectorIsShadedOnTheView) {
   EXPECT_LT(left, 120 * 16 / 20) << "shading where no sector is";
 }
 
-// The unit's 0 and sweep are marked at the lidar (pale blue): a lone lidar is drawn in its laser
+// The unit's 0 and sweep are marked at the lidar (pale steel): a lone lidar is drawn in its laser
 // frame, so the tick to its 0 points straight down, none points up, and the sweep's arrow runs
 // from there round to the lidar's left (clockwise on screen).
 TEST(AppSmoke, TheUnitsZeroAndSweepAreMarkedAtTheLidar) {
@@ -81,8 +81,9 @@ TEST(AppSmoke, TheUnitsZeroAndSweepAreMarkedAtTheLidar) {
   ASSERT_TRUE(image.pixels) << png;
   const int view_left = image.width * 35 / 100;
   const int cx = (view_left + image.width) / 2, cy = image.height / 2;
+  // The marks' pale steel (190, 200, 228): bluish grey, brighter than the grid, greyer than any return.
   const auto mark = [](const unsigned char* p) {
-    return p[0] > 100 && p[0] < 180 && p[1] > 160 && p[1] < 235 && p[2] > 215;
+    return p[0] > 160 && p[0] < 215 && p[1] > 170 && p[1] < 225 && p[2] > 205 && p[2] - p[0] > 15 && p[2] - p[0] < 60;
   };
   // The lidar sits near the view's centre (the sidebar's width varies by a few pixels): search
   // its column, then look round it.

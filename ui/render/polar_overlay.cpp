@@ -76,7 +76,9 @@ void lidar_mark(ImDrawList* draw, const ViewTransform& view, const Pose& pose, I
                           im(o + forward * 13.0f + side * 7.0f), accent);
   // The unit's own 0 and the way it sweeps, so a rotated or mirrored mount shows at a glance.
   const UnitMarks unit = unit_marks(view, pose);
-  const ImU32 pale = IM_COL32(140, 200, 255, 230);  // not white: the lidar's own dot stays the one white disc
+  // Pale steel, not white (the lidar's own dot stays the one white disc) and too grey to share a
+  // hue with any source's colour or the range colours: these are marks on the view, not returns.
+  const ImU32 pale = IM_COL32(190, 200, 228, 235);
   draw->AddLine(im(unit.zero_from), im(unit.zero_to), pale, 2.0f);
   label(draw, unit.zero_label, "0\xC2\xB0", pale, true);
   for (std::size_t i = 1; i < unit.sweep.size(); ++i)
