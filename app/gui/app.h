@@ -14,6 +14,7 @@
 #include "app/gui/booth_window.h"
 #include "app/gui/source_list.h"
 #include "app/gui/source_outputs.h"
+#include "app/gui/unit_follow.h"
 #include "app/gui/settings_store.h"
 #include "app/gui/view_stage.h"
 #include "app/gui/watched_sectors.h"
@@ -110,6 +111,7 @@ class App {
   ui::ViewSettings settings_ = store_.load();
   SourceList sources_;
   std::optional<ui::AlignmentProposal> alignment_;  // Align's answer, until applied or discarded
+  UnitFollow units_;  // names and poses follow the units' serials
   ViewStage stage_;
   float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
   std::string shown_banner_;  // the banner whose age model() holds

@@ -33,6 +33,7 @@ std::vector<SourceChoice> several_ports(const Arguments& args) {
     if (text.baud && *text.baud != "auto") choice.baud = parse_baud_text(*text.baud);
     choice.name = text.name;
     choice.pose = text.pose;
+    choice.serial = text.serial.value_or("");
     choices.push_back(std::move(choice));
   }
   return choices;

@@ -23,6 +23,7 @@ struct SourceChoice {
   std::string name;          // empty: the model's name, or lidar0, lidar1, ...
   std::optional<Pose> pose;  // empty: a spread that keeps the clouds apart
   std::string scene;         // Sim: its scene (empty: --scene's)
+  std::string serial;        // --serial: the unit this name and pose belong to (empty: bound by port)
 };
 
 struct AppOptions {

@@ -62,6 +62,7 @@ std::string App::start_listed() {
     ui::SourceLook look;
     look.name = choice.name.empty() ? choice.model.value_or("lidar") : choice.name;
     look.pose = choice.pose.value_or(spread[i]);
+    look.serial = choice.serial;  // --serial: this name and pose belong to that unit, on any port
     ui::recall_look(settings_, sources_.looks(), look, choice.pose.has_value());
     listed.push_back({std::move(look), connect_request_for(choice, options_.scene)});
   }
@@ -168,6 +169,15 @@ void App::update_model(SourceSlot& slot) {
     slot.model.banner_since_s = slot.model.now_s;
   }
   slot.refresh_model();
+  // Every slot is refreshed once the last one is: the units' serials can be compared now.
+  if (&slot != sources_.slots().back().get()) return;
+  const std::vector<std::string> notes = units_.follow(sources_);
+  if (notes.empty()) return;
+  std::string said;
+  for (const std::string& note : notes) said += (said.empty() ? "" : " ") + note + ".";
+  std::fprintf(stderr, "ydscope: %s\n", said.c_str());
+  model().banner = said;
+  stage_.view().invalidate();
 }
 
 }  // namespace ydscope::gui

@@ -132,6 +132,8 @@ void draw_sources_panel(UiModel& m, PanelEdits& e) {
       ImGui::SameLine();
       if (ImGui::SmallButton("remove")) m.requests.push_back(RemoveSource{i});
     }
+    // The unit this name and pose belong to: they follow it to any port (docs/identity.md).
+    if (!row.look.serial.empty()) ImGui::TextDisabled("unit serial %s", row.look.serial.c_str());
     if (i == m.selected_source) {
       pose_fields(m, e, i, row.look);
       ImGui::TextDisabled("Alt+drag on the view moves it, Ctrl+drag turns it");
