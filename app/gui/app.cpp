@@ -94,15 +94,22 @@ void App::frame() {
   const bool booth_legend = booth_.on() && settings_.colours.mode == ui::ColourMode::Source;
   stage_.lay_out(sources_, settings_,
                  {sidebar, view_w, static_cast<float>(win_h), glfwGetWindowAttrib(window_, GLFW_HOVERED) == GLFW_TRUE,
-                  now_s, shown_phase_, booth_legend});
+                  now_s, shown_phase_, booth_legend, booth_.on()});
   ui::draw_view_header(model(), sidebar, view_w);
   model().booth = booth_.on();
+  refresh_legend();
   if (model().booth) {
-    model().legend = ui::describe_legend(stage_.view().colours_in_use(), settings_.persistence_laps);
+    model().legend = legend_;
+    model().booth_title = settings_.booth_title;
+    model().booth_figure = settings_.booth_figure == ui::BoothFigureKind::None
+                               ? std::string()
+                               : ui::booth_figure_text(settings_.booth_figure, ui::count_visitors(sel().lap, sel().motion));
     // By source, the legend in large type names each lidar and its state (only the app knows them).
     if (booth_legend)
       for (const ui::SourceRow& row : model().sources) model().legend.swatches.push_back({row.look.colour, row.legend});
     ui::draw_booth_overlay(model(), sidebar, view_w, static_cast<float>(win_h));
+  } else if (settings_.colours.mode != ui::ColourMode::Source) {  // by source, the source legend says it
+    ui::draw_window_legend(legend_, sidebar, view_w, static_cast<float>(win_h));
   }
   ImGui::Render();
   // A screenshot reads the frame it is taken in, so that frame is always drawn; so is one the
@@ -115,6 +122,13 @@ void App::frame() {
   drew_ = stage_.render_if_changed(settings_, fb_scale, fb_w, fb_h, screenshot || damaged);
   carry_out_requests(fb_w, fb_h);
   outputs_.follow(sources_);
+}
+
+void App::refresh_legend() {
+  const std::pair<ui::ColourParams, int> now{stage_.view().colours_in_use(), settings_.persistence_laps};
+  if (legend_for_ == now) return;
+  legend_ = ui::describe_legend(now.first, now.second);
+  legend_for_ = now;
 }
 
 void App::handle_keys() {
@@ -156,7 +170,7 @@ void App::after_present() {
   if (sel().pending_latency_rx_ns != 0) {
     const double latency_ms = static_cast<double>(steady_ns() - sel().pending_latency_rx_ns) * 1e-6;
     model().latency_ms.add(latency_ms);
-    model().plots.add_latency_ms(latency_ms);
+    model().plots.add_latency_ms(latency_ms, model().now_s);
     sel().pending_latency_rx_ns = 0;
   }
 }

@@ -114,6 +114,10 @@ class App {
   UnitFollow units_;  // names and poses follow the units' serials
   ViewStage stage_;
   float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
+  // The colour legend, described again only when the colours or the persistence change.
+  void refresh_legend();
+  ui::ColourLegend legend_;
+  std::optional<std::pair<ui::ColourParams, int>> legend_for_;
   std::string shown_banner_;  // the banner whose age model() holds
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame

@@ -94,7 +94,7 @@ void SourceSlot::measure(const Lap& measured) {
     model.scan_rate.add_lap_end(measured.index, measured.last_rx_ns);
   else
     model.scan_rate.reset();
-  model.plots.add_lap({model.scan_rate.hz(), model.snap.scan_hz, measured.points.size(), !measured.whole()});
+  model.plots.add_lap({model.now_s, model.scan_rate.hz(), model.snap.scan_hz, measured.points.size(), !measured.whole()});
   for (ui::SectorWatch& sector : model.sectors) sector.add_lap(measured);
   model.dropouts.add_lap(measured);
   model.zones.set_pose(look.pose);
@@ -103,6 +103,7 @@ void SourceSlot::measure(const Lap& measured) {
     model.ct_health = measured.health_bits;
     model.ct_health_trusted = measured.ct_info_trusted();
     if (measured.ct_info_trusted()) {
+      model.plots.note_health(ui::HealthSource::CtBits, *measured.health_bits, model.now_s);
       model.timeline.observe("CT health", *measured.health_bits, model.now_s,
                              ui::describe_health_bits(Model::G1, *measured.health_bits));
     }

@@ -30,7 +30,7 @@ void SourceSlot::refresh_model() {
   model.timeline.observe("link", static_cast<std::uint32_t>(s.state), model.now_s,
                          std::string(link_state_name(s.state)));
   model.plots.sample_counters(
-      {model.now_s, s.counters.bytes_per_s, s.counters.checksum_errors, s.counters.crc8_failures});
+      {model.now_s, s.counters.bytes_per_s, s.counters.checksum_errors, s.counters.crc8_failures, s.counters.reconnects});
   if (s.health) {
     const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;
     const char* command = s.health->command == Command::HealthStatusBits ? "A5 92" : "A5 91";
@@ -42,6 +42,7 @@ void SourceSlot::refresh_model() {
       std::snprintf(code, sizeof code, ", error 0x%04X", static_cast<unsigned>(s.health->error_code));
       text += code;
     }
+    model.plots.note_health(ui::HealthSource::HealthAnswer, value, model.now_s);
     model.timeline.observe(command, value, model.now_s, text);
   }
   describe_view();

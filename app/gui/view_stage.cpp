@@ -11,6 +11,7 @@
 #include "ui/render/theme.h"
 #include "ui/view/geometry/forward_click.h"
 #include "ui/view/geometry/view_frame.h"
+#include "ui/view/scene/booth_framing.h"
 
 namespace ydscope::gui {
 
@@ -64,8 +65,13 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
     view_->set_zones(std::nullopt);
   view_->set_dropout_ring(ui::DropoutRingShape{several ? selected.look.pose : Pose{}, model.dropouts.no_return_share(),
                                                model.dropouts.blocked()});
+  const float framed = frame.booth && !layered
+                           ? ui::booth_frame_range_mm(selected.motion, view_->transform().viewport_size())
+                           : 0.0f;
   if (layered)
     view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
+  else if (framed > 0.0f)
+    view_->auto_range_to(framed, settings);
   else
     view_->auto_range(selected.history, settings);
   model.cloud = layered ? view_->update_cloud(layers, settings, frame.phase)

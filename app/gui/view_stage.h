@@ -23,6 +23,7 @@ struct ViewFrame {
   double now_s = 0.0;            // the app's steady clock
   float phase = 0.0f;            // how far the fading persistence is between two laps
   bool legend_in_booth = false;  // the booth view names the sources in its own large legend
+  bool booth = false;            // the booth view frames the scene it sees (ui/view/scene/booth_framing.h)
 };
 
 class ViewStage {

@@ -1,11 +1,12 @@
 // The booth view (--fullscreen) on a 1920x1080 screen: the model is written in large type,
 // legible across a stand; motion highlighting is on, so on the virtual booth scene the visitors
 // walking along the aisle ahead are hot and the stand's own walls behind the lidar calm; and a
-// legend in the bottom-right corner names both colours. (The range
+// legend in the bottom-right corner names both colours; the view frames the scene, not its farthest corner. (The range
 // legend's bar and ticks are checked without a display, tests/ui/colour_legend_test.cpp.) The test
 // starts its own Xvfb of that size.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "app_test_support.h"
@@ -61,6 +62,16 @@ TEST(AppBoothView, LargeTypeMotionColoursAndTheirLegendAt1080p) {
   EXPECT_GT(count_pixels(image, corner, hot), 80) << "no 'moving' swatch in the legend";
   EXPECT_GT(count_pixels(image, corner, calm), 80) << "no 'room' swatch in the legend";
   EXPECT_GT(count_pixels(image, corner, is_text_pixel), 300) << "no legend words";
+
+  // The view frames the scene it sees (issue 30): the hall's end walls reach near the screen's left
+  // edge (and right) and the opposite stands' wall near its bottom, rather than the scene sitting
+  // small inside rings sized for its farthest corner. (Left of the legend, under the model's name.)
+  int left = image.width, lowest = 0;
+  for (int y = image.height / 6; y < image.height * 15 / 16; ++y)
+    for (int x = 0; x < image.width * 3 / 4; ++x)
+      if (calm(image.at(x, y))) left = std::min(left, x), lowest = std::max(lowest, y);
+  EXPECT_LT(left, image.width / 6) << "the scene does not reach the screen's left sixth";
+  EXPECT_GT(lowest, image.height * 4 / 5) << "the opposite stands' wall is not near the bottom";
 
   // The model, top left, in type several times the panels' 16 px: its first line of glyphs is
   // taller than 16 px text could be.

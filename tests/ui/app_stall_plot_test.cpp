@@ -1,9 +1,11 @@
-// A stalling lidar under Xvfb, as a person looks at it: the Statistics tab's per-lap plots mark
-// each interruption with a red tick instead of drawing the line straight across it as a slow motor
-// (issue 26).
+// A stalling lidar under Xvfb, as a person looks at it: the Statistics tab's plots mark each
+// interruption with a red tick instead of drawing the line straight across it as a slow motor
+// (issue 26), at its time on the plots' shared time axis (issue 30).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <vector>
 
 #include "app_test_support.h"
 #include "hands_on_app.h"
@@ -13,10 +15,28 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-// The plots panel's interruption tick (ui/panels/plots_panel.cpp: 255, 90, 80), in the sidebar.
+// The plots' stall mark (ui/panels/time_plot.cpp: 255, 90, 80), in the sidebar.
 bool is_tick_red(const unsigned char* p) { return p[0] > 220 && p[1] > 60 && p[1] < 120 && p[2] > 50 && p[2] < 110; }
 
 int red_ticks_in_sidebar(const Image& image) { return count_pixels(image, {0, 60, 420, image.height}, is_tick_red); }
+
+// The x of each column of stall marks that runs down at least four of the plots (each mark's
+// first pixel column): one stall, marked at one time on the time axis the plots share.
+std::vector<int> stall_columns(const Image& image) {
+  std::vector<int> columns;
+  for (int x = 0; x < 420; ++x) {
+    int rows = 0, plots = 0;
+    bool in_mark = false;
+    for (int y = 60; y < image.height; ++y) {
+      const bool red = is_tick_red(image.at(x, y));
+      rows += red ? 1 : 0;
+      if (red && !in_mark) ++plots;
+      in_mark = red;
+    }
+    if (plots >= 4 && rows >= 100 && (columns.empty() || x > columns.back() + 3)) columns.push_back(x);
+  }
+  return columns;
+}
 
 class AppStallPlot : public HandsOnApp {};
 
@@ -49,6 +69,22 @@ TEST_F(AppStallPlot, EachStallIsMarkedOnThePlots) {
   }
   EXPECT_TRUE(marked(red)) << "no red interruption tick on the Statistics tab's plots after the stalls (" << red
                            << " red pixels)";
+  // Issue 30: the plots share one time axis, so a stall is marked at its time on every plot, the
+  // marks one above the other in a column; and the stalls, 2.5 s apart, are as far apart on it.
+  std::vector<int> columns;
+  for (const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(40);
+       std::chrono::steady_clock::now() < deadline && columns.size() < 3;) {
+    if (const Image image = screenshot_of(app, dir, seen)) columns = stall_columns(image);
+  }
+  EXPECT_GE(columns.size(), 3u) << "fewer than three stalls marked in a column across the plots";
+  std::vector<int> gaps;
+  for (std::size_t i = 1; i < columns.size(); ++i) gaps.push_back(columns[i] - columns[i - 1]);
+  std::sort(gaps.begin(), gaps.end());
+  // A stall is stamped with the frame that measured its lap: within a frame (up to 0.2 s on this
+  // loaded machine) of its time, a twelfth of the period either way.
+  for (const int gap : gaps)
+    EXPECT_NEAR(gap, gaps[gaps.size() / 2], std::max(5, gaps[gaps.size() / 2] / 3))
+        << "the stalls, 2.5 s apart, are not evenly spaced in time: marks at x " << testing::PrintToString(columns);
 
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
   stop_process(sim, SIGTERM);

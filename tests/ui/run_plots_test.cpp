@@ -2,6 +2,7 @@
 // from the session's running totals, starting again when those do.
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "ui/view/history/run_plots.h"
@@ -51,32 +52,66 @@ TEST(RunPlots, ErrorsArePerSecondDeltasOfTheTotals) {
 
 TEST(RunPlots, SetAndMeasuredRatesAdvanceTogether) {
   RunPlots p;
-  p.add_lap({std::nullopt, 10.0, 900});  // the meter has no rate yet: no rate point, but the points count
-  p.add_lap({9.8, 10.0, 910});
-  p.add_lap({9.9, std::nullopt, 905});  // set value unknown: the line follows the measured one
+  p.add_lap({0.1, std::nullopt, 10.0, 900});  // the meter has no rate yet: no rate point, but the points count
+  p.add_lap({0.2, 9.8, 10.0, 910});
+  p.add_lap({0.3, 9.9, std::nullopt, 905});  // set value unknown: the line follows the measured one
   EXPECT_EQ(in_order(p.measured_hz()), (std::vector<float>{9.8f, 9.9f}));
   EXPECT_EQ(in_order(p.set_hz()), (std::vector<float>{10.0f, 9.9f}));
+  EXPECT_EQ(in_order(p.rate_times()), (std::vector<float>{0.2f, 0.3f}));
   EXPECT_EQ(in_order(p.points()), (std::vector<float>{900, 910, 905}));
+  EXPECT_EQ(in_order(p.lap_times()), (std::vector<float>{0.1f, 0.2f, 0.3f}));
   p.clear();
   EXPECT_EQ(p.points().size(), 0u);
   EXPECT_EQ(p.measured_hz().size(), 0u);
+  EXPECT_EQ(p.lap_times().size(), 0u);
 }
 
-TEST(RunPlots, AnInterruptionIsMarkedBesideTheLapAndBeforeTheNextRate) {
-  // Issue 26: a stall drew as a slow motor. The cut lap has no rate (the meter starts again), is
-  // marked where its points sit, and the first rate after it carries the mark too.
+std::vector<std::pair<PlotEventKind, double>> events_of(const RunPlots& p) {
+  std::vector<std::pair<PlotEventKind, double>> out;
+  for (std::size_t i = 0; i < p.events().size(); ++i) out.emplace_back(p.events().at(i).kind, p.events().at(i).time_s);
+  return out;
+}
+
+TEST(RunPlots, AStallIsMarkedOnceAtItsTime) {
+  // Issue 26: a stall drew as a slow motor. Issue 30: it is marked on the time axis where it
+  // happened, once for a run of cut laps.
   RunPlots p;
-  p.add_lap({9.9, 10.0, 900});
-  p.add_lap({std::nullopt, 10.0, 310, true});  // cut short by a stall
-  p.add_lap({std::nullopt, 10.0, 905});        // the meter needs laps again
-  p.add_lap({10.0, 10.0, 902});
-  p.add_lap({10.0, 10.0, 901});
-  EXPECT_EQ(in_order(p.per_lap_breaks()), (std::vector<float>{0, 1, 0, 0, 0}));
-  EXPECT_EQ(in_order(p.measured_hz()), (std::vector<float>{9.9f, 10.0f, 10.0f}));
-  EXPECT_EQ(in_order(p.rate_breaks()), (std::vector<float>{0, 1, 0}));
+  p.add_lap({1.0, 9.9, 10.0, 900});
+  p.add_lap({1.1, std::nullopt, 10.0, 310, true});  // cut short by a stall
+  p.add_lap({1.9, std::nullopt, 10.0, 120, true});  // the same stall cuts the next one too
+  p.add_lap({2.0, std::nullopt, 10.0, 905});        // the meter needs laps again
+  p.add_lap({2.1, 10.0, 10.0, 902});
+  p.add_lap({5.0, std::nullopt, 10.0, 200, true});  // another stall
+  EXPECT_EQ(events_of(p), (std::vector<std::pair<PlotEventKind, double>>{{PlotEventKind::Stall, 1.1},
+                                                                          {PlotEventKind::Stall, 5.0}}));
   p.clear();
-  p.add_lap({10.0, 10.0, 900});
-  EXPECT_EQ(in_order(p.rate_breaks()), (std::vector<float>{0})) << "a break outlived clear()";
+  EXPECT_EQ(p.events().size(), 0u) << "an event outlived clear()";
+}
+
+TEST(RunPlots, RateReconnectAndHealthChangesAreMarked) {
+  RunPlots p;
+  p.add_lap({1.0, 10.0, 10.0, 900});
+  p.add_lap({2.0, 10.0, 10.0, 900});   // the same set value: nothing
+  p.add_lap({3.0, 10.0, 8.0, 900});    // set to 8 Hz
+  p.sample_counters({3.5, 1000, 0, 0, 0});
+  p.sample_counters({3.7, 1000, 0, 0, 1});  // the session reconnected
+  p.sample_counters({4.0, 1000, 0, 0, 1});
+  p.note_health(HealthSource::HealthAnswer, 0, 4.2);  // the first answer is no change
+  p.note_health(HealthSource::CtBits, 0x10, 4.3);     // nor the first of another source
+  p.note_health(HealthSource::HealthAnswer, 0, 4.4);
+  p.note_health(HealthSource::HealthAnswer, 2 << 16, 4.6);
+  EXPECT_EQ(events_of(p), (std::vector<std::pair<PlotEventKind, double>>{{PlotEventKind::RateChange, 3.0},
+                                                                          {PlotEventKind::Reconnect, 3.7},
+                                                                          {PlotEventKind::HealthChange, 4.6}}));
+}
+
+TEST(RunPlots, HeldTimeIsTheOldestSampleOfAnySeries) {
+  RunPlots p;
+  EXPECT_EQ(p.held_s(10.0), 0.0);
+  p.add_lap({4.0, std::nullopt, std::nullopt, 900});
+  p.sample_counters({3.0, 0, 0, 0});
+  p.sample_counters({4.5, 0, 0, 0});
+  EXPECT_DOUBLE_EQ(p.held_s(10.0), 6.0);
 }
 
 }  // namespace

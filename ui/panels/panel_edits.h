@@ -5,6 +5,8 @@
 // fills from measurements; the app only prefills a few fields with what runs (the port it
 // started, the last replay file) and clears the sector field once a sector is watched.
 #include "core/sim/faults.h"
+#include "ui/view/history/plot_window.h"
+#include "ui/view/history/run_plots.h"
 
 namespace ydscope::ui {
 
@@ -35,6 +37,9 @@ struct PanelEdits {
   char add_source_address[512] = "";  // the port, tcp:// address or recording to add
   // The Sources panel's "click straight ahead": the view's next left click sets this source's yaw.
   bool forward_click_armed = false;
+  // The Plots panel's time window (zoom, pause) and, while paused, the plots as they were then.
+  PlotWindow plot_window;
+  RunPlots paused_plots;
 };
 
 }  // namespace ydscope::ui

@@ -22,7 +22,7 @@ void draw_check_panel(const UiModel& model);
 void draw_view_panel(UiModel& model, ViewSettings& settings);
 void draw_filter_panel(UiModel& model, ViewSettings& settings);
 void draw_stats_panel(const UiModel& model);
-void draw_plots_panel(const UiModel& model);
+void draw_plots_panel(const UiModel& model, PanelEdits& edits);
 void draw_sectors_panel(UiModel& model, PanelEdits& edits);
 void draw_zones_panel(UiModel& model, ViewSettings& settings);
 // Several sources: the selector over the tabs (which source the panels show and command), and the
@@ -33,6 +33,15 @@ void draw_sources_panel(UiModel& model, PanelEdits& edits);
 void draw_source_legend(const UiModel& model, float view_left, float view_width);
 // One source's legend line at `top_left` (a tile of the split view); `selected` rings its swatch.
 void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected);
+
+// The colour legend in a dark box with its bottom-right corner at `bottom_right`, in type `px`
+// high (the booth view's, or twice the window's font so its words read at the window's size).
+void draw_colour_legend(ImDrawList* draw, ImFont* font, const ColourLegend& legend, float px, ImVec2 bottom_right,
+                        float bar_width);
+
+// The windowed view's legend for the colour mode in use, at the view's bottom-right corner above
+// the status line (the booth view draws the same legend in its large type).
+void draw_window_legend(const ColourLegend& legend, float view_left, float view_width, float view_height);
 
 // The whole left sidebar (full window height): it shows `model` and keeps what the user types or
 // picks in `edits`. Returns its width in pixels so the polar view can use the rest of the window.

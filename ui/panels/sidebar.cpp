@@ -52,7 +52,7 @@ float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
       }
       if (tab("Statistics", SidebarTab::Statistics)) {
         draw_stats_panel(m);
-        draw_plots_panel(m);
+        draw_plots_panel(m, e);
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Sources")) {

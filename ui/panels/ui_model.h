@@ -117,6 +117,8 @@ struct UiModel {
   McapRecordingState ydrec_recording;  // the .ydrec of every lidar shown (app/gui/source_outputs.h)
   bool booth = false;                  // the full-screen view: large type and a legend
   ColourLegend legend;                 // what the colours mean, for the booth view
+  std::string booth_title;             // settings' line for visitors, over the booth view (empty: none)
+  std::string booth_figure;            // the large live figure ("3 visitors"), empty when none chosen
   // Outcomes of device commands for the panel beside the control that issued them. Shared with
   // the session's completion callbacks, which run on the I/O thread.
   std::shared_ptr<CommandFeedback> feedback = std::make_shared<CommandFeedback>();

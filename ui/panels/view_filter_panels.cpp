@@ -8,6 +8,21 @@
 #include "ui/panels/panels.h"
 
 namespace ydscope::ui {
+namespace {
+
+// The booth view's (F11) title line and large figure, folded away: they matter at a stand only.
+void draw_booth_choices(ViewSettings& v) {
+  if (!ImGui::TreeNode("booth view")) return;
+  char title[128];
+  std::snprintf(title, sizeof title, "%s", v.booth_title.c_str());
+  if (ImGui::InputText("title", title, sizeof title)) v.booth_title = title;
+  int figure = static_cast<int>(v.booth_figure);
+  if (ImGui::Combo("figure", &figure, "none\0visitors now\0nearest visitor\0"))
+    v.booth_figure = static_cast<BoothFigureKind>(figure);
+  ImGui::TreePop();
+}
+
+}  // namespace
 
 void draw_view_panel(UiModel& m, ViewSettings& v) {
   if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -78,6 +93,7 @@ void draw_view_panel(UiModel& m, ViewSettings& v) {
   ImGui::SameLine();
   if (ImGui::Button("Shown laps as /scan, /points")) m.requests.push_back(ExportLapMcap{});
   if (!m.status_message.empty()) wrapped_text(m.status_message.c_str());
+  draw_booth_choices(v);
 }
 
 void draw_filter_panel(UiModel& m, ViewSettings& v) {

@@ -18,6 +18,8 @@ class MetricHistory {
   const float* data() const { return values_.data(); }
   std::size_t size() const { return count_; }
   std::size_t offset() const { return count_ < values_.size() ? 0 : next_; }
+  // Sample i, oldest first (i < size()).
+  float at(std::size_t i) const { return values_[(offset() + i) % values_.size()]; }
   std::optional<float> last() const;
   // Over the samples held; 0 when there are none.
   float min() const;

@@ -146,6 +146,13 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
         s.zones.push_back(value);
       else if (notes)
         notes->push_back("zone = " + value + " is left out: " + error);
+    } else if (key == "booth_title") {
+      s.booth_title = value;
+    } else if (key == "booth_figure") {
+      if (const auto kind = booth_figure_from_word(value))
+        s.booth_figure = *kind;
+      else if (notes)
+        notes->push_back("booth_figure = " + value + " is left out: it takes none, visitors or nearest");
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
     } else if (key == "last_sources") {
@@ -214,6 +221,8 @@ std::string format_settings(const ViewSettings& s) {
       << "smooth = " << yes(s.smooth) << "\n"
       << "split_view = " << yes(s.split_view) << "\n"
       << "zone_beep = " << yes(s.zone_beep) << "\n"
+      << "booth_title = " << s.booth_title << "\n"
+      << "booth_figure = " << booth_figure_word(s.booth_figure) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n"
       << kPoseConventionKey << " = " << kPoseConvention << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ui/view/scene/booth_figure.h"
 #include "ui/view/scene/colour_map.h"
 #include "ui/view/scene/point_cloud.h"
 #include "ui/view/scene/source_set.h"
@@ -35,6 +36,9 @@ struct ViewSettings {
   std::vector<std::string> sectors;  // SectorWatch::spec() of each watched sector
   std::vector<std::string> zones;    // zone_spec() of each zone (core/analysis/zone.h)
   bool zone_beep = false;            // ring the bell when a zone's rule is raised
+  // The booth view's own line for visitors (empty: none) and its large live figure.
+  std::string booth_title;
+  BoothFigureKind booth_figure = BoothFigureKind::None;
   // Sources by name: a source of a remembered name gets its pose and colour back.
   std::vector<SourceLook> sources;
   // The last run's lidars, by name, when it had several: a run with no source named starts them
