@@ -1,11 +1,23 @@
 #include "ui/render/gl_program.h"
 
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace ydscope::ui {
 namespace {
+
+// What the driver said about a shader or a program that failed, read with that object's own pair
+// of calls (glGetShaderiv and glGetShaderInfoLog, or the program's).
+template <typename GetParameter, typename GetLog>
+std::string info_log(GLuint id, GetParameter get_parameter, GetLog get_log) {
+  GLint size = 0;
+  get_parameter(id, GL_INFO_LOG_LENGTH, &size);
+  std::vector<char> log(static_cast<std::size_t>(size) + 1, '\0');
+  get_log(id, size, nullptr, log.data());
+  return log.data();
+}
 
 GLuint compile(const char* name, GLenum stage, const char* source) {
   const GLuint shader = glCreateShader(stage);
@@ -14,13 +26,10 @@ GLuint compile(const char* name, GLenum stage, const char* source) {
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint size = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &size);
-    std::vector<char> log(static_cast<std::size_t>(size) + 1, '\0');
-    glGetShaderInfoLog(shader, size, nullptr, log.data());
+    const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
     throw std::runtime_error(std::string("the ") + name + (stage == GL_VERTEX_SHADER ? " vertex" : " fragment") +
-                             " shader does not compile on this OpenGL driver: " + log.data());
+                             " shader does not compile on this OpenGL driver: " + log);
   }
   return shader;
 }
@@ -39,13 +48,10 @@ GlProgram::GlProgram(const char* name, const char* vertex_source, const char* fr
   GLint ok = 0;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint size = 0;
-    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &size);
-    std::vector<char> log(static_cast<std::size_t>(size) + 1, '\0');
-    glGetProgramInfoLog(id_, size, nullptr, log.data());
+    const std::string log = info_log(id_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(id_);
     id_ = 0;
-    throw std::runtime_error(std::string("the ") + name + " shaders do not link: " + log.data());
+    throw std::runtime_error(std::string("the ") + name + " shaders do not link: " + log);
   }
 }
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 
 #include "ui/embedded_shaders.h"
 
@@ -12,30 +14,42 @@ namespace {
 // GL takes attribute offsets as pointers by its API's convention.
 const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(bytes)); }
 
+// One attribute of a vertex: how many components of which type, whether integers read as 0..1,
+// and where in the vertex it sits.
+struct Attribute {
+  GLint components;
+  GLenum type;
+  GLboolean normalized;
+  std::size_t at;
+};
+
+// A vertex array over a buffer of its own, attribute i read as `layout[i]` says; left bound.
+void create_vertex_array(GLuint& vao, GLuint& vbo, GLsizei stride, std::initializer_list<Attribute> layout) {
+  glGenVertexArrays(1, &vao);
+  glGenBuffers(1, &vbo);
+  glBindVertexArray(vao);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  GLuint index = 0;
+  for (const Attribute& attribute : layout) {
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index, attribute.components, attribute.type, attribute.normalized, stride,
+                          offset(attribute.at));
+    ++index;
+  }
+}
+
 }  // namespace
 
 PolarRenderer::PolarRenderer()
     : point_program_("point", shaders::k_points_vert, shaders::k_points_frag),
       line_program_("grid line", shaders::k_lines_vert, shaders::k_lines_frag) {
-  glGenVertexArrays(1, &points_.vao);
-  glGenBuffers(1, &points_.vbo);
-  glBindVertexArray(points_.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, points_.vbo);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(PointVertex), offset(offsetof(PointVertex, x)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PointVertex), offset(offsetof(PointVertex, colour)));
-
-  glGenVertexArrays(1, &lines_.vao);
-  glGenBuffers(1, &lines_.vbo);
-  glBindVertexArray(lines_.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, lines_.vbo);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(LineVertex), offset(offsetof(LineVertex, x)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(LineVertex), offset(offsetof(LineVertex, edge_px)));
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(LineVertex), offset(offsetof(LineVertex, colour)));
+  create_vertex_array(points_.vao, points_.vbo, sizeof(PointVertex),
+                      {{2, GL_FLOAT, GL_FALSE, offsetof(PointVertex, x)},
+                       {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(PointVertex, colour)}});
+  create_vertex_array(lines_.vao, lines_.vbo, sizeof(LineVertex),
+                      {{2, GL_FLOAT, GL_FALSE, offsetof(LineVertex, x)},
+                       {1, GL_FLOAT, GL_FALSE, offsetof(LineVertex, edge_px)},
+                       {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(LineVertex, colour)}});
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
