@@ -29,7 +29,7 @@ namespace ydscope {
 
 struct LapCounters {
   std::uint64_t laps = 0;               // complete laps published
-  std::uint64_t discarded_packets = 0;  // packets before the first zero packet
+  std::uint64_t discarded_packets = 0;  // packets outside a lap: before the first zero packet, after a cut
   std::uint64_t crc_ok = 0;             // G1 laps whose CRC8 matched the LastCRC
   std::uint64_t crc_mismatches = 0;     // G1 laps whose CRC8 did not match
   std::uint64_t crc_unknown = 0;        // G1 laps closed without a LastCRC byte

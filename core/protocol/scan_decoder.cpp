@@ -47,26 +47,13 @@ void ScanDecoder::finish(LapCallback on_lap) {
 DecoderCounters ScanDecoder::counters() const {
   const PacketCounters& p = packets_.counters();
   const LapCounters& l = assembler_.counters();
-  DecoderCounters c;
-  c.bytes = p.bytes;
-  c.packets = p.packets;
-  c.zero_packets = p.zero_packets;
-  c.checksum_errors = p.checksum_errors;
-  c.resync_bytes = p.resync_bytes;
-  c.pending_bytes = p.pending_bytes;
+  DecoderCounters c{p, l};
   // Until the next packet says whether it was G1's LastCRC, that byte is pending, not a resync:
   // the session publishes these counters after every read, and a read can end right after it.
   if (packets_.may_hold_last_crc()) {
     --c.resync_bytes;
     ++c.pending_bytes;
   }
-  c.laps = l.laps;
-  c.discarded_packets = l.discarded_packets;
-  c.crc_ok = l.crc_ok;
-  c.crc_mismatches = l.crc_mismatches;
-  c.crc_unknown = l.crc_unknown;
-  c.overflow_points = l.overflow_points;
-  c.cut_laps = l.cut_laps;
   return c;
 }
 

@@ -15,21 +15,9 @@
 
 namespace ydscope {
 
-struct DecoderCounters {
-  std::uint64_t bytes = 0;              // every byte fed
-  std::uint64_t packets = 0;            // scan packets with a valid checksum
-  std::uint64_t zero_packets = 0;       // of which CT bit 0 was set
-  std::uint64_t checksum_errors = 0;    // packets dropped for a bad checksum
-  std::uint64_t resync_bytes = 0;       // bytes skipped hunting a header (junk, reply headers, failed starts)
-  std::uint64_t pending_bytes = 0;      // bytes of a packet not complete yet (cut off at end of stream)
-  std::uint64_t laps = 0;               // complete laps published
-  std::uint64_t discarded_packets = 0;  // packets outside a lap: before the first zero packet, after a cut
-  std::uint64_t cut_laps = 0;           // laps closed without their zero packet (Lap::end)
-  std::uint64_t crc_ok = 0;             // G1 laps whose CT CRC8 matched
-  std::uint64_t crc_mismatches = 0;     // G1 laps whose CT CRC8 did not match
-  std::uint64_t crc_unknown = 0;        // G1 laps closed without a LastCRC byte
-  std::uint64_t overflow_points = 0;    // points dropped from laps longer than Lap::kMaxPoints
-};
+// The packet decoder's and the lap assembler's counters side by side, as one set. Bytes held in
+// front of a zero packet that may be G1's LastCRC count as pending, not as resync (counters()).
+struct DecoderCounters : PacketCounters, LapCounters {};
 
 using LapCallback = FunctionRef<void(const Lap&)>;
 
