@@ -1,11 +1,13 @@
 #include "core/record/recording_metadata.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <sstream>
+#include <variant>
 
 #include "core/frame/pose_convention.h"
 #include "core/protocol/model_profile.h"
@@ -13,6 +15,14 @@
 
 namespace ydscope {
 namespace {
+
+// One callable of several lambdas, for std::visit.
+template <typename... Ts>
+struct overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <typename... Ts>
+overloaded(Ts...) -> overloaded<Ts...>;
 
 std::string escape(std::string_view value) {
   std::string out;
@@ -66,6 +76,35 @@ void take(std::optional<T>& mine, const std::optional<T>& theirs) {
   if (theirs) mine = theirs;
 }
 
+// The fields a key=value line holds as they are: text, a whole number, or the distance scale (a
+// number within the --distance-scale bounds). One list, in the order encode() writes them, serves
+// encode, parse and merge, so a field is named once; the pose, with its convention line, is apart.
+using TextField = std::optional<std::string> RecordingMetadata::*;
+using WholeField = std::optional<std::uint32_t> RecordingMetadata::*;
+using ScaleField = std::optional<double> RecordingMetadata::*;
+struct PlainField {
+  std::string_view key;
+  std::variant<TextField, WholeField, ScaleField> member;
+};
+const std::array<PlainField, 12> kPlainFields = {{
+    {"model", &RecordingMetadata::model},
+    {"baud", &RecordingMetadata::baud},
+    {"distance_scale", &RecordingMetadata::distance_scale},
+    {"port", &RecordingMetadata::port},
+    {"start_wall_time", &RecordingMetadata::start_wall_time},
+    {"model_code", &RecordingMetadata::model_code},
+    {"firmware", &RecordingMetadata::firmware},
+    {"hardware", &RecordingMetadata::hardware},
+    {"serial", &RecordingMetadata::serial},
+    {"software", &RecordingMetadata::software},
+    {"conventions", &RecordingMetadata::conventions},
+    {"name", &RecordingMetadata::name},
+}};
+
+std::string text_of(const std::string& value) { return value; }
+std::string text_of(std::uint32_t value) { return std::to_string(value); }
+std::string text_of(double value) { return format_double(value); }
+
 }  // namespace
 
 std::string RecordingMetadata::encode() const {
@@ -73,18 +112,12 @@ std::string RecordingMetadata::encode() const {
   const auto line = [&out](std::string_view key, std::string_view value) {
     out.append(key).append("=").append(escape(value)).append("\n");
   };
-  if (model) line("model", *model);
-  if (baud) line("baud", std::to_string(*baud));
-  if (distance_scale) line("distance_scale", format_double(*distance_scale));
-  if (port) line("port", *port);
-  if (start_wall_time) line("start_wall_time", *start_wall_time);
-  if (model_code) line("model_code", std::to_string(*model_code));
-  if (firmware) line("firmware", *firmware);
-  if (hardware) line("hardware", std::to_string(*hardware));
-  if (serial) line("serial", *serial);
-  if (software) line("software", *software);
-  if (conventions) line("conventions", *conventions);
-  if (name) line("name", *name);
+  for (const PlainField& field : kPlainFields)
+    std::visit(
+        [&](auto member) {
+          if (const auto& value = this->*member) line(field.key, text_of(*value));
+        },
+        field.member);
   if (pose) {
     line("pose", format_pose(*pose));
     line(kPoseConventionKey, kPoseConvention);
@@ -111,44 +144,29 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
     }
     const std::string key(line.substr(0, eq));
     const std::string value = unescape(line.substr(eq + 1));
-    const auto number = [&](std::optional<std::uint32_t>& field) {
-      if (const auto parsed = parse_u32(value)) {
-        field = parsed;
-      } else {
-        warn("metadata " + key + "=" + quote_file_text(value) + " is not a whole number; ignored");  // a known key
-      }
-    };
-    if (key == "model") {
-      metadata.model = value;
-    } else if (key == "baud") {
-      number(metadata.baud);
-    } else if (key == "distance_scale") {
-      // The same bounds as --distance-scale: a damaged scale would make every range nonsense.
-      if (const auto parsed = parse_double(value); parsed && distance_scale_in_range(*parsed)) {
-        metadata.distance_scale = parsed;
-      } else {
-        warn("metadata distance_scale=" + quote_file_text(value) + " is not a number from " +
-             format_double(kMinDistanceScale) + " to " + format_double(kMaxDistanceScale) +
-             " mm per count; ignored, the model's own scale is used");
-      }
-    } else if (key == "port") {
-      metadata.port = value;
-    } else if (key == "start_wall_time") {
-      metadata.start_wall_time = value;
-    } else if (key == "model_code") {
-      number(metadata.model_code);
-    } else if (key == "firmware") {
-      metadata.firmware = value;
-    } else if (key == "hardware") {
-      number(metadata.hardware);
-    } else if (key == "serial") {
-      metadata.serial = value;
-    } else if (key == "software") {
-      metadata.software = value;
-    } else if (key == "conventions") {
-      metadata.conventions = value;
-    } else if (key == "name") {
-      metadata.name = value;
+    const auto read = overloaded{
+        [&](TextField member) { metadata.*member = value; },
+        [&](WholeField member) {
+          if (const auto parsed = parse_u32(value)) {
+            metadata.*member = parsed;
+          } else {
+            warn("metadata " + key + "=" + quote_file_text(value) + " is not a whole number; ignored");  // a known key
+          }
+        },
+        [&](ScaleField member) {
+          // The same bounds as --distance-scale: a damaged scale would make every range nonsense.
+          if (const auto parsed = parse_double(value); parsed && distance_scale_in_range(*parsed)) {
+            metadata.*member = parsed;
+          } else {
+            warn("metadata " + key + "=" + quote_file_text(value) + " is not a number from " +
+                 format_double(kMinDistanceScale) + " to " + format_double(kMaxDistanceScale) +
+                 " mm per count; ignored, the model's own scale is used");
+          }
+        }};
+    const auto plain = std::find_if(kPlainFields.begin(), kPlainFields.end(),
+                                    [&key](const PlainField& field) { return field.key == key; });
+    if (plain != kPlainFields.end()) {
+      std::visit(read, plain->member);
     } else if (key == "pose") {
       std::string why;
       if (auto parsed = parse_pose(value, why))
@@ -169,18 +187,8 @@ RecordingMetadata RecordingMetadata::parse(std::string_view text, std::vector<st
 }
 
 void RecordingMetadata::merge(const RecordingMetadata& later) {
-  take(model, later.model);
-  take(baud, later.baud);
-  take(distance_scale, later.distance_scale);
-  take(port, later.port);
-  take(start_wall_time, later.start_wall_time);
-  take(model_code, later.model_code);
-  take(firmware, later.firmware);
-  take(hardware, later.hardware);
-  take(serial, later.serial);
-  take(software, later.software);
-  take(conventions, later.conventions);
-  take(name, later.name);
+  for (const PlainField& field : kPlainFields)
+    std::visit([&](auto member) { take(this->*member, later.*member); }, field.member);
   take(pose, later.pose);
   for (const auto& [key, value] : later.extra) extra[key] = value;
 }
