@@ -4,7 +4,10 @@
 //              pseudo-terminal, so the virtual lidar's own CPU is not counted; with the View tab's
 //              "smooth" on (drawing at the display's rate), then off (a frame per lap).
 // For each case the app runs under the current DISPLAY (use xvfb-run) for a warm-up, then its
-// utime+stime from /proc/<pid>/stat over a measured window gives the share of one core.
+// utime+stime from /proc/<pid>/stat over a measured window gives the share of one core. On Mesa
+// the frames it presented are counted too (the Gallium HUD, kept hidden, writes frames/s once a
+// second to a file), and CPU per frame: on a loaded machine the app gets fewer frames than it asks
+// for, so its share of a core alone under-states a frame's cost.
 //   xvfb-run -a -s "-screen 0 1280x800x24" build/ui/tests/bench/bench_frame_cpu [seconds]
 // Not a Google Benchmark: it measures another process, so it has its own main.
 #include <unistd.h>
@@ -22,6 +25,39 @@
 namespace fs = std::filesystem;
 using namespace ydscope::bench;
 
+namespace {
+
+// Asks Mesa's Gallium HUD of the next app started to write its frames/s, once a second, under `dir`.
+void count_frames_into(const fs::path& dir) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  setenv("GALLIUM_HUD", "fps", 1);
+  setenv("GALLIUM_HUD_VISIBLE", "false", 1);
+  setenv("GALLIUM_HUD_PERIOD", "1", 1);
+  setenv("GALLIUM_HUD_DUMP_DIR", dir.c_str(), 1);
+}
+
+// The mean frames/s after the first `warmup_s` seconds' lines; 0 when the driver wrote none.
+double frames_per_second(const fs::path& dir, int warmup_s) {
+  std::ifstream in(dir / "fps");
+  double value = 0.0, sum = 0.0;
+  int line = 0, counted = 0;
+  while (in >> value)
+    if (++line > warmup_s) {
+      sum += value;
+      ++counted;
+    }
+  return counted > 0 ? sum / counted : 0.0;
+}
+
+void print_frames(double cpu_percent, double fps) {
+  if (fps > 0.0)
+    std::printf("   %5.1f frames/s, %5.1f ms of CPU a frame", fps, 10.0 * cpu_percent / fps);
+  std::printf("\n");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   const int seconds = argc > 1 ? std::atoi(argv[1]) : 20;
   const auto binaries = find_app_binaries("bench_frame_cpu");
@@ -33,6 +69,7 @@ int main(int argc, char** argv) {
   setenv("XDG_CONFIG_HOME", home.c_str(), 1);
 
   std::printf("app CPU, share of one core over %d s after 5 s warm-up\n", seconds);
+  const fs::path frames = home / "hud";
   {
     const pid_t pid = spawn({app, "--port", (home / "no-such-port").string()}, true);
     const double idle = measure_cpu(pid, 5, seconds);
@@ -46,13 +83,15 @@ int main(int argc, char** argv) {
     const std::string link = (home / "g6").string();
     const pid_t sim = spawn({cli, "sim", "--model", "G6", "--scene", "demo", "--pty", link}, true);
     for (int i = 0; i < 50 && !fs::exists(link); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    count_frames_into(frames);
     const pid_t pid = spawn({app, "--port", link, "--model", "G6"}, true);
     const double streaming = measure_cpu(pid, 5, seconds);
     const double sim_cpu = measure_cpu(sim, 0, 2);
     stop(pid);
     stop(sim);
-    std::printf("streaming (G6 demo, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)\n",
+    std::printf("streaming (G6 demo, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)",
                 smooth ? "on" : "off", streaming, sim_cpu);
+    print_frames(streaming, frames_per_second(frames, 5));
   }
   fs::remove_all(home);
   return 0;
