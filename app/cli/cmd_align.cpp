@@ -1,6 +1,7 @@
 // ydscope-cli align: where each of several lidars sits relative to the first (the reference), by
 // matching several laps of each against the reference's walls (core/align). Prints the poses as
 // --pose and as the source list spells them; --apply keeps them where the app looks them up.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -80,6 +81,10 @@ void follow_serials(std::vector<Lidar>& lidars) {
   }
   recall_serials(given);
   const UnitIdentity identity = identify_units(given, seen);
+  // A serial two units share (virtual lidars of one seed) names neither: it is not bound or printed.
+  for (Lidar& lidar : lidars)
+    if (std::count_if(seen.begin(), seen.end(), [&](const UnitSeen& u) { return u.serial == lidar.serial; }) > 1)
+      lidar.serial.clear();
   for (std::size_t i = 0; i < lidars.size(); ++i) {
     lidars[i].text.name = identity.sources[i].name;
     lidars[i].start = identity.sources[i].pose;

@@ -11,8 +11,10 @@ std::vector<SourceSpec> source_specs_from(const Arguments& args, bool scan) {
   if (args.values("port").size() == 1) {
     for (const std::string& option : source_repeatable_options())
       if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
-    if (args.value("name") || args.value("pose") || args.value("serial"))
-      throw UsageError("--name, --pose and --serial place one of several lidars; give them with two or more --port");
+    if (args.value("name") || args.value("pose"))
+      throw UsageError("--name and --pose place one of several lidars; give them with two or more --port");
+    if (args.value("serial"))
+      throw UsageError("--serial binds the name of one of several lidars; give it with two or more --port");
   }
   std::vector<SourceSpec> specs;
   std::set<std::string> seen_ports;

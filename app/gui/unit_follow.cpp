@@ -35,8 +35,10 @@ std::vector<std::string> UnitFollow::follow(SourceList& sources) {
   for (std::size_t i = 0; i < sources.size(); ++i) {
     const auto from = std::find_if(looks.begin(), looks.end(),
                                    [&](const ui::SourceLook& l) { return l.name == identity.sources[i].name; });
-    ui::SourceLook look = from == looks.end() ? looks[i] : *from;  // the whole look goes with the unit
-    if (!serials[i].empty()) look.serial = serials[i];            // remembered at exit: next run binds it
+    ui::SourceLook look = from == looks.end() ? looks[i] : *from;  // the whole look goes with the unit ...
+    look.origin = looks[i].origin;                                 // ... but how to start it is the port's
+    // Remembered at exit, so the next run binds it; a serial two units share binds nothing.
+    if (!serials[i].empty() && std::count(serials.begin(), serials.end(), serials[i]) == 1) look.serial = serials[i];
     sources[i].look = std::move(look);
   }
   return identity.notes;

@@ -131,6 +131,9 @@ TEST_F(IdentityCli, ABadSerialIsOneUsageSentence) {
                                        "--serial 2 --out '" + dir_.file("x.ydrec") + "'");
   EXPECT_EQ(run.status, 2) << run.out << run.err;
   EXPECT_NE(run.err.find("--serial 'x y' must be the unit's serial"), std::string::npos) << run.err;
+  const auto lone = test::run_cli_apart("record --port /dev/null --serial 1 --out '" + dir_.file("x.ydrec") + "'");
+  EXPECT_EQ(lone.status, 2) << lone.err;
+  EXPECT_NE(lone.err.find("--serial binds the name of one of several lidars"), std::string::npos) << lone.err;
   const auto sim = test::run_cli_apart("sim --model G6 --pty '" + dir_.file("l") + "' --serial 12");
   EXPECT_EQ(sim.status, 2) << sim.err;
   EXPECT_NE(sim.err.find("--serial needs 16 characters 0-9 or A-F"), std::string::npos) << sim.err;
