@@ -72,5 +72,42 @@ TEST(RememberedSources, ARememberedNameGetsItsPoseAndColourUnlessGivenOrTaken) {
   EXPECT_EQ(stranger.colour, source_colour(5));
 }
 
+TEST(RememberedSources, AUnitsSerialIsKeptOnAUnitLineAndRecalledWithItsName) {
+  ViewSettings settings;
+  SourceLook front = look_of("front", source_colour(1), {0.3, 0.0, 0.0, false});
+  front.serial = "1111222233334444";
+  remember_looks(settings, {front, look_of("rear", source_colour(2))});
+  const std::string text = format_settings(settings);
+  EXPECT_NE(text.find("\nunit = 1111222233334444; front\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("; rear\n"), std::string::npos) << "rear was never read, so it has no unit line";
+
+  std::vector<std::string> notes;
+  const ViewSettings read = parse_settings(text, &notes);
+  EXPECT_TRUE(notes.empty());
+  SourceLook recalled = look_of("front", source_colour(0));
+  recall_look(read, {}, recalled, false);
+  EXPECT_EQ(recalled.serial, "1111222233334444");
+  EXPECT_EQ(recalled.pose, front.pose);
+
+  // The unit renamed: its serial moves to the new name, and the old name is bound by name again.
+  SourceLook renamed = look_of("left", source_colour(3));
+  renamed.serial = front.serial;
+  ViewSettings later = read;
+  remember_looks(later, {renamed, look_of("rear", source_colour(2))});
+  const std::string again = format_settings(later);
+  EXPECT_NE(again.find("unit = 1111222233334444; left\n"), std::string::npos) << again;
+  EXPECT_EQ(again.find("; front\n"), std::string::npos) << again;
+}
+
+TEST(RememberedSources, AFileWithoutUnitLinesBindsByNameAsBeforeAndAStrayUnitLineIsSaid) {
+  std::vector<std::string> notes;
+  const ViewSettings read = parse_settings(
+      "pose_convention = rep103\nsource = front; 0.3,0,0; #FF8800\nunit = 9999; ghost\n", &notes);
+  ASSERT_EQ(read.sources.size(), 1u);
+  EXPECT_TRUE(read.sources[0].serial.empty());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "unit = 9999; ghost is left out: no source = line has the name 'ghost'");
+}
+
 }  // namespace
 }  // namespace ydscope::ui
