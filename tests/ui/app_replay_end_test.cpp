@@ -26,7 +26,8 @@ Reading read(const Image& image, int view_left) {
   const int cx = (view_left + image.width) / 2;
   const int cy = image.height / 2;
   r.overlay_words = count_pixels(image, {cx - 320, cy - 90, cx + 320, cy + 90}, is_white_pixel);
-  const Rect status_band{view_left, image.height * 3 / 4, image.width, image.height};
+  // The status line's band at the bottom (the colour legend sits just above it, in the corner).
+  const Rect status_band{view_left, image.height - 40, image.width, image.height};
   r.blue_status = count_pixels(image, status_band, info_blue);
   r.orange_status = count_pixels(image, status_band, warning_orange);
   return r;
