@@ -30,6 +30,20 @@ class Scene {
   }
 };
 
+// A scene built of walls and objects on a floor (room, booth): it can be seen from any spot of it,
+// and the lidar's own view is the one from the floor's origin. Each such scene says only what it
+// holds (sample_from) and what it is called.
+class FloorScene : public Scene {
+ public:
+  explicit FloorScene(std::uint64_t seed) : seed_(seed) {}
+  SceneReturn sample(double angle_deg, std::int64_t t_ns) const final { return *sample_from(0, 0, angle_deg, t_ns); }
+  std::optional<SceneReturn> sample_from(double x_mm, double y_mm, double angle_deg,
+                                         std::int64_t t_ns) const override = 0;
+
+ protected:
+  std::uint64_t seed_;
+};
+
 // "room", "demo" or "booth" (case-sensitive); nullptr for any other name.
 std::unique_ptr<Scene> make_scene(std::string_view name, std::uint64_t seed);
 // "room, demo, booth" for messages and --help.

@@ -10,15 +10,11 @@
 
 namespace ydscope {
 
-class BoothScene final : public Scene {
+class BoothScene final : public FloorScene {
  public:
-  explicit BoothScene(std::uint64_t seed) : seed_(seed) {}
-  SceneReturn sample(double angle_deg, std::int64_t t_ns) const override { return *sample_from(0, 0, angle_deg, t_ns); }
+  using FloorScene::FloorScene;
   std::optional<SceneReturn> sample_from(double x_mm, double y_mm, double angle_deg, std::int64_t t_ns) const override;
   std::string_view name() const override { return "booth"; }
-
- private:
-  std::uint64_t seed_;
 };
 
 }  // namespace ydscope
