@@ -76,6 +76,7 @@ TEST(RunPlots, AStallIsMarkedOnceAtItsTime) {
   // Issue 26: a stall drew as a slow motor. Issue 30: it is marked on the time axis where it
   // happened, once for a run of cut laps.
   RunPlots p;
+  p.add_lap({0.9, std::nullopt, 10.0, 400, true});  // the session's first lap starts mid-turn: no stall
   p.add_lap({1.0, 9.9, 10.0, 900});
   p.add_lap({1.1, std::nullopt, 10.0, 310, true});  // cut short by a stall
   p.add_lap({1.9, std::nullopt, 10.0, 120, true});  // the same stall cuts the next one too

@@ -116,7 +116,7 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   f.span = axis.span;
   const AxisRange seen = shown_values(series, axis.span);
   f.values = value_range(seen.lo, seen.hi, spec.from_zero, spec.min_pad);
-  const AxisTicks value_ticks = choose_ticks(f.values.lo, f.values.hi, std::max(2, static_cast<int>(spec.height / (font * 1.4f))));
+  const AxisTicks value_ticks = choose_ticks(f.values.lo, f.values.hi, std::max(2, static_cast<int>(spec.height / (font * 0.95f))));
   // The value labels' column, one width for every plot, so their time axes line up.
   char text[96];
   const float label_w = ImGui::CalcTextSize("0000").x;

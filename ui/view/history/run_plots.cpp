@@ -7,7 +7,8 @@ namespace ydscope::ui {
 
 void RunPlots::add_lap(const LapSample& lap) {
   const auto t = static_cast<float>(lap.time_s);
-  if (lap.interrupted && !last_lap_interrupted_) events_.add(PlotEventKind::Stall, lap.time_s);
+  // The first lap of a session starts mid-turn: cut short, but no stall.
+  if (lap.interrupted && !last_lap_interrupted_ && lap_times_.size() > 0) events_.add(PlotEventKind::Stall, lap.time_s);
   last_lap_interrupted_ = lap.interrupted;
   if (lap.set_hz) {
     if (last_set_hz_ && std::abs(*lap.set_hz - *last_set_hz_) > 1e-3) events_.add(PlotEventKind::RateChange, lap.time_s);
