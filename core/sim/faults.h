@@ -47,6 +47,7 @@ struct FaultCounters {
   std::uint64_t stalled_packets = 0;  // scan packets discarded by a stall
   std::uint64_t stalled_bytes = 0;    // all bytes (packets and replies) discarded by a stall
   std::uint64_t junk_bytes = 0;
+  std::uint64_t blocked_samples = 0;  // samples the blocked sector sent with no return
 };
 
 // A small deterministic generator (splitmix64): the same seed gives the same faults on every run.

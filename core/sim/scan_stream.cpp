@@ -138,6 +138,7 @@ StreamPacket ScanStream::next(std::vector<std::uint8_t>& bytes, std::vector<LapP
     // A blocked direction is decided by where the window points (the first-level angle): the
     // obstruction sits on the unit, not out in the scene.
     const bool obstructed = blocked(level1);
+    blocked_samples_ += obstructed;
     const auto residual = [&](double theta) {
       sampled_at = normalize_degrees(theta);
       const SceneReturn ret = obstructed ? SceneReturn{} : scene_->sample(sampled_at, t);

@@ -60,6 +60,8 @@ class ScanStream {
   StreamPacket next(std::vector<std::uint8_t>& bytes, std::vector<LapPoint>* truth,
                     std::vector<float>* scene_angles = nullptr);
   std::uint32_t samples_per_lap() const { return samples_per_lap_; }
+  // Samples the blocked sector has emptied so far (FaultCounters::blocked_samples).
+  std::uint64_t blocked_samples() const { return blocked_samples_; }
 
  private:
   std::int64_t sample_time_ns(std::uint32_t sample) const;
@@ -86,6 +88,7 @@ class ScanStream {
   double motor_wobble_hz_ = 0.0;
   double blocked_from_deg_ = 0.0;
   double blocked_width_deg_ = 0.0;
+  std::uint64_t blocked_samples_ = 0;
   double ranging_hz_ = 9000.0;
   std::int64_t scan_start_ns_ = 0;
   std::uint32_t samples_per_lap_ = 1;

@@ -56,6 +56,12 @@ VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns
 
 VirtualLidar::~VirtualLidar() = default;
 
+FaultCounters VirtualLidar::fault_counters() const {
+  FaultCounters counters = line_.counters();  // what the line did; the window's block is the stream's
+  counters.blocked_samples = stream_->blocked_samples();
+  return counters;
+}
+
 bool valid_sim_serial(std::string_view serial) {
   return serial.size() == DeviceInfo{}.serial.size() &&
          serial.find_first_not_of("0123456789ABCDEF") == std::string_view::npos;

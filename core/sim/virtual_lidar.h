@@ -160,7 +160,7 @@ class VirtualLidar {
   const UnitConventions& conventions() const { return *conventions_; }
   const Scene& scene() const { return *scene_; }
   const DeviceCounters& counters() const { return counters_; }
-  const FaultCounters& fault_counters() const { return line_.counters(); }
+  FaultCounters fault_counters() const;
 
   // Human-readable events (commands received, mode changes) for --verbose.
   void set_log(LogFn log) { log_ = std::move(log); }

@@ -327,6 +327,28 @@ TEST(RoundTripFaults, AStallSendsNothingForItsDurationAndLosesItsPackets) {
   EXPECT_EQ(lidar.fault_counters().stalled_packets, truth_stalled);
 }
 
+// Every sample the blocked sector empties is counted, as every other injected fault is: exactly the
+// empty samples whose direction lies in the sector, about its share of all samples.
+TEST(RoundTripFaults, ABlockedSectorIsCountedSampleBySample) {
+  VirtualLidarConfig config;
+  config.model = Model::G6;
+  config.scene = "room";
+  config.faults.blocked_from_deg = 40.0;
+  config.faults.blocked_width_deg = 35.0;
+  const ScanRun run = scan(config, 2000 * kMs);
+  std::uint64_t samples = 0, empty_in_sector = 0;
+  for (const TruthPacket& packet : run.packets)
+    for (const LapPoint& point : packet.points) {
+      ++samples;
+      empty_in_sector += point.range_mm == 0.0f && std::fmod(point.angle_deg - 40.0 + 360.0, 360.0) < 35.0;
+    }
+  EXPECT_EQ(run.faults.blocked_samples, empty_in_sector);
+  EXPECT_NEAR(static_cast<double>(run.faults.blocked_samples) / static_cast<double>(samples), 35.0 / 360.0, 0.01);
+
+  config.faults.blocked_width_deg = 0.0;
+  EXPECT_EQ(scan(config, 500 * kMs).faults.blocked_samples, 0u);
+}
+
 TEST(RoundTripFaults, PeriodicStallsRecur) {
   VirtualLidarConfig c = faulty(Model::G6);
   c.faults.stall_ms = 100;
