@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <malloc.h>
 #include <string>
 #include <vector>
 
@@ -211,6 +212,13 @@ int run(const ydscope::gui::AppOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A software renderer (llvmpipe) allocates and frees megabytes at every frame. By default glibc
+  // hands such blocks back to the kernel (mmap, or trimming the heap's top) and takes them again
+  // the next frame, page by page; on a virtual machine those page faults were a fifth of the
+  // app's CPU with smooth drawing (docs/performance.md). Keep them in the heap instead: the
+  // resident memory stays at the frame's peak rather than dropping between frames.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   const std::vector<std::string> args(argv + 1, argv + argc);
   // Help and version win over everything else on the line, as in ydscope-cli.
   if (ydscope::asks_for_help(args)) {
