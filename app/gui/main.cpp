@@ -214,7 +214,7 @@ int run(const ydscope::gui::AppOptions& options) {
 int main(int argc, char** argv) {
   // A software renderer (llvmpipe) allocates and frees megabytes at every frame. By default glibc
   // hands such blocks back to the kernel (mmap, or trimming the heap's top) and takes them again
-  // the next frame, page by page; on a virtual machine those page faults were a fifth of the
+  // the next frame, page by page; on a virtual machine those page faults were about a tenth of the
   // app's CPU with smooth drawing (docs/performance.md). Keep them in the heap instead: the
   // resident memory stays at the frame's peak rather than dropping between frames.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
