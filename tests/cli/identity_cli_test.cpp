@@ -4,6 +4,7 @@
 // one sentence. Bindings come from --serial or from settings.ini's `unit = SERIAL; NAME` lines.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -79,7 +80,10 @@ TEST_F(IdentityCli, TwoUnitsSwappedAcrossPortsKeepTheirNamesAndPosesAndTheSwapIs
   // The cables swapped: front's unit now answers on b, rear's on a.
   const auto rear = unit_on(a, kRearSerial);
   const auto front = unit_on(b, kFrontSerial);
-  const auto run = test::run_program(YDSCOPE_CLI_PATH, command + "'" + dir_.file("swapped.ydrec") + "'", options);
+  const std::string mcap = dir_.file("swapped.mcap");
+  const auto run = test::run_program(
+      YDSCOPE_CLI_PATH,
+      command + "'" + dir_.file("swapped.ydrec") + "' --mcap '" + mcap + "' --compression none", options);
   ASSERT_EQ(run.status, 0) << run.out << run.err;
   EXPECT_NE(run.err.find("ydscope-cli: rear (serial " + std::string(kRearSerial) + ") and front (serial " +
                          kFrontSerial + ") have swapped ports: rear is on " + a + ", front on " + b +
@@ -96,6 +100,11 @@ TEST_F(IdentityCli, TwoUnitsSwappedAcrossPortsKeepTheirNamesAndPosesAndTheSwapIs
   EXPECT_EQ(sources[1].name, "front");
   EXPECT_EQ(sources[1].pose, kFrontPose);
   EXPECT_EQ(sources[1].serial, kFrontSerial);
+  // The MCAP file's /diagnostics carry each unit's serial (uncompressed, so its text is there).
+  std::ifstream mcap_file(mcap, std::ios::binary);
+  const std::string mcap_bytes(std::istreambuf_iterator<char>(mcap_file), {});
+  EXPECT_NE(mcap_bytes.find(kFrontSerial), std::string::npos);
+  EXPECT_NE(mcap_bytes.find(kRearSerial), std::string::npos);
   // The summary names each lidar by the name that followed it.
   EXPECT_NE(run.out.find("  rear: G6 on " + a), std::string::npos) << run.out;
 }
