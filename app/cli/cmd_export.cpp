@@ -103,11 +103,12 @@ int run_export(std::span<const std::string> raw) {
     throw UsageError("--frame-id names one lidar's frame, but " + path + " holds " +
                      std::to_string(plan.sources.size()) +
                      " lidars, each written in a frame named after it; leave --frame-id out");
-  std::vector<McapSource> sources;
-  if (plan.several_sources())
-    for (std::size_t id = 0; id < plan.sources.size(); ++id)
-      sources.push_back({plan.sources[id].name, plan.summary.sources[id].metadata.pose.value_or(Pose{}),
-                         plan.sources[id].profile->model});
+  // The recording's lidars as a set, as record and serve take theirs: one is a set of one, whose
+  // topics keep their plain names (named_apart).
+  std::vector<SourceInfo> sources;
+  for (std::size_t id = 0; id < plan.sources.size(); ++id)
+    sources.push_back({plan.sources[id].name, plan.summary.sources[id].metadata.pose.value_or(Pose{}),
+                       plan.sources[id].profile->model});
   auto exporter = McapRecordingExport::create(out, options, error, std::move(sources));
   if (!exporter) throw std::runtime_error(error);
   const auto laps = [&] {

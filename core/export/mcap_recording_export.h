@@ -41,9 +41,6 @@ struct McapExportOptions {
 
 inline constexpr const char* kMcapRecordingMetadataName = "ydscope.recording";
 
-// The export's old name for a source, kept only while a test still spells it.
-using McapSource = SourceInfo;
-
 // Source `id`'s encoder options: its model when known (else base's, else the recording's), and
 // when several are named apart, its frame as the frame id (one lidar keeps base's frame).
 RosExportOptions ros_options_of(const RosExportOptions& base, std::span<const SourceInfo> sources, std::size_t id);

@@ -130,7 +130,7 @@ TEST(McapRecordingExport, WithoutLinkBytesNoLinkByteChannelIsAdvertised) {
     McapExportOptions options;
     options.ros.link_bytes = false;
     McapMemorySink sink;
-    std::vector<McapSource> sources;
+    std::vector<SourceInfo> sources;
     if (several) sources = {{"front", {}, Model::G6}, {"back", {}, Model::G6}};
     McapRecordingExport exporter(sink, options, sources);
     RecordingMetadata metadata;
