@@ -1,6 +1,7 @@
 // App, the source list: several lidars at once, each with its own session, panels and look, one
 // selected for the panels; started from the command line, added, removed and posed while running,
 // and drawn together in the common frame.
+#include <algorithm>
 #include <cstdio>
 
 #include "app/gui/app.h"
@@ -171,11 +172,16 @@ void App::update_model(SourceSlot& slot) {
   slot.refresh_model();
   // Every slot is refreshed once the last one is: the units' serials can be compared now.
   if (&slot != sources_.slots().back().get()) return;
+  // With no unit bound by serial, the only thing to say is that some units share one (two virtual
+  // lidars of one seed): worth a line on stderr, not a banner over the view of lidars kept by port.
+  const bool some_bound = std::any_of(sources_.slots().begin(), sources_.slots().end(),
+                                      [](const auto& s) { return !s->look.serial.empty(); });
   const std::vector<std::string> notes = units_.follow(sources_);
   if (notes.empty()) return;
   std::string said;
   for (const std::string& note : notes) said += (said.empty() ? "" : " ") + note + ".";
   std::fprintf(stderr, "ydscope: %s\n", said.c_str());
+  if (!some_bound) return;
   model().banner = said;
   stage_.view().invalidate();
 }

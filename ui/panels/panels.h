@@ -31,6 +31,9 @@ void draw_source_selector(UiModel& model);
 void draw_sources_panel(UiModel& model, PanelEdits& edits);
 // Several sources: a line per source over the view, its colour and its state in words.
 void draw_source_legend(const UiModel& model, float view_left, float view_width);
+// Where that legend's box ends, from the view's top (0 with one source): what else sits at the
+// top of the view goes below it, so no source's state is hidden.
+float source_legend_bottom(const UiModel& model);
 // One source's legend line at `top_left` (a tile of the split view); `selected` rings its swatch.
 void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected);
 

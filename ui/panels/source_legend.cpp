@@ -47,6 +47,11 @@ void draw_source_legend(const UiModel& m, float view_left, float view_width) {
                 i == m.selected_source);
 }
 
+float source_legend_bottom(const UiModel& m) {
+  if (m.sources.size() < 2) return 0.0f;
+  return legend_pad() * 2.0f + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(m.sources.size());
+}
+
 void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected) {
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const float pad = legend_pad();

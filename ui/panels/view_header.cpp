@@ -108,7 +108,8 @@ void draw_view_header(const UiModel& m, float view_left, float view_width) {
   if (!m.banner.empty() && banner_alpha > 0.0f) {
     const ImVec2 size = ImGui::CalcTextSize(m.banner.c_str(), nullptr, false, wrap - 28.0f);
     const float x = view_left + std::max(16.0f, (view_width - size.x) * 0.5f);
-    const float by = 44.0f + (m.recording() || m.share.on || !m.alerts.empty() ? line : 0.0f);
+    const float by = std::max(44.0f + (m.recording() || m.share.on || !m.alerts.empty() ? line : 0.0f),
+                              source_legend_bottom(m) + 12.0f);
     const auto alpha = [banner_alpha](int a) { return static_cast<ImU32>(static_cast<float>(a) * banner_alpha); };
     draw->AddRectFilled({x - 14.0f, by - 6.0f}, {x + size.x + 14.0f, by + size.y + 6.0f},
                         IM_COL32(22, 45, 80, alpha(215)), 8.0f);
