@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "core/link/port_discovery.h"
+#include "support/session_test_support.h"
 #include "support/temp_dir.h"
 
 namespace ydscope {
@@ -209,6 +210,31 @@ TEST_F(FakeSystem, CliListsPortsAsTableAndJson) {
 
   EXPECT_EQ(run_cli("ports --format json --dev-root " + (root_ / "none").string()).first, "[]\n");
   EXPECT_EQ(run_cli("ports --format xml").second, 2);
+}
+
+// --ask: the lidar on each likely port says its own serial (A5 90), beside the USB bridge's; a
+// likely port with no lidar behind it says so; without --ask no port is opened (the JSON above).
+TEST_F(FakeSystem, AskAddsTheSerialEachLidarAnswersWith) {
+  test::SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.serial = "0123456789ABCDEF"; });
+  fs::create_symlink(sim.port(), dev() / "ttyUSB0");
+  class_tty("ttyUSB0", usb_device("1-1", "10c4", "ea60", "Silicon Labs", "CP2102", "0001") / "1-1:1.0" / "ttyUSB0",
+            "cp210x");
+  node("ttyUSB1");  // a CH340 with nothing that answers behind it
+  class_tty("ttyUSB1", usb_device("1-3", "1a86", "7523", "", "USB Serial", "") / "1-3:1.0" / "ttyUSB1", "ch341-uart");
+  const std::string roots = "--dev-root " + dev().string() + " --sys-root " + sys().string();
+
+  const auto [table, table_status] = run_cli("ports --ask " + roots);
+  EXPECT_EQ(table_status, 0);
+  EXPECT_NE(table.find("serial 0001, driver cp210x; lidar serial 0123456789ABCDEF"), std::string::npos) << table;
+  EXPECT_NE(table.find("driver ch341-uart; no lidar answered"), std::string::npos) << table;
+
+  const auto [json, json_status] = run_cli("ports --ask --format json " + roots);
+  EXPECT_EQ(json_status, 0);
+  EXPECT_NE(json.find(R"("serial":"0001","driver":"cp210x","known_lidar_bridge":true,"on_board_uart":false,)"
+                      R"("unit_serial":"0123456789ABCDEF"})"),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find(R"("on_board_uart":false,"unit_serial":null})"), std::string::npos) << json;
 }
 
 TEST_F(FakeSystem, CliJsonIsValidUtf8WhateverTheDeviceSays) {
