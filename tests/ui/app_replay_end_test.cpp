@@ -43,16 +43,21 @@ TEST(AppReplayEnd, ReplayOnceStopsAtTheEndAndSaysSo) {
 
   // The view sits right of the panels, which take at most 40 % of the window.
   const auto ended = [](const Reading& r) { return r.overlay_words > 1500 && r.blue_status > 30; };
+  // Before its first lap the view says "No data ... waiting" in the same large overlay and the same
+  // information blue, so the end only counts once the replay has been seen playing (no overlay).
   Reading last;
   int view_left = 0;
+  bool played = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < deadline) {
     const Image image = screenshot_of(app, dir, seen);
     if (!image) continue;
     view_left = image.width * 2 / 5;
     last = read(image, view_left);
-    if (ended(last)) break;
+    if (last.overlay_words < 500) played = true;
+    if (played && ended(last)) break;
   }
+  EXPECT_TRUE(played) << "the replay's laps were never seen without an overlay";
   EXPECT_GT(last.overlay_words, 1500) << "no large overlay after the recording's end";
   EXPECT_GT(last.blue_status, 30) << "the status line does not say the replay ended (information blue)";
   EXPECT_LT(last.orange_status, 10) << "the status line speaks of a link in trouble";
