@@ -31,7 +31,9 @@ TEST(RosTopicChannels, WithoutLinkBytesNoLinkByteTopicIsAdvertised) {
   EXPECT_FALSE(has(names, "/ydscope/host_bytes"));
   ASSERT_TRUE(has(names, "/scan"));
   for (const foxglove::ServerChannel& channel : channels) {
-    if (channel.topic == "/scan") EXPECT_EQ(channel.id, foxglove::channel_id(RosTopic::Scan));
+    if (channel.topic == "/scan") {
+      EXPECT_EQ(channel.id, foxglove::channel_id(RosTopic::Scan));
+    }
   }
 }
 

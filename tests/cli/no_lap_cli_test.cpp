@@ -29,7 +29,7 @@ TEST(NoLapCli, PacketsTooShortForALapAreSaidToBeSo) {
   const std::string too_short = "no complete lap: its 3 G6 scan packets (" + std::to_string(short_g6.size()) +
                                 " bytes) are too short for a lap, which runs from a zero packet to the next zero "
                                 "packet; they hold 1 zero packet\n";
-  for (const std::string command :
+  for (const std::string& command :
        {"decode --model G6 '" + raw + "'", "decode '" + recorded + "'", "replay --speed 0 '" + recorded + "'"}) {
     const auto run = test::run_cli_apart(command + " --format summary");
     EXPECT_EQ(run.status, 0) << command << ": " << run.err;

@@ -41,7 +41,7 @@ TEST_F(ReplayGapsCli, AGapIsSaidAndSkippedOrWaitedOut) {
   const std::string said =
       "ydscope-cli replay: the recording has a gap of 59.0 s at 2.0 s without a byte from the "
       "lidar; ";
-  for (const std::uint16_t sources : {1, 2}) {
+  for (const std::uint16_t sources : {std::uint16_t{1}, std::uint16_t{2}}) {
     const std::string file = write("gap" + std::to_string(sources) + ".ydrec", sources);
     // Its bytes are no scan packets: one lidar's replay says so after the gap (no_lap_cli_test.cpp).
     const std::string no_lap =
