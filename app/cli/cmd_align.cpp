@@ -123,7 +123,8 @@ void gather(std::vector<Lidar>& lidars, std::size_t wanted, LapBell& bell) {
 }
 
 int run_align(std::span<const std::string> raw) {
-  const Arguments args(raw, session_value_options({"laps", "name", "pose", "serial"}), {"apply"}, 0, source_repeatable_options());
+  const Arguments args(raw, session_value_options({"laps", "name", "pose", "serial"}), {"apply"}, 0,
+                       source_repeatable_options());
   const auto laps_wanted = static_cast<std::size_t>(args.integer("laps", 2, 200).value_or(10));
   std::vector<SourceText> texts = source_texts_from(args);
   if (texts.size() < 2) throw UsageError("align needs two or more lidars: give --port once for each");

@@ -96,8 +96,9 @@ std::atomic<bool> interrupted{false};
 extern "C" void record_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
 
 int run_record(std::span<const std::string> raw) {
-  const Arguments args(raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap", "name", "pose", "serial"})),
-                       with_mcap_flags({"force", "no-reconnect"}), 0, source_repeatable_options());
+  const Arguments args(
+      raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap", "name", "pose", "serial"})),
+      with_mcap_flags({"force", "no-reconnect"}), 0, source_repeatable_options());
   end_on_signals(record_on_signal);
   return record_sources(args, interrupted);
 }

@@ -170,14 +170,14 @@ void serve_until_stopped(SessionShare& share, SourceSet& set, std::optional<doub
 }
 
 int run_serve(std::span<const std::string> raw) {
-  const Arguments args(
-      raw,
-      with_mcap_value_options(session_value_options({"listen", "mcap", "queue", "seconds", "name", "pose", "serial", "zone"})),
-      with_mcap_flags({"force"}), 0, [] {
-        auto repeatable = source_repeatable_options();
-        repeatable.insert("zone");
-        return repeatable;
-      }());
+  const Arguments args(raw,
+                       with_mcap_value_options(session_value_options(
+                           {"listen", "mcap", "queue", "seconds", "name", "pose", "serial", "zone"})),
+                       with_mcap_flags({"force"}), 0, [] {
+                         auto repeatable = source_repeatable_options();
+                         repeatable.insert("zone");
+                         return repeatable;
+                       }());
   ShareOptions options;
   options.server = listen_options(args);
   const auto seconds = args.number("seconds", 0.001, 1e9);

@@ -36,9 +36,7 @@ void LapPrinter::print(const Lap& lap) {
   print(lap, g1_info_ && lap.ct_info_trusted() ? lap.health_bits : std::nullopt);
 }
 
-void LapPrinter::print(const Lap& lap, std::optional<std::uint8_t> health) {
-  print(lap, health, std::nullopt);
-}
+void LapPrinter::print(const Lap& lap, std::optional<std::uint8_t> health) { print(lap, health, std::nullopt); }
 
 void LapPrinter::print_from(std::string_view source, bool g1_info, const Lap& lap) {
   print(lap, g1_info && lap.ct_info_trusted() ? lap.health_bits : std::nullopt, source);

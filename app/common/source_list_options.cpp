@@ -51,7 +51,9 @@ std::string checked_frame_id(const std::string& option, const std::string& frame
   return frame;
 }
 
-std::set<std::string> source_repeatable_options() { return {"port", "name", "pose", "model", "baud", "frame-id", "serial"}; }
+std::set<std::string> source_repeatable_options() {
+  return {"port", "name", "pose", "model", "baud", "frame-id", "serial"};
+}
 
 std::vector<SourceText> source_texts_from(const Arguments& args) {
   const std::vector<std::string> ports = args.values("port");

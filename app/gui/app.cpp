@@ -101,9 +101,10 @@ void App::frame() {
   if (model().booth) {
     model().legend = legend_;
     model().booth_title = settings_.booth_title;
-    model().booth_figure = settings_.booth_figure == ui::BoothFigureKind::None
-                               ? std::string()
-                               : ui::booth_figure_text(settings_.booth_figure, ui::count_visitors(sel().lap, sel().motion));
+    model().booth_figure =
+        settings_.booth_figure == ui::BoothFigureKind::None
+            ? std::string()
+            : ui::booth_figure_text(settings_.booth_figure, ui::count_visitors(sel().lap, sel().motion));
     // By source, the legend in large type names each lidar and its state (only the app knows them).
     if (booth_legend)
       for (const ui::SourceRow& row : model().sources) model().legend.swatches.push_back({row.look.colour, row.legend});

@@ -111,7 +111,7 @@ class App {
   ui::ViewSettings settings_ = store_.load();
   SourceList sources_;
   std::optional<ui::AlignmentProposal> alignment_;  // Align's answer, until applied or discarded
-  UnitFollow units_;  // names and poses follow the units' serials
+  UnitFollow units_;                                // names and poses follow the units' serials
   ViewStage stage_;
   float shown_phase_ = 0.0f;  // the phase the cloud was last drawn at (held while frozen)
   // The colour legend, described again only when the colours or the persistence change.

@@ -94,7 +94,8 @@ void SourceSlot::measure(const Lap& measured) {
     model.scan_rate.add_lap_end(measured.index, measured.last_rx_ns);
   else
     model.scan_rate.reset();
-  model.plots.add_lap({model.now_s, model.scan_rate.hz(), model.snap.scan_hz, measured.points.size(), !measured.whole()});
+  model.plots.add_lap(
+      {model.now_s, model.scan_rate.hz(), model.snap.scan_hz, measured.points.size(), !measured.whole()});
   for (ui::SectorWatch& sector : model.sectors) sector.add_lap(measured);
   model.dropouts.add_lap(measured);
   model.zones.set_pose(look.pose);

@@ -29,8 +29,8 @@ void SourceSlot::refresh_model() {
   last_set_scan_hz = s.scan_hz;
   model.timeline.observe("link", static_cast<std::uint32_t>(s.state), model.now_s,
                          std::string(link_state_name(s.state)));
-  model.plots.sample_counters(
-      {model.now_s, s.counters.bytes_per_s, s.counters.checksum_errors, s.counters.crc8_failures, s.counters.reconnects});
+  model.plots.sample_counters({model.now_s, s.counters.bytes_per_s, s.counters.checksum_errors,
+                               s.counters.crc8_failures, s.counters.reconnects});
   if (s.health) {
     const Model m = s.device && s.device->profile ? s.device->profile->model : Model::G6;
     const char* command = s.health->command == Command::HealthStatusBits ? "A5 92" : "A5 91";

@@ -65,9 +65,8 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
     view_->set_zones(std::nullopt);
   view_->set_dropout_ring(ui::DropoutRingShape{several ? selected.look.pose : Pose{}, model.dropouts.no_return_share(),
                                                model.dropouts.blocked()});
-  const float framed = frame.booth && !layered
-                           ? ui::booth_frame_range_mm(selected.motion, view_->transform().viewport_size())
-                           : 0.0f;
+  const float framed =
+      frame.booth && !layered ? ui::booth_frame_range_mm(selected.motion, view_->transform().viewport_size()) : 0.0f;
   if (layered)
     view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
   else if (framed > 0.0f)

@@ -70,8 +70,9 @@ UnitIdentity identify_units(const std::vector<SourceInfo>& given, const std::vec
         out.notes.push_back(with_serial(source.name, serial) + " is on " + here + " now, not " + was +
                             "; it keeps its name and pose");
     } else if (!source.serial.empty()) {
-      out.notes.push_back(source.name + " is bound to serial " + source.serial + ", which no port's unit has; the unit on " +
-                          here + (serial.empty() ? ", which did not say its serial," : " (serial " + serial + ")") +
+      out.notes.push_back(source.name + " is bound to serial " + source.serial +
+                          ", which no port's unit has; the unit on " + here +
+                          (serial.empty() ? ", which did not say its serial," : " (serial " + serial + ")") +
                           " is taken as " + source.name);
     } else if (id != port) {
       out.notes.push_back(source.name + " is on " + here + " now: its port " + was + " holds " +

@@ -51,8 +51,7 @@ double frames_per_second(const fs::path& dir, int warmup_s) {
 }
 
 void print_frames(double cpu_percent, double fps) {
-  if (fps > 0.0)
-    std::printf("   %5.1f frames/s, %5.1f ms of CPU a frame", fps, 10.0 * cpu_percent / fps);
+  if (fps > 0.0) std::printf("   %5.1f frames/s, %5.1f ms of CPU a frame", fps, 10.0 * cpu_percent / fps);
   std::printf("\n");
 }
 

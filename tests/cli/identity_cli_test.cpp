@@ -82,13 +82,13 @@ TEST_F(IdentityCli, TwoUnitsSwappedAcrossPortsKeepTheirNamesAndPosesAndTheSwapIs
   const auto front = unit_on(b, kFrontSerial);
   const std::string mcap = dir_.file("swapped.mcap");
   const auto run = test::run_program(
-      YDSCOPE_CLI_PATH,
-      command + "'" + dir_.file("swapped.ydrec") + "' --mcap '" + mcap + "' --compression none", options);
+      YDSCOPE_CLI_PATH, command + "'" + dir_.file("swapped.ydrec") + "' --mcap '" + mcap + "' --compression none",
+      options);
   ASSERT_EQ(run.status, 0) << run.out << run.err;
-  EXPECT_NE(run.err.find("ydscope-cli: rear (serial " + std::string(kRearSerial) + ") and front (serial " +
-                         kFrontSerial + ") have swapped ports: rear is on " + a + ", front on " + b +
-                         "; each keeps its name and pose\n"),
-            std::string::npos)
+  EXPECT_NE(
+      run.err.find("ydscope-cli: rear (serial " + std::string(kRearSerial) + ") and front (serial " + kFrontSerial +
+                   ") have swapped ports: rear is on " + a + ", front on " + b + "; each keeps its name and pose\n"),
+      std::string::npos)
       << run.err;
   const auto sources = sources_of(dir_.file("swapped.ydrec"));
   ASSERT_EQ(sources.size(), 2u);
@@ -124,7 +124,8 @@ TEST_F(IdentityCli, SettingsBindNamesToSerialsWhenTheCommandLineGivesNone) {
   const auto front = unit_on(b, kFrontSerial);
   const std::string out = dir_.file("bound.ydrec");
   const auto run = test::run_program(
-      YDSCOPE_CLI_PATH, "record --port '" + a + "' --name front --port '" + b + "' --name rear --seconds 0.3 --out '" + out + "'",
+      YDSCOPE_CLI_PATH,
+      "record --port '" + a + "' --name front --port '" + b + "' --name rear --seconds 0.3 --out '" + out + "'",
       options);
   ASSERT_EQ(run.status, 0) << run.out << run.err;
   EXPECT_NE(run.err.find("have swapped ports"), std::string::npos) << run.err;
@@ -136,8 +137,10 @@ TEST_F(IdentityCli, SettingsBindNamesToSerialsWhenTheCommandLineGivesNone) {
 }
 
 TEST_F(IdentityCli, ABadSerialIsOneUsageSentence) {
-  const auto run = test::run_cli_apart("record --port /dev/null --name a --serial 'x y' --port /dev/zero --name b "
-                                       "--serial 2 --out '" + dir_.file("x.ydrec") + "'");
+  const auto run = test::run_cli_apart(
+      "record --port /dev/null --name a --serial 'x y' --port /dev/zero --name b "
+      "--serial 2 --out '" +
+      dir_.file("x.ydrec") + "'");
   EXPECT_EQ(run.status, 2) << run.out << run.err;
   EXPECT_NE(run.err.find("--serial 'x y' must be the unit's serial"), std::string::npos) << run.err;
   const auto lone = test::run_cli_apart("record --port /dev/null --serial 1 --out '" + dir_.file("x.ydrec") + "'");

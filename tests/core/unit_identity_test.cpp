@@ -64,8 +64,9 @@ TEST(UnitIdentity, AStrangerOnABoundPortIsTakenAsItsSourceAndSaid) {
   EXPECT_EQ(result.sources[0].name, "front");
   EXPECT_EQ(result.sources[0].serial, "9999");
   ASSERT_EQ(result.notes.size(), 1u);
-  EXPECT_EQ(result.notes[0],
-            "front is bound to serial 1111, which no port's unit has; the unit on /dev/A (serial 9999) is taken as front");
+  EXPECT_EQ(
+      result.notes[0],
+      "front is bound to serial 1111, which no port's unit has; the unit on /dev/A (serial 9999) is taken as front");
 }
 
 TEST(UnitIdentity, WithoutSerialsEveryLidarStaysOnItsPort) {
@@ -85,8 +86,9 @@ TEST(UnitIdentity, ASerialTwoUnitsShareBindsNeither) {
   EXPECT_EQ(result.sources[0].name, "front");
   EXPECT_EQ(result.sources[1].name, "rear");
   ASSERT_FALSE(result.notes.empty());
-  EXPECT_EQ(result.notes[0],
-            "2 units answer with serial 1111, so they cannot be told apart by it; each keeps the name given for its port");
+  EXPECT_EQ(
+      result.notes[0],
+      "2 units answer with serial 1111, so they cannot be told apart by it; each keeps the name given for its port");
 }
 
 TEST(UnitIdentity, TheModelStaysWithThePortItsSessionDecodes) {

@@ -32,18 +32,20 @@ TEST(AppIdentity, NamesAndPosesFollowTheUnitsSerialsAcrossSwappedPorts) {
     }
   } running;
   // Front's unit is on a, rear's on b.
-  running.pids.push_back(spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--pty", a, "--serial", kFrontSerial}));
-  running.pids.push_back(spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--pty", b, "--serial", kRearSerial}));
+  running.pids.push_back(
+      spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--pty", a, "--serial", kFrontSerial}));
+  running.pids.push_back(
+      spawn_in(dir, {YDSCOPE_CLI_PATH, "sim", "--model", "G6", "--pty", b, "--serial", kRearSerial}));
   ASSERT_TRUE(wait_for_path(a, std::chrono::seconds(15)) && wait_for_path(b, std::chrono::seconds(15)));
-  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--model", "G6", "--port", a, "--name", "rear", "--serial",
-                                   kRearSerial, "--pose", "0,-2,0", "--port", b, "--name", "front", "--serial",
-                                   kFrontSerial, "--pose", "0,2,0"});
+  const pid_t app =
+      spawn_in(dir, {YDSCOPE_APP_PATH, "--model", "G6", "--port", a, "--name", "rear", "--serial", kRearSerial,
+                     "--pose", "0,-2,0", "--port", b, "--name", "front", "--serial", kFrontSerial, "--pose", "0,2,0"});
   running.pids.push_back(app);
   // Both clouds drawn: both units have answered A5 90, so the names have followed them.
   std::set<std::string> seen;
   const int points = screenshot_until(
-      app, dir, seen, [](const Image& image) { return points_in_rings(image, 448); },
-      [](int n) { return n > 3000; }, std::chrono::seconds(30));
+      app, dir, seen, [](const Image& image) { return points_in_rings(image, 448); }, [](int n) { return n > 3000; },
+      std::chrono::seconds(30));
   ASSERT_GT(points, 3000) << "the two clouds never showed";
   running.pids.pop_back();
   ASSERT_EQ(stop_process(app, SIGTERM), 0) << "the app did not end cleanly on SIGTERM";
@@ -58,7 +60,8 @@ TEST(AppIdentity, NamesAndPosesFollowTheUnitsSerialsAcrossSwappedPorts) {
   const std::size_t front_line = settings.find("source = front;");
   ASSERT_NE(front_line, std::string::npos) << settings;
   EXPECT_EQ(settings.substr(front_line, settings.find('\n', front_line) - front_line).find(b), std::string::npos)
-      << "front is remembered on rear's port b:\n" << settings;
+      << "front is remembered on rear's port b:\n"
+      << settings;
   std::filesystem::remove_all(dir);
 }
 

@@ -101,8 +101,8 @@ TEST(RememberedSources, AUnitsSerialIsKeptOnAUnitLineAndRecalledWithItsName) {
 
 TEST(RememberedSources, AFileWithoutUnitLinesBindsByNameAsBeforeAndAStrayUnitLineIsSaid) {
   std::vector<std::string> notes;
-  const ViewSettings read = parse_settings(
-      "pose_convention = rep103\nsource = front; 0.3,0,0; #FF8800\nunit = 9999; ghost\n", &notes);
+  const ViewSettings read =
+      parse_settings("pose_convention = rep103\nsource = front; 0.3,0,0; #FF8800\nunit = 9999; ghost\n", &notes);
   ASSERT_EQ(read.sources.size(), 1u);
   EXPECT_TRUE(read.sources[0].serial.empty());
   ASSERT_EQ(notes.size(), 1u);

@@ -83,8 +83,8 @@ TEST(RunPlots, AStallIsMarkedOnceAtItsTime) {
   p.add_lap({2.0, std::nullopt, 10.0, 905});        // the meter needs laps again
   p.add_lap({2.1, 10.0, 10.0, 902});
   p.add_lap({5.0, std::nullopt, 10.0, 200, true});  // another stall
-  EXPECT_EQ(events_of(p), (std::vector<std::pair<PlotEventKind, double>>{{PlotEventKind::Stall, 1.1},
-                                                                          {PlotEventKind::Stall, 5.0}}));
+  EXPECT_EQ(events_of(p),
+            (std::vector<std::pair<PlotEventKind, double>>{{PlotEventKind::Stall, 1.1}, {PlotEventKind::Stall, 5.0}}));
   p.clear();
   EXPECT_EQ(p.events().size(), 0u) << "an event outlived clear()";
 }
@@ -92,8 +92,8 @@ TEST(RunPlots, AStallIsMarkedOnceAtItsTime) {
 TEST(RunPlots, RateReconnectAndHealthChangesAreMarked) {
   RunPlots p;
   p.add_lap({1.0, 10.0, 10.0, 900});
-  p.add_lap({2.0, 10.0, 10.0, 900});   // the same set value: nothing
-  p.add_lap({3.0, 10.0, 8.0, 900});    // set to 8 Hz
+  p.add_lap({2.0, 10.0, 10.0, 900});  // the same set value: nothing
+  p.add_lap({3.0, 10.0, 8.0, 900});   // set to 8 Hz
   p.sample_counters({3.5, 1000, 0, 0, 0});
   p.sample_counters({3.7, 1000, 0, 0, 1});  // the session reconnected
   p.sample_counters({4.0, 1000, 0, 0, 1});
@@ -102,8 +102,8 @@ TEST(RunPlots, RateReconnectAndHealthChangesAreMarked) {
   p.note_health(HealthSource::HealthAnswer, 0, 4.4);
   p.note_health(HealthSource::HealthAnswer, 2 << 16, 4.6);
   EXPECT_EQ(events_of(p), (std::vector<std::pair<PlotEventKind, double>>{{PlotEventKind::RateChange, 3.0},
-                                                                          {PlotEventKind::Reconnect, 3.7},
-                                                                          {PlotEventKind::HealthChange, 4.6}}));
+                                                                         {PlotEventKind::Reconnect, 3.7},
+                                                                         {PlotEventKind::HealthChange, 4.6}}));
 }
 
 TEST(RunPlots, HeldTimeIsTheOldestSampleOfAnySeries) {

@@ -37,8 +37,8 @@ void draw_booth_overlay(const UiModel& m, float view_left, float view_width, flo
   float y = pad;
   if (!m.booth_title.empty()) {
     const float w = font->CalcTextSizeA(px * 1.1f, 1e9f, 0.0f, m.booth_title.c_str()).x;
-    draw->AddText(font, px * 1.1f, {view_left + std::max((view_width - w) * 0.5f, pad), y}, IM_COL32(245, 247, 252, 255),
-                  m.booth_title.c_str());
+    draw->AddText(font, px * 1.1f, {view_left + std::max((view_width - w) * 0.5f, pad), y},
+                  IM_COL32(245, 247, 252, 255), m.booth_title.c_str());
     y += px * 1.5f;
   }
   if (!m.booth_figure.empty()) {

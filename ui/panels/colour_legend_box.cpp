@@ -14,7 +14,7 @@ ImU32 im(Rgba8 c) { return IM_COL32(c.r, c.g, c.b, 255); }
 }  // namespace
 
 void draw_colour_legend(ImDrawList* draw, ImFont* font, const ColourLegend& legend, float px, ImVec2 bottom_right,
-                 float bar_width) {
+                        float bar_width) {
   const float title_px = px * 0.55f;
   const float tick_px = px * 0.5f;
   const float pad = px * 0.45f;

@@ -43,7 +43,8 @@ void draw_plots_panel(const UiModel& m, PanelEdits& e) {
     }
   }
   ImGui::SameLine();
-  ImGui::TextDisabled(window.paused() ? "paused: wheel zooms, double-click shows all" : "wheel zooms, double-click shows all");
+  ImGui::TextDisabled(window.paused() ? "paused: wheel zooms, double-click shows all"
+                                      : "wheel zooms, double-click shows all");
   const RunPlots& p = window.paused() ? e.paused_plots : m.plots;
   const double end_s = window.end_s(m.now_s);
   const double held_s = std::clamp(p.held_s(end_s), PlotWindow::kMinSpanS, static_cast<double>(RunPlots::kSeconds));

@@ -56,9 +56,10 @@ void alignment_controls(UiModel& m) {
   section("align");
   if (!m.alignment) {
     if (ImGui::Button("Align")) m.requests.push_back(AlignSources{});
-    help_marker("Finds where each lidar sits relative to the first in the list, from the walls they both see "
-                "(their last 10 laps, searched within 45 degrees and 1 m of each one's pose now). "
-                "Nothing moves until you apply it.");
+    help_marker(
+        "Finds where each lidar sits relative to the first in the list, from the walls they both see "
+        "(their last 10 laps, searched within 45 degrees and 1 m of each one's pose now). "
+        "Nothing moves until you apply it.");
     return;
   }
   for (const AlignedSource& row : m.alignment->rows) ImGui::TextWrapped("%s", row.text.c_str());

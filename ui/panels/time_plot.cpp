@@ -116,7 +116,8 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   f.span = axis.span;
   const AxisRange seen = shown_values(series, axis.span);
   f.values = value_range(seen.lo, seen.hi, spec.from_zero, spec.min_pad);
-  const AxisTicks value_ticks = choose_ticks(f.values.lo, f.values.hi, std::max(2, static_cast<int>(spec.height / (font * 0.95f))));
+  const AxisTicks value_ticks =
+      choose_ticks(f.values.lo, f.values.hi, std::max(2, static_cast<int>(spec.height / (font * 0.95f))));
   // The value labels' column, one width for every plot, so their time axes line up.
   char text[96];
   const float label_w = ImGui::CalcTextSize("0000").x;
@@ -184,7 +185,8 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   char reading[160] = "";
   std::size_t used = 0;
   const auto append = [&](const char* format, auto... args) {
-    if (used < sizeof reading) used += static_cast<std::size_t>(std::snprintf(reading + used, sizeof reading - used, format, args...));
+    if (used < sizeof reading)
+      used += static_cast<std::size_t>(std::snprintf(reading + used, sizeof reading - used, format, args...));
   };
   std::optional<double> pointer_time;
   if (hovered && mouse.x >= f.lo.x && mouse.x <= f.hi.x) {

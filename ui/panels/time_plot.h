@@ -25,12 +25,12 @@ struct PlotSeries {
 struct TimePlotSpec {
   const char* id = "##plot";
   const char* title = "";
-  const char* unit = "";          // after the title and each read-out value
-  const char* format = "%.1f";    // one value
-  bool from_zero = true;          // counts and rates: the value axis starts at 0
-  float min_pad = 0.2f;           // see value_range()
-  float height = 50.0f;           // the data area, px
-  bool time_labels = false;       // the time axis' labels under this plot (the last of a group)
+  const char* unit = "";        // after the title and each read-out value
+  const char* format = "%.1f";  // one value
+  bool from_zero = true;        // counts and rates: the value axis starts at 0
+  float min_pad = 0.2f;         // see value_range()
+  float height = 50.0f;         // the data area, px
+  bool time_labels = false;     // the time axis' labels under this plot (the last of a group)
 };
 
 struct TimeAxis {

@@ -126,9 +126,9 @@ using UiRequest =
 
 // The requests that change the source list rather than one source.
 template <class R>
-inline constexpr bool is_source_list_request = std::is_same_v<R, SelectSource> || std::is_same_v<R, SetSourceLook> ||
-                                               std::is_same_v<R, AddSource> || std::is_same_v<R, RemoveSource> ||
-                                               std::is_same_v<R, AlignSources> || std::is_same_v<R, AnswerAlignment>;
+inline constexpr bool is_source_list_request =
+    std::is_same_v<R, SelectSource> || std::is_same_v<R, SetSourceLook> || std::is_same_v<R, AddSource> ||
+    std::is_same_v<R, RemoveSource> || std::is_same_v<R, AlignSources> || std::is_same_v<R, AnswerAlignment>;
 // The requests one source carries out alone: its device's commands, its replay, its virtual lidar.
 template <class R>
 inline constexpr bool is_device_request =

@@ -33,12 +33,14 @@ std::vector<ImVec2> sector_outline(const ViewTransform& view, const Pose& pose, 
     return im(view.world_to_screen(posed_in_view(pose, polar_to_world(deg, mm))));
   };
   for (int i = 0; i <= steps; ++i)
-    out.push_back(at(static_cast<float>(s.from_deg) + width * static_cast<float>(i) / static_cast<float>(steps), outer));
+    out.push_back(
+        at(static_cast<float>(s.from_deg) + width * static_cast<float>(i) / static_cast<float>(steps), outer));
   if (inner <= 0.0f) {
     out.push_back(at(0.0f, 0.0f));
   } else {
     for (int i = steps; i >= 0; --i)
-      out.push_back(at(static_cast<float>(s.from_deg) + width * static_cast<float>(i) / static_cast<float>(steps), inner));
+      out.push_back(
+          at(static_cast<float>(s.from_deg) + width * static_cast<float>(i) / static_cast<float>(steps), inner));
   }
   return out;
 }

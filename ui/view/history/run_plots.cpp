@@ -11,7 +11,8 @@ void RunPlots::add_lap(const LapSample& lap) {
   if (lap.interrupted && !last_lap_interrupted_ && lap_times_.size() > 0) events_.add(PlotEventKind::Stall, lap.time_s);
   last_lap_interrupted_ = lap.interrupted;
   if (lap.set_hz) {
-    if (last_set_hz_ && std::abs(*lap.set_hz - *last_set_hz_) > 1e-3) events_.add(PlotEventKind::RateChange, lap.time_s);
+    if (last_set_hz_ && std::abs(*lap.set_hz - *last_set_hz_) > 1e-3)
+      events_.add(PlotEventKind::RateChange, lap.time_s);
     last_set_hz_ = lap.set_hz;
   }
   // Both rate lines advance together, so a lap's set and measured values sit at one time.
@@ -36,8 +37,7 @@ void RunPlots::note_health(HealthSource source, std::uint32_t value, double time
 }
 
 void RunPlots::sample_counters(const CounterSample& sample) {
-  if (last_second_ && sample.reconnects > last_second_->reconnects)
-    events_.add(PlotEventKind::Reconnect, sample.now_s);
+  if (last_second_ && sample.reconnects > last_second_->reconnects) events_.add(PlotEventKind::Reconnect, sample.now_s);
   if (!last_second_ || sample.checksum_errors < last_second_->checksum_errors ||
       sample.crc8_failures < last_second_->crc8_failures || sample.now_s < last_second_->now_s) {
     last_second_ = sample;  // the first sample, or the totals started again: a new baseline

@@ -23,7 +23,8 @@ float booth_frame_range_mm(const MotionBackground& room, Vec2 view_size) {
   }
   if (n < MotionBackground::kBins / 4) return 0.0f;
   const auto k = static_cast<std::size_t>(std::lround(kBoothFramedShare * static_cast<float>(n - 1)));
-  std::nth_element(needed.begin(), needed.begin() + static_cast<std::ptrdiff_t>(k), needed.begin() + static_cast<std::ptrdiff_t>(n));
+  std::nth_element(needed.begin(), needed.begin() + static_cast<std::ptrdiff_t>(k),
+                   needed.begin() + static_cast<std::ptrdiff_t>(n));
   return needed[k] * 1.05f;  // a margin, so the walls do not touch the edge
 }
 
