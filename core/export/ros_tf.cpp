@@ -70,7 +70,7 @@ RosTransform ros_transform_of(const Pose& pose, const RosFrameOptions& frame, st
   return t;
 }
 
-RosTransform ros_unit_transform(const RosFrameOptions& frame, std::string laser_frame) {
+RosTransform ros_unit_transform(const RosFrameOptions& frame, const std::string& laser_frame) {
   // Columns: where the unit's 0 and 90 degrees point in the laser frame, and their cross product.
   const double a0 = ros_angle_rad(0.0f, frame);
   const double a90 = ros_angle_rad(90.0f, frame);

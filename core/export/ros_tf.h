@@ -34,7 +34,7 @@ RosTransform ros_transform_of(const Pose& pose, const RosFrameOptions& frame, st
 // the unit's 0 degrees, y along its 90, and z = x cross y, which points down with the official
 // driver's frame (the unit sweeps clockwise seen from above). A device angle a is then the usual
 // counter-clockwise angle about that z. With the defaults it is a turn of 180 degrees about y.
-RosTransform ros_unit_transform(const RosFrameOptions& frame, std::string laser_frame);
+RosTransform ros_unit_transform(const RosFrameOptions& frame, const std::string& laser_frame);
 inline std::string unit_frame_id(std::string_view laser_frame) { return std::string(laser_frame) + "_unit"; }
 
 // What /tf_static says of one lidar: its mount (parent -> laser frame) and its unit frame.
