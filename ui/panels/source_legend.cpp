@@ -32,6 +32,11 @@ void legend_line(ImDrawList* draw, const SourceRow& row, ImVec2 at, bool selecte
 
 }  // namespace
 
+float source_legend_bottom(const UiModel& m) {
+  if (m.sources.size() < 2) return 0.0f;
+  return legend_pad() * 2.0f + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(m.sources.size());
+}
+
 void draw_source_legend(const UiModel& m, float view_left, float view_width) {
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const float line = ImGui::GetTextLineHeightWithSpacing();
@@ -40,16 +45,11 @@ void draw_source_legend(const UiModel& m, float view_left, float view_width) {
   for (const SourceRow& row : m.sources) widest = std::max(widest, ImGui::CalcTextSize(row.legend.c_str()).x);
   const ImVec2 lo{view_left + pad, pad};
   const ImVec2 hi{std::min(lo.x + widest + swatch_size() + 3.0f * pad, view_left + view_width - pad),
-                  lo.y + line * static_cast<float>(m.sources.size()) + pad};
+                  source_legend_bottom(m)};
   draw->AddRectFilled(lo, hi, IM_COL32(15, 20, 30, 200), pad * 0.5f);
   for (std::size_t i = 0; i < m.sources.size(); ++i)
     legend_line(draw, m.sources[i], {lo.x + pad, lo.y + pad * 0.5f + line * static_cast<float>(i)},
                 i == m.selected_source);
-}
-
-float source_legend_bottom(const UiModel& m) {
-  if (m.sources.size() < 2) return 0.0f;
-  return legend_pad() * 2.0f + ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(m.sources.size());
 }
 
 void draw_source_label(const SourceRow& row, ImVec2 top_left, bool selected) {
