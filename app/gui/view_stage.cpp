@@ -54,10 +54,9 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
                   static_cast<double>(swept->second));
     model.requests.push_back(ui::WatchSector{spec});
   }
-  // One lidar is drawn as always; several (or one in its source colour) go through the layers.
+  // One lidar is a layer at the identity pose, drawn round itself; several each at its pose.
   const bool several = sources.several();
-  const bool layered = several || settings.colours.mode == ui::ColourMode::Source;
-  const auto layers = layered ? layers_of(sources) : std::span<const ui::SourceLayer>();
+  const auto layers = layers_of(sources);
   view_->set_source_marks(marks_);
   if (!model.zones.zones().empty())
     view_->set_zones(ui::ZoneShapes{several ? selected.look.pose : Pose{}, model.zones.zones(), model.zones.states()});
@@ -65,16 +64,11 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
     view_->set_zones(std::nullopt);
   view_->set_dropout_ring(ui::DropoutRingShape{several ? selected.look.pose : Pose{}, model.dropouts.no_return_share(),
                                                model.dropouts.blocked()});
+  // The booth frames a lone lidar's room by what it has learned of it (booth_framing.h).
   const float framed =
-      frame.booth && !layered ? ui::booth_frame_range_mm(selected.motion, view_->transform().viewport_size()) : 0.0f;
-  if (layered)
-    view_->auto_range_to(ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
-  else if (framed > 0.0f)
-    view_->auto_range_to(framed, settings);
-  else
-    view_->auto_range(selected.history, settings);
-  model.cloud = layered ? view_->update_cloud(layers, settings, frame.phase)
-                        : view_->update_cloud(selected.history, settings, &selected.motion, frame.phase);
+      frame.booth && !several ? ui::booth_frame_range_mm(selected.motion, view_->transform().viewport_size()) : 0.0f;
+  view_->auto_range_to(framed > 0.0f ? framed : ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
+  model.cloud = view_->update_cloud(layers, settings, frame.phase);
   model.laps_on_screen = selected.history.size();
   model.points_drawn_total = view_->vertex_count();
 

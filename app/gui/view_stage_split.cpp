@@ -31,9 +31,9 @@ void ViewStage::lay_out_split(SourceList& sources, ui::ViewSettings& settings, c
     tile.set_viewport({x, y}, {tile_w, tile_h});
     tile.set_status_band(i / columns == rows - 1 ? ui::status_band_height() : 0.0f);
     tile.handle_input(settings, frame.hovered, frame.now_s);
-    tile.auto_range(slot.history, settings);
     // Its own frame, in its own colour when the view colours by source.
     const ui::SourceLayer layer{&slot.history, Pose{}, slot.look.colour, false, &slot.motion};
+    tile.auto_range_to(ui::robust_extent_mm(std::span(&layer, 1), 0.93f) * 1.1f, settings);
     tile.update_cloud(std::span(&layer, 1), settings, frame.phase);
     points += tile.vertex_count();
     tile.lay_out(slot.history, settings);

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "ui/view/geometry/grid_layout.h"
+#include "ui/view/scene/motion_background.h"
 #include "ui/view/scene/source_cloud.h"
 #include "ui/view/settings/settings.h"
 #include "ui/view/scene/source_set.h"
@@ -96,6 +97,39 @@ TEST(SourceCloud, ByRangeKeepsThePaletteButStillPoses) {
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].colour, point_colour(colours, {0.0f, 1000.0f, PointFlag::None}, 0.0f));
   EXPECT_NEAR(out[0].y, -4000.0f, 0.5f);  // the unit's 0 points back: 1 m behind a lidar 3 m back
+}
+
+TEST(SourceCloud, ALoneLidarIsALayerAtTheIdentityPoseDrawnExactlyAsItsOwnCloud) {
+  // One lidar goes through the layers too: several fading laps, a person closer than the learned
+  // room (motion colours), and the vertices must be the single cloud's to the bit.
+  LapHistory history(4);
+  MotionBackground motion;
+  for (std::uint64_t i = 0; i < MotionBackground::kLaps; ++i) {
+    Lap lap;
+    for (int a = 0; a < 360; ++a) {
+      const auto angle = static_cast<float>(a);
+      lap.points.push_back({angle + 0.37f * static_cast<float>(i % 3), a == 90 && i > 30 ? 1500.0f : 4000.0f + angle,
+                            a == 200 ? PointFlag::Specular : PointFlag::None});
+    }
+    motion.add_lap(lap);
+    history.push(lap);
+  }
+  ColourParams colours;
+  colours.mode = ColourMode::Motion;
+  std::vector<PointVertex> single, layered, scratch;
+  const PointCloudStats alone = build_point_cloud(history, colours, {}, single, &motion, 0.4f);
+  SourceLayer layer;
+  layer.history = &history;
+  layer.motion = &motion;
+  const PointCloudStats stats = build_source_clouds(std::span(&layer, 1), colours, {}, layered, scratch, 0.4f);
+  ASSERT_EQ(layered.size(), single.size());
+  EXPECT_EQ(stats.drawn, alone.drawn);
+  EXPECT_EQ(stats.newest_specular_removed, alone.newest_specular_removed);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < single.size(); ++i)
+    differ += layered[i].x != single[i].x || layered[i].y != single[i].y || !(layered[i].colour == single[i].colour);
+  EXPECT_EQ(differ, 0u);
+  EXPECT_NE(single.front().colour, single.back().colour) << "the laps fade, so the test sees colours";
 }
 
 TEST(SourceCloud, AutoRangeReachesTheFarthestSourcesReturns) {

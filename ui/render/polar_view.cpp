@@ -109,10 +109,6 @@ std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
   return swept;
 }
 
-void PolarView::auto_range(const LapHistory& history, const ViewSettings& settings) {
-  auto_range_to(history.empty() ? 0.0f : robust_max_range_mm(history.newest().points, 0.93f) * 1.1f, settings);
-}
-
 void PolarView::auto_range_to(float extent_mm, const ViewSettings& settings) {
   // Asked every frame, lap or not, so turning auto-range back on is seen the frame it happens.
   if (const auto range = fit_.update(settings.auto_range, extent_mm)) view_.fit_range(*range);
@@ -138,16 +134,6 @@ void PolarView::upload_if_dirty(float phase) {
   ++gl_generation_;
   dirty_ = false;
   last_phase_ = phase;
-}
-
-const PointCloudStats& PolarView::update_cloud(const LapHistory& history, const ViewSettings& settings,
-                                               const MotionBackground* motion, float phase) {
-  const ColourParams colours = colours_for(settings, phase, history.size() > 1);
-  if (dirty_) {
-    stats_ = build_point_cloud(history, colours, settings.interference, vertices_, motion, phase);
-    upload_if_dirty(phase);
-  }
-  return stats_;
 }
 
 const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings,

@@ -48,15 +48,13 @@ class PolarView {
   std::optional<Vec2> take_forward_click();
   // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
   void invalidate() { dirty_ = true; }
-  // Fits the view to the newest lap when auto-range is on.
-  void auto_range(const LapHistory& history, const ViewSettings& settings);
-  // Fits the view to `extent_mm` from the origin when auto-range is on (several sources).
+  // Fits the view to `extent_mm` from the origin when auto-range is on (robust_extent_mm of the
+  // layers, or the booth's framing).
   void auto_range_to(float extent_mm, const ViewSettings& settings);
-  // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics. `phase`
-  // (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud of several laps.
-  const PointCloudStats& update_cloud(const LapHistory& history, const ViewSettings& settings,
-                                      const MotionBackground* motion = nullptr, float phase = 0.0f);
-  // The same for several sources, each posed into the common frame (source_cloud.h).
+  // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics. Each source
+  // is a layer posed into the common frame (source_cloud.h); one lidar is a layer at the identity
+  // pose. `phase` (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud
+  // of several laps.
   const PointCloudStats& update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings, float phase);
   // Each source's position and heading, drawn in place of the lone lidar's mark (none: that mark).
   void set_source_marks(std::vector<SourceMark> marks) { marks_ = std::move(marks); }
