@@ -1,7 +1,9 @@
 #include "app/cli/check_output.h"
 
 #include <algorithm>
+#include <cctype>
 #include <string>
+#include <utility>
 
 #include "app/cli/lap_json.h"
 #include "app/cli/session_cli.h"
@@ -111,31 +113,120 @@ void write_sector(JsonObject& check, const CheckRecord& record) {
   write_value_summary(sector, "flat_distance_mm", s.flat_distance_mm);
 }
 
+// The members of check's JSON object, written into `check` (alone, or as one unit of a set).
+void write_check_fields(JsonObject& check, const CheckRecord& record) {
+  check.field("type", "check").field("verdict", outcome_word(check_outcome(record)));
+  {
+    JsonArray failed = check.array("failed");
+    for (const CriterionResult& r : record.results)
+      if (r.verdict != Verdict::Pass) failed.item(r.id);
+  }
+  check.field("interrupted", record.interrupted).field("failure", text_or_null(record.failure));
+  check.field("seconds", record.measured_seconds, 3);
+  check.field("operator", text_or_null(record.context.operator_name));
+  check.field("station", text_or_null(record.context.station));
+  check.field("command_line", text_or_null(record.context.command_line));
+  check.field("ydscope_version", kVersion);
+  {
+    JsonObject device = check.object("device");
+    write_device_fields(device, record.started);
+  }
+  write_criteria(check, record.results);
+  write_timing(check, record.observations.timing);
+  write_sector(check, record);
+}
+
 }  // namespace
 
 void print_check_json(std::FILE* file, const CheckRecord& record) {
   JsonOut out(file);
   {
     JsonObject check(out.buffer());
-    check.field("type", "check").field("verdict", outcome_word(check_outcome(record)));
-    {
-      JsonArray failed = check.array("failed");
-      for (const CriterionResult& r : record.results)
-        if (r.verdict != Verdict::Pass) failed.item(r.id);
+    write_check_fields(check, record);
+  }
+  out.raw("\n");
+  out.flush();
+}
+
+std::string unit_name(const CheckRecord& record) {
+  const CheckObservations& o = record.observations;
+  const std::string model = o.profile ? std::string(o.profile->name) : std::string("lidar");
+  return record.started.device ? model + " " + record.started.device->serial : model;
+}
+
+CheckOutcome set_outcome(const std::vector<UnitCheck>& units) {
+  const auto any = [&units](CheckOutcome outcome) {
+    return std::any_of(units.begin(), units.end(),
+                       [outcome](const UnitCheck& u) { return check_outcome(u.record) == outcome; });
+  };
+  return any(CheckOutcome::Fail)         ? CheckOutcome::Fail
+         : any(CheckOutcome::Incomplete) ? CheckOutcome::Incomplete
+                                         : CheckOutcome::Pass;
+}
+
+namespace {
+
+std::string upper(std::string word) {
+  for (char& c : word) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return word;
+}
+
+// "lidar1, lidar2": the units whose verdict is `outcome`.
+std::string names_with(const std::vector<UnitCheck>& units, CheckOutcome outcome) {
+  std::string names;
+  for (const UnitCheck& u : units)
+    if (check_outcome(u.record) == outcome) names += (names.empty() ? "" : ", ") + u.name;
+  return names;
+}
+
+}  // namespace
+
+void print_check_set_text(std::FILE* out, const std::vector<UnitCheck>& units) {
+  for (const UnitCheck& u : units) {
+    std::fprintf(out, "%s (%s):\n", u.name.c_str(), u.port.c_str());
+    if (u.tested)
+      print_check_text(out, u.record);
+    else
+      std::fprintf(out, "verdict: INCOMPLETE (not tested: %s)\n", u.record.failure.c_str());
+    if (!u.report.empty()) std::fprintf(out, "report: %s\n", u.report.c_str());
+    std::fprintf(out, "\n");
+  }
+  std::string each;
+  for (const UnitCheck& u : units)
+    each += (each.empty() ? "" : ", ") + u.name + " " + upper(outcome_word(check_outcome(u.record))) +
+            (u.record.started.device ? " (" + unit_name(u.record) + ")" : "");
+  std::fprintf(out, "lidars: %s\n", each.c_str());
+  const CheckOutcome outcome = set_outcome(units);
+  const std::string failed = names_with(units, CheckOutcome::Fail);
+  const std::string incomplete = names_with(units, CheckOutcome::Incomplete);
+  std::fprintf(out, "overall: %s (%zu lidars%s%s%s%s)\n", upper(outcome_word(outcome)).c_str(), units.size(),
+               failed.empty() ? "" : "; failed: ", failed.c_str(),
+               incomplete.empty() ? "" : "; not judged: ", incomplete.c_str());
+}
+
+void print_check_set_json(std::FILE* file, const std::vector<UnitCheck>& units) {
+  JsonOut out(file);
+  {
+    JsonObject set(out.buffer());
+    set.field("type", "check_set").field("verdict", outcome_word(set_outcome(units)));
+    for (const auto& [key, outcome] :
+         {std::pair{"failed", CheckOutcome::Fail}, {"incomplete", CheckOutcome::Incomplete}}) {
+      JsonArray names = set.array(key);
+      for (const UnitCheck& u : units)
+        if (check_outcome(u.record) == outcome) names.item(u.name);
     }
-    check.field("interrupted", record.interrupted).field("failure", text_or_null(record.failure));
-    check.field("seconds", record.measured_seconds, 3);
-    check.field("operator", text_or_null(record.context.operator_name));
-    check.field("station", text_or_null(record.context.station));
-    check.field("command_line", text_or_null(record.context.command_line));
-    check.field("ydscope_version", kVersion);
-    {
-      JsonObject device = check.object("device");
-      write_device_fields(device, record.started);
+    JsonArray each = set.array("units");
+    for (const UnitCheck& u : units) {
+      JsonObject unit = each.object();
+      unit.field("name", u.name).field("port", u.port).field("verdict", outcome_word(check_outcome(u.record)));
+      unit.field("report", text_or_null(u.report)).field("failure", text_or_null(u.record.failure));
+      if (!u.tested) {
+        unit.field("check", nullptr);
+        continue;
+      }
+      JsonObject check = unit.object("check");
+      write_check_fields(check, u.record);
     }
-    write_criteria(check, record.results);
-    write_timing(check, record.observations.timing);
-    write_sector(check, record);
   }
   out.raw("\n");
   out.flush();

@@ -17,18 +17,10 @@ namespace ydscope::cli {
 
 namespace {
 
-constexpr int kExitInterrupted = 130;
-
 // A whole line on stderr, clearing a progress line a terminal may be showing.
 void say(const std::string& line) {
   std::fprintf(stderr, "%s%s\n", isatty(STDERR_FILENO) == 1 ? "\r\033[K" : "", line.c_str());
   std::fflush(stderr);
-}
-
-std::string unit_name(const CheckRecord& record) {
-  const CheckObservations& o = record.observations;
-  const std::string model = o.profile ? std::string(o.profile->name) : std::string("lidar");
-  return record.started.device ? model + " " + record.started.device->serial : model;
 }
 
 std::string verdict_line(const CheckRecord& record, const std::string& report) {

@@ -15,6 +15,8 @@ inline constexpr int kExitUsage = 2;
 // The command ran to the end, but the lidar is not right: it reported a health error (scan,
 // record) or failed a criterion (check). What it produced is complete.
 inline constexpr int kExitLidarFault = 3;
+// Ctrl-C cut the run short (check): what was printed covers only the time measured.
+inline constexpr int kExitInterrupted = 130;
 
 struct CliCommand {
   std::string_view name;

@@ -11,11 +11,13 @@
 
 #include "app/common/arguments.h"
 #include "app/cli/check_output.h"
+#include "app/cli/check_set.h"
 #include "app/cli/check_station.h"
 #include "app/common/check_report.h"
 #include "app/common/check_run.h"
 #include "app/cli/cli_command.h"
 #include "app/cli/session_cli.h"
+#include "app/cli/source_options.h"
 
 namespace ydscope::cli {
 namespace {
@@ -25,6 +27,7 @@ constexpr std::string_view kHelpText =
                          [--sector A:B [--band MIN:MAX] --target-mm D [--tolerance-mm T] [--noise-mm N]]
                          [--format text|json] [--report OUT.html] [--operator NAME] [--station NAME]
                          [limit options]
+       ydscope-cli check --port PATH [--name N] --port PATH [--name N] ... [--reports DIR] [...]
        ydscope-cli check --loop --station NAME --operator NAME [--port PATH] [--reports DIR] [...]
 
 Runs an acceptance test of the lidar: reads its identity and health, sets the scan frequency (and
@@ -54,7 +57,10 @@ Limits come from the manuals where they give one, otherwise from documented defa
 is in docs/check.md, "Acceptance limits"); every limit has an option below.
 
 options:
-  --port PATH            serial port (see `ydscope-cli ports`) or tcp://host:port
+  --port PATH            serial port (see `ydscope-cli ports`) or tcp://host:port; once per lidar
+                         to check several at once (below)
+  --name NAME            with several --port: a name per --port (default lidar0, lidar1, ...)
+  --serial S             with several --port: the unit a name belongs to, on whichever port it is
   --model MODEL          auto (default: from the device-info model code), G1, G6, TG15, TG30, TG50
   --baud B               line rate, or auto to probe (see `ydscope-cli info --help`)
   --seconds S            how long to measure (default 10, 1 to 3600)
@@ -75,7 +81,8 @@ options:
   --operator NAME        who runs the check, written into the report (and the station log)
   --station NAME         where it runs (a test station's name), written the same way
   --loop                 a test station: check each unit as it is plugged in, until Ctrl-C (below)
-  --reports DIR          with --loop: the folder for the reports and the station log (default .)
+  --reports DIR          with --loop: the folder for the reports and the station log (default .);
+                         with several --port: the folder for each unit's report
   --distance-scale MM    mm per distance count, overriding the model's (see `decode --help`)
   --conventions C        field (default): read the unit as real units of its model and firmware write
                          (G6 S/2 mm, 18 k samples/s; TG S mm, no correction); manual: as its manual says.
@@ -90,6 +97,16 @@ limit options (defaults in brackets):
   --max-lost-samples N           [0]
   --min-valid-pct P              valid returns among all points [50]
   --min-sector-valid-pct P       valid returns in the sector [95]
+
+Several lidars at once (two or more --port): every unit is checked at the same time over one
+run, each as above. Each unit's lines are what check prints for it alone, under "NAME (PORT):";
+then "lidars: NAME PASS|FAIL|INCOMPLETE (MODEL SERIAL), ..." and "overall: PASS|FAIL|INCOMPLETE".
+The set fails when any unit fails, else is incomplete when any was not judged to the end. With
+--reports DIR each unit's report is DIR/SERIAL-YYYYMMDD-HHMMSS.html (UTC); --report names one
+file and goes with one --port. Exit status: 130 after Ctrl-C, 1 when a unit could not be tested,
+its link failed or its report could not be written, 3 when a unit failed, 0 when all passed.
+json: {"type":"check_set","verdict","failed":[names],"incomplete":[names],"units":[{"name","port",
+  "verdict","report","failure","check":{the one-unit object below, or null when not tested}}]}
 
 A test station (--loop, with --station and --operator): waits for a unit on --port PATH (or,
 without --port, on the first lidar port `ydscope-cli ports` would list), checks it as above, writes
@@ -124,10 +141,9 @@ examples:
   ydscope-cli check --port /dev/ttyUSB0 --model G6 --seconds 30 --scan-hz 10 --ranging-khz 8
   ydscope-cli check --port /dev/ttyUSB0 --sector 350:10 --target-mm 2000 --format json | jq .verdict
   ydscope-cli check --port /dev/ttyUSB0 --report "check-$(date +%F-%H%M%S).html"
+  ydscope-cli check --port /dev/ttyUSB0 --name front --port /dev/ttyUSB1 --name rear --reports ~/qa
   ydscope-cli check --loop --station bench-2 --operator ana --port /dev/ydlidar --reports ~/qa
 )";
-
-constexpr int kExitInterrupted = 130;
 
 std::atomic<bool> interrupted{false};
 extern "C" void check_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
@@ -223,31 +239,61 @@ StationPlan station_plan_from(const Arguments& args, CheckPlan check) {
   plan.json = args.value("format").value_or("text") == "json";
   if (plan.port.rfind("tcp://", 0) == 0)
     throw UsageError("--loop waits for a unit's serial port to appear; give a serial --port, not " + plan.port);
-  std::error_code ec;
-  if (!std::filesystem::is_directory(plan.reports_folder, ec))
-    throw UsageError("--reports " + plan.reports_folder + ": there is no such folder; create it or choose another");
-  if (::access(plan.reports_folder.c_str(), W_OK) != 0)
-    throw UsageError("--reports " + plan.reports_folder + ": the folder is not writable; choose one you can write to");
+  if (const std::string problem = reports_folder_problem(plan.reports_folder); !problem.empty())
+    throw UsageError(problem);
+  return plan;
+}
+
+// Several lidars at once: each unit's report goes into --reports DIR, named by its serial and time.
+CheckSetPlan set_plan_from(const Arguments& args, CheckPlan check, std::vector<SourceSpec> lidars) {
+  if (args.has("report"))
+    throw UsageError(
+        "--report names one file; with several --port give --reports DIR, where each unit's report is "
+        "named by its serial and time");
+  CheckSetPlan plan;
+  plan.check = std::move(check);
+  plan.lidars = std::move(lidars);
+  plan.reports_folder = args.value("reports");
+  plan.json = args.value("format").value_or("text") == "json";
+  if (plan.reports_folder)
+    if (const std::string problem = reports_folder_problem(*plan.reports_folder); !problem.empty())
+      throw UsageError(problem);
   return plan;
 }
 
 int run_check_command(std::span<const std::string> raw) {
-  std::set<std::string> options{"seconds",        "settle-seconds", "scan-hz",      "ranging-khz", "sector",
-                                "band",           "target-mm",      "tolerance-mm", "noise-mm",    "format",
-                                "distance-scale", "report",         "operator",     "station",     "reports"};
+  std::set<std::string> options{"seconds",   "settle-seconds", "scan-hz",  "ranging-khz", "sector",         "band",
+                                "target-mm", "tolerance-mm",   "noise-mm", "format",      "distance-scale", "report",
+                                "operator",  "station",        "reports",  "name",        "serial"};
   for (const LimitOption& option : kLimitOptions) options.insert(option.name);
-  const Arguments args(raw, session_value_options(options), {"loop"});
+  const Arguments args(raw, session_value_options(options), {"loop"}, 0, source_repeatable_options());
   const std::string format = args.value("format").value_or("text");
   if (format != "text" && format != "json") throw UsageError("--format must be text or json, not '" + format + "'");
   const bool loop = args.has("loop");
-  if (!loop && args.has("reports"))
+  const bool several = args.values("port").size() > 1;
+  if (!loop && !several && args.has("reports"))
     throw UsageError("--reports DIR goes with --loop; for one unit give --report OUT.html");
-  CheckPlan plan = plan_from(args, loop);
-  plan.context.command_line = command_line(raw);
   if (loop) {
+    if (several) throw UsageError("--loop checks one unit at a time; give one --port (or none: the first to appear)");
+    for (const std::string& option : source_repeatable_options())
+      if (args.values(option).size() > 1) throw UsageError("option --" + option + " is given twice");
+    for (const char* name : {"name", "serial"})
+      if (args.has(name))
+        throw UsageError(std::string("--") + name + " names one of several lidars checked at once; not with --loop");
+    CheckPlan plan = plan_from(args, loop);
+    plan.context.command_line = command_line(raw);
     const StationPlan station = station_plan_from(args, std::move(plan));
     end_on_signals(check_on_signal);
     return run_check_station(station, interrupted);
+  }
+  // One lidar is a set of one: its port is read and checked as record and serve read theirs.
+  std::vector<SourceSpec> lidars = source_specs_from(args, /*scan=*/true);
+  CheckPlan plan = plan_from(args, loop);
+  plan.context.command_line = command_line(raw);
+  if (several) {
+    const CheckSetPlan set = set_plan_from(args, std::move(plan), std::move(lidars));
+    end_on_signals(check_on_signal);
+    return run_check_set(set, interrupted);
   }
   const std::optional<std::string> report = args.value("report");
   if (report)

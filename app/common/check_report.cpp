@@ -168,6 +168,15 @@ std::string report_output_problem(const std::string& path) {
   return {};
 }
 
+std::string reports_folder_problem(const std::string& folder) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    return "--reports " + folder + ": there is no such folder; create it or choose another";
+  if (::access(folder.c_str(), W_OK) != 0)
+    return "--reports " + folder + ": the folder is not writable; choose one you can write to";
+  return {};
+}
+
 std::string utc_text(std::int64_t unix_s, const char* format) {
   const std::time_t t = static_cast<std::time_t>(unix_s);
   std::tm tm{};

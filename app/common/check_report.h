@@ -25,6 +25,10 @@ std::string check_report_path(const std::string& folder, const CheckRecord& reco
 // so a mistyped folder does not cost the measurement.
 std::string report_output_problem(const std::string& path);
 
+// Empty when `folder` can take reports named by check_report_path (--reports DIR), else one
+// sentence saying why not; asked before the run as report_output_problem is.
+std::string reports_folder_problem(const std::string& folder);
+
 // Writes beside `path` and renames, so a reader never sees half a report. Throws
 // std::runtime_error with a sentence when that fails.
 void write_check_report(const std::string& path, const CheckRecord& record);
