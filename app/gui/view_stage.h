@@ -55,6 +55,7 @@ class ViewStage {
   std::unique_ptr<ui::PolarView> view_;
   std::vector<std::unique_ptr<ui::PolarView>> tiles_;  // the split view's, one per source shown
   bool split_ = false;                                 // this frame is laid out as the split view
+  float sidebar_px_ = 0.0f;                            // the sidebar's width (window pixels), 0: none
   std::vector<ui::SourceLayer> layers_;                // this frame's, reused
   std::vector<ui::SourceMark> marks_;
   std::vector<std::pair<Pose, bool>> drawn_layers_key_;  // pose and dimming the cloud was built with

@@ -20,8 +20,9 @@ float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
   ImGui::SetNextWindowPos(viewport->WorkPos, ImGuiCond_Always);
   ImGui::SetNextWindowSize({sidebar_width(viewport->WorkSize.x, scale), height}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints({std::min(300.0f * scale, widest), height}, {widest, height});
+  // No background of ImGui's: the app clears the sidebar's rectangle to it (theme.h, sidebar_background).
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoCollapse |
-                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoBackground;
   float width = 0.0f;
   if (ImGui::Begin("ydscope", nullptr, flags)) {
     // Every widget leaves room on its right for its label, so none is cut off at a narrow sidebar.

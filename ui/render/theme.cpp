@@ -1,5 +1,6 @@
 #include "ui/render/theme.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include <imgui.h>
@@ -27,6 +28,19 @@ ImFont* g_display_font = nullptr;
 }  // namespace
 
 ImFont* display_font() { return g_display_font; }
+
+std::array<float, 4> sidebar_background() {
+  // In the 8-bit steps the blend works in: ImGui's colour as its vertices carry it, the clear's.
+  const ImU32 window = ImGui::GetColorU32(ImGuiCol_WindowBg);
+  const float alpha = static_cast<float>((window >> IM_COL32_A_SHIFT) & 0xFF) / 255.0f;
+  std::array<float, 4> fill{0.0f, 0.0f, 0.0f, 1.0f};
+  for (int i = 0; i < 3; ++i) {
+    const float over = static_cast<float>((window >> (IM_COL32_R_SHIFT + 8 * i)) & 0xFF) / 255.0f;
+    const float under = std::round(kBackground[i] * 255.0f) / 255.0f;
+    fill[static_cast<std::size_t>(i)] = over * alpha + under * (1.0f - alpha);
+  }
+  return fill;
+}
 
 Fonts apply_theme(float scale) {
   ImGuiIO& io = ImGui::GetIO();
