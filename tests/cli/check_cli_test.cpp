@@ -12,9 +12,12 @@
 
 #include "cli/cli_run_support.h"
 #include "support/session_test_support.h"
+#include "support/text_file.h"
 
 namespace ydscope {
 namespace {
+
+using test::read_text;
 
 using namespace test;
 
@@ -99,24 +102,24 @@ TEST_P(CheckRealUnit, TheManualsReadingOfAManualUnitPasses) {
 INSTANTIATE_TEST_SUITE_P(Models, CheckRealUnit, ::testing::Values(Model::G6, Model::TG30),
                          [](const auto& model) { return std::string(profile_for(model.param).name); });
 
-struct FaultCase {
+struct CheckFaultCase {
   const char* name;
   Model model;
   std::function<void(FaultConfig&)> inject;
   const char* fails;  // the one criterion id it must fail
 };
 
-class CheckFault : public ::testing::TestWithParam<FaultCase> {};
+class CheckFault : public ::testing::TestWithParam<CheckFaultCase> {};
 
 TEST_P(CheckFault, FailsExactlyTheCriterionItBreaks) {
-  const FaultCase& c = GetParam();
+  const CheckFaultCase& c = GetParam();
   SimOnPty sim(c.model, [&](SimServerOptions& o) { c.inject(o.device.faults); });
   const CliResult run = check(sim);
   EXPECT_EQ(run.status, 3) << run.out << run.err;
   EXPECT_EQ(failed_ids(run.out), c.fails) << run.out << run.err;
 }
 
-const FaultCase kFaults[] = {
+const CheckFaultCase kFaults[] = {
     {"Corruption", Model::G6, [](FaultConfig& f) { f.corrupt_byte_rate = 0.0005; }, "link"},
     {"LostPackets", Model::TG30, [](FaultConfig& f) { f.lost_packet_rate = 0.01; }, "link"},
     {"LostPacketsG1", Model::G1, [](FaultConfig& f) { f.lost_packet_rate = 0.01; }, "link"},
@@ -245,11 +248,6 @@ TEST(CheckCli, MistakesAreUsageErrorsWithOneSentence) {
     EXPECT_EQ(run.status, 2) << args << "\n" << run.out;
     EXPECT_NE(run.out.find("ydscope-cli check: "), std::string::npos) << args << "\n" << run.out;
   }
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 TEST(CheckCli, TheReportHoldsEveryCriterionAndThePictures) {

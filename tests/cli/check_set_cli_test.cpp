@@ -11,19 +11,17 @@
 #include "cli/cli_run_support.h"
 #include "support/session_test_support.h"
 #include "support/temp_dir.h"
+#include "support/text_file.h"
 
 namespace ydscope {
 namespace {
+
+using test::read_text;
 
 using namespace test;
 
 constexpr const char* kGood = "00000000000000AA";
 constexpr const char* kSlow = "00000000000000BB";
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 // The report in `folder` whose name begins with `serial` (SERIAL-YYYYMMDD-HHMMSS.html); empty if none.
 std::string report_of(const TempDir& folder, const std::string& serial) {

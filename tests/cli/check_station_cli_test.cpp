@@ -20,25 +20,16 @@
 #include "cli/cli_run_support.h"
 #include "core/sim/sim_server.h"
 #include "support/temp_dir.h"
+#include "support/text_file.h"
 
 namespace ydscope {
 namespace {
 
+using test::lines_of;
+using test::read_text;
+
 using namespace test;
 using namespace std::chrono_literals;
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) lines.push_back(line);
-  return lines;
-}
 
 // A CSV row's fields (the log's fields here hold no quotes or commas but the note, which comes last).
 std::vector<std::string> csv_fields(const std::string& line) {

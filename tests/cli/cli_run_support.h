@@ -16,6 +16,11 @@ using CliResult = ProgramRun;
 // `arguments` goes through the shell: quote paths with spaces.
 inline CliResult run_cli_apart(const std::string& arguments) { return run_program(YDSCOPE_CLI_PATH, arguments); }
 
+// As run_cli_apart, but killed after 20 s: for a command that could otherwise wait for ever.
+inline CliResult run_cli_bounded(const std::string& arguments) {
+  return run_program("timeout", "20 '" YDSCOPE_CLI_PATH "' " + arguments);
+}
+
 // Both streams in `out`, in the order they were written (err stays empty).
 inline CliResult run_cli(const std::string& arguments) {
   RunOptions options;

@@ -17,21 +17,14 @@
 #include "cli/cli_run_support.h"
 #include "support/session_test_support.h"
 #include "support/temp_dir.h"
+#include "support/text_file.h"
 
 namespace ydscope {
 namespace {
 
-using namespace test;
+using test::lines_of;
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  for (std::size_t end = text.find('\n'); end != std::string::npos; end = text.find('\n', start)) {
-    lines.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return lines;
-}
+using namespace test;
 
 TEST(HealthCli, AG6HealthErrorIsOneLineTheLapsCarryItTheSummaryToo) {
   SimOnPty sim(Model::G6, [](SimServerOptions& o) { o.device.faults.health_bits = 0x12; });

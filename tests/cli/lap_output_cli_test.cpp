@@ -16,9 +16,12 @@
 #include "core/record/recording_writer.h"
 #include "support/session_test_support.h"
 #include "support/temp_dir.h"
+#include "support/text_file.h"
 
 namespace ydscope {
 namespace {
+
+using test::lines_of;
 
 using test::CliResult;
 using test::run_cli_apart;
@@ -53,13 +56,6 @@ class LapOutputCli : public ::testing::Test {
 
   test::TempDir dir_{"lap-output-cli"};
 };
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 
 // The "t" of every lap line, in order.
 std::vector<double> lap_times(const std::string& jsonl) {

@@ -16,10 +16,6 @@ namespace {
 using test::RawRecording;
 
 // Under `timeout`: waiting the gap out at speed 1 fails the test instead of stalling it.
-test::CliResult run_bounded(const std::string& arguments) {
-  return test::run_program("timeout", "20 '" YDSCOPE_CLI_PATH "' " + arguments);
-}
-
 class ReplayGapsCli : public ::testing::Test {
  protected:
   // Device bytes at 1 and 2 s, then none for 59 s, then at 61 and 62 s; of `sources` lidars.
@@ -46,11 +42,11 @@ TEST_F(ReplayGapsCli, AGapIsSaidAndSkippedOrWaitedOut) {
     // Its bytes are no scan packets: one lidar's replay says so after the gap (no_lap_cli_test.cpp).
     const std::string no_lap =
         sources == 1 ? "ydscope-cli replay: no complete lap: its bytes are not G6 scan packets\n" : "";
-    const auto skipped = run_bounded("replay --format summary '" + file + "'");
+    const auto skipped = test::run_cli_bounded("replay --format summary '" + file + "'");
     EXPECT_EQ(skipped.status, 0) << sources << " lidars: " << skipped.err;
     EXPECT_EQ(skipped.err, said + "skipped to 61.0 s (--keep-gaps waits gaps out)\n" + no_lap);
     EXPECT_NE(skipped.out.find(R"("bytes":8)"), std::string::npos) << skipped.out;
-    const auto kept = run_bounded("replay --format summary --keep-gaps --speed 1000 '" + file + "'");
+    const auto kept = test::run_cli_bounded("replay --format summary --keep-gaps --speed 1000 '" + file + "'");
     EXPECT_EQ(kept.status, 0) << kept.err;
     EXPECT_EQ(kept.err, said + "waiting it out, playing on at 61.0 s (skipped without --keep-gaps)\n" + no_lap);
     EXPECT_EQ(kept.out, skipped.out) << "the same laps and times either way";

@@ -26,10 +26,6 @@ using Clock = std::chrono::steady_clock;
 constexpr auto kPatience = 20s;  // far beyond any wait the tests cause; a hang fails, not stalls
 
 // ydscope-cli under `timeout`, so a command that blocks fails the test instead of hanging it.
-test::CliResult run_bounded(const std::string& arguments) {
-  return test::run_program("timeout", "20 '" YDSCOPE_CLI_PATH "' " + arguments);
-}
-
 class WaitingInputCli : public ::testing::Test {
  protected:
   void SetUp() override { ASSERT_EQ(::mkfifo(fifo_.c_str(), 0600), 0); }
@@ -81,14 +77,14 @@ TEST_F(WaitingInputCli, AnInputWithoutAPacketInItsFirst4MiBIsGivenUp) {
   const std::string tail =
       " MiB without one valid G6 scan packet, so decode gave up on it; check that it holds the "
       "bytes of a lidar's port, and the model (--model)\n";
-  const auto zero = run_bounded("decode --model G6 /dev/zero");
+  const auto zero = test::run_cli_bounded("decode --model G6 /dev/zero");
   EXPECT_EQ(zero.status, 1);
   EXPECT_EQ(zero.err, "ydscope-cli decode: /dev/zero gave 4" + tail);
   EXPECT_EQ(zero.out, "");
-  const auto piped = run_bounded("decode --model G6 - < /dev/zero");
+  const auto piped = test::run_cli_bounded("decode --model G6 - < /dev/zero");
   EXPECT_EQ(piped.status, 1);
   EXPECT_EQ(piped.err, "ydscope-cli decode: standard input gave 4" + tail);
-  const auto mcap = run_bounded("decode --model G6 --mcap '" + dir_.file("x.mcap") + "' '" + fifo_ + "'");
+  const auto mcap = test::run_cli_bounded("decode --model G6 --mcap '" + dir_.file("x.mcap") + "' '" + fifo_ + "'");
   EXPECT_EQ(mcap.status, 2);
   EXPECT_EQ(mcap.err, "ydscope-cli decode: --mcap needs a FILE, not standard input, a FIFO or a device\n");
 }
@@ -98,10 +94,10 @@ TEST_F(WaitingInputCli, CommandsThatReadARecordingTwiceRefuseAFifoAtOnce) {
       fifo_ +
       " is a FIFO (named pipe), not a file; ydscope reads a recording more than once, so save it to a file "
       "first\n";
-  const auto replay = run_bounded("replay '" + fifo_ + "'");
+  const auto replay = test::run_cli_bounded("replay '" + fifo_ + "'");
   EXPECT_EQ(replay.status, 1);
   EXPECT_EQ(replay.err, "ydscope-cli replay: " + sentence);
-  const auto exported = run_bounded("export '" + fifo_ + "' --mcap '" + dir_.file("x.mcap") + "'");
+  const auto exported = test::run_cli_bounded("export '" + fifo_ + "' --mcap '" + dir_.file("x.mcap") + "'");
   EXPECT_EQ(exported.status, 1);
   EXPECT_EQ(exported.err, "ydscope-cli export: " + sentence);
 }

@@ -23,8 +23,6 @@
 namespace ydscope {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(CdrWriter, AlignsFromTheEndOfTheEncapsulationHeader) {
   std::vector<std::uint8_t> out;
   CdrWriter cdr(out);
@@ -39,14 +37,14 @@ TEST(CdrWriter, AlignsFromTheEndOfTheEncapsulationHeader) {
 }
 
 TEST(RosAngle, FollowsTheDriversReversionAndInversion) {
-  RosFrameOptions frame;                                     // reversion and inverted, as the official parameter files
-  EXPECT_NEAR(ros_angle_rad(0.0f, frame), kPi, 1e-12);       // device 0 deg -> behind
-  EXPECT_NEAR(ros_angle_rad(90.0f, frame), kPi / 2, 1e-12);  // clockwise 90 -> counter-clockwise +90
+  RosFrameOptions frame;  // reversion and inverted, as the official parameter files
+  EXPECT_NEAR(ros_angle_rad(0.0f, frame), std::numbers::pi, 1e-12);       // device 0 deg -> behind
+  EXPECT_NEAR(ros_angle_rad(90.0f, frame), std::numbers::pi / 2, 1e-12);  // clockwise 90 -> counter-clockwise +90
   EXPECT_NEAR(ros_angle_rad(180.0f, frame), 0.0, 1e-12);
-  EXPECT_NEAR(ros_angle_rad(270.0f, frame), -kPi / 2, 1e-12);
+  EXPECT_NEAR(ros_angle_rad(270.0f, frame), -std::numbers::pi / 2, 1e-12);
   frame.reversion = frame.inverted = false;
-  EXPECT_NEAR(ros_angle_rad(270.0f, frame), -kPi / 2, 1e-12);
-  EXPECT_NEAR(ros_angle_rad(90.0f, frame), kPi / 2, 1e-12);
+  EXPECT_NEAR(ros_angle_rad(270.0f, frame), -std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(ros_angle_rad(90.0f, frame), std::numbers::pi / 2, 1e-12);
 }
 
 Lap four_point_lap() {
@@ -94,10 +92,10 @@ TEST(LaserScan, BinsLikeTheOfficialDriver) {
   EXPECT_EQ(r.i32(), 12);
   EXPECT_EQ(r.u32(), 123u);
   EXPECT_EQ(r.str(), "lidar_0");
-  EXPECT_FLOAT_EQ(r.f32(), static_cast<float>(-kPi));
-  EXPECT_FLOAT_EQ(r.f32(), static_cast<float>(kPi));
+  EXPECT_FLOAT_EQ(r.f32(), static_cast<float>(-std::numbers::pi));
+  EXPECT_FLOAT_EQ(r.f32(), static_cast<float>(std::numbers::pi));
   const float increment = r.f32();
-  EXPECT_FLOAT_EQ(increment, static_cast<float>(2 * kPi / 3));  // 4 points: 3 intervals
+  EXPECT_FLOAT_EQ(increment, static_cast<float>(2 * std::numbers::pi / 3));  // 4 points: 3 intervals
   EXPECT_FLOAT_EQ(r.f32(), 0.1f / 4);
   EXPECT_FLOAT_EQ(r.f32(), 0.1f);
   EXPECT_FLOAT_EQ(r.f32(), 0.1f);

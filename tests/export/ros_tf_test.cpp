@@ -12,8 +12,6 @@
 namespace ydscope {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // p' = q p q* + t, with the rotation written out as a matrix.
 void apply(const RosTransform& t, const double p[3], double out[3]) {
   const double x = t.rotation[0], y = t.rotation[1], z = t.rotation[2], w = t.rotation[3];
@@ -63,8 +61,8 @@ TEST(RosTf, ARep103PoseIsTheTransformAsAUrdfWritesIt) {
   const RosTransform t = ros_transform_of(pose, {}, "base_link", "front");
   EXPECT_NEAR(t.translation[0], 1.0, 1e-12);
   EXPECT_NEAR(t.translation[1], 0.5, 1e-12);
-  EXPECT_NEAR(t.rotation[2], std::sin(kPi / 4), 1e-12);  // yaw +90: q = (0, 0, sin 45, cos 45)
-  EXPECT_NEAR(t.rotation[3], std::cos(kPi / 4), 1e-12);
+  EXPECT_NEAR(t.rotation[2], std::sin(std::numbers::pi / 4), 1e-12);  // yaw +90: q = (0, 0, sin 45, cos 45)
+  EXPECT_NEAR(t.rotation[3], std::cos(std::numbers::pi / 4), 1e-12);
   // The unit's 180 degrees is the laser's forward: 2 m along it lands 2 m to the robot's left of the mount.
   const double a = ros_angle_rad(180.0f, {});
   const double laser[3] = {2.0 * std::cos(a), 2.0 * std::sin(a), 0};
@@ -74,8 +72,8 @@ TEST(RosTf, ARep103PoseIsTheTransformAsAUrdfWritesIt) {
   EXPECT_NEAR(robot[1], 2.5, 1e-6);
   // Upside down: a roll of 180 degrees about the laser's x, then the yaw.
   const RosTransform flipped = ros_transform_of({0, 0, 90, true}, {}, "base_link", "front");
-  EXPECT_NEAR(flipped.rotation[0], std::cos(kPi / 4), 1e-12);
-  EXPECT_NEAR(flipped.rotation[1], std::sin(kPi / 4), 1e-12);
+  EXPECT_NEAR(flipped.rotation[0], std::cos(std::numbers::pi / 4), 1e-12);
+  EXPECT_NEAR(flipped.rotation[1], std::sin(std::numbers::pi / 4), 1e-12);
   EXPECT_NEAR(flipped.rotation[2], 0.0, 1e-12);
   EXPECT_NEAR(flipped.rotation[3], 0.0, 1e-12);
 }
@@ -99,7 +97,7 @@ TEST(RosTf, TheUnitFrameHasTheUnitsAnglesCounterClockwiseAboutItsZ) {
     for (const float angle : {0.0f, 30.0f, 90.0f, 181.0f, 300.0f}) {
       SCOPED_TRACE(std::to_string(angle) + (frame.reversion ? " rev" : "") + (frame.inverted ? " inv" : ""));
       // Device angle a, counter-clockwise about the unit frame's z, 2 m out...
-      const double a = angle * kPi / 180.0;
+      const double a = angle * std::numbers::pi / 180.0;
       const double in_unit[3] = {2.0 * std::cos(a), 2.0 * std::sin(a), 0};
       double in_laser[3];
       apply(t, in_unit, in_laser);

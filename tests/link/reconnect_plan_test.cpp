@@ -13,7 +13,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-SessionConfig config_for(const std::string& address) {
+SessionConfig backoff_config(const std::string& address) {
   SessionConfig config;
   config.address = address;
   config.first_backoff = 250ms;
@@ -28,7 +28,7 @@ std::vector<long> delays(ReconnectPlan& plan, int count) {
 }
 
 TEST(ReconnectPlan, ASerialPortIsWatchedAndItsWaitDoublesUpToTheMaximum) {
-  ReconnectPlan plan(config_for("/dev/ttyUSB0"));
+  ReconnectPlan plan(backoff_config("/dev/ttyUSB0"));
   ASSERT_TRUE(plan.watched_path());
   EXPECT_EQ(*plan.watched_path(), "/dev/ttyUSB0");
   EXPECT_EQ(delays(plan, 7), (std::vector<long>{250, 500, 1000, 2000, 4000, 4000, 4000}));
@@ -37,21 +37,21 @@ TEST(ReconnectPlan, ASerialPortIsWatchedAndItsWaitDoublesUpToTheMaximum) {
 }
 
 TEST(ReconnectPlan, ATcpBridgeIsNotWatchedAndWaitsUnderASecond) {
-  ReconnectPlan plan(config_for("tcp://192.168.1.20:2000"));
+  ReconnectPlan plan(backoff_config("tcp://192.168.1.20:2000"));
   EXPECT_FALSE(plan.watched_path());
   EXPECT_EQ(delays(plan, 4), (std::vector<long>{250, 500, 750, 750}));
   EXPECT_EQ(plan.retry_text(true), "; retrying in 0.75 s");
 }
 
 TEST(ReconnectPlan, AGoodStartBeginsTheWaitsAgain) {
-  ReconnectPlan plan(config_for("/dev/ttyUSB0"));
+  ReconnectPlan plan(backoff_config("/dev/ttyUSB0"));
   delays(plan, 5);
   plan.started();
   EXPECT_EQ(plan.delay(), 250ms);
 }
 
 TEST(ReconnectPlan, ALinkOpenedByItsOwnOpenerIsNeitherWatchedNorCapped) {
-  SessionConfig config = config_for("/dev/ttyUSB0");
+  SessionConfig config = backoff_config("/dev/ttyUSB0");
   config.open_link = [](boost::asio::io_context&, std::uint32_t, std::string&) -> std::unique_ptr<ByteLink> {
     return nullptr;
   };
@@ -67,11 +67,11 @@ TEST(ReconnectPlan, APathThatIsNoDeviceIsHopelessAMissingOneIsNot) {
   std::filesystem::create_directories(dir);
   const auto file = dir / "lidar.txt";
   std::ofstream(file) << "not a port\n";
-  EXPECT_TRUE(ReconnectPlan(config_for(file.string())).hopeless());
-  EXPECT_TRUE(ReconnectPlan(config_for(dir.string())).hopeless());
-  EXPECT_FALSE(ReconnectPlan(config_for((dir / "ttyUSB7").string())).hopeless()) << "it may be plugged in";
-  EXPECT_FALSE(ReconnectPlan(config_for("/dev/null")).hopeless()) << "a character device";
-  EXPECT_FALSE(ReconnectPlan(config_for("tcp://127.0.0.1:2000")).hopeless());
+  EXPECT_TRUE(ReconnectPlan(backoff_config(file.string())).hopeless());
+  EXPECT_TRUE(ReconnectPlan(backoff_config(dir.string())).hopeless());
+  EXPECT_FALSE(ReconnectPlan(backoff_config((dir / "ttyUSB7").string())).hopeless()) << "it may be plugged in";
+  EXPECT_FALSE(ReconnectPlan(backoff_config("/dev/null")).hopeless()) << "a character device";
+  EXPECT_FALSE(ReconnectPlan(backoff_config("tcp://127.0.0.1:2000")).hopeless());
   std::filesystem::remove_all(dir);
 }
 

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Bytes = std::vector<std::uint8_t>;
-constexpr auto kHangGuard = std::chrono::seconds(10);
+constexpr auto kReplayHangGuard = std::chrono::seconds(10);
 
 class ReplayLinkTest : public ::testing::Test {
  protected:
@@ -51,7 +51,7 @@ class ReplayLinkTest : public ::testing::Test {
   // Reads until `want` bytes or an error; returns the bytes and the error that ended it.
   static std::pair<Bytes, boost::system::error_code> read_until(boost::asio::io_context& io, ByteLink& link,
                                                                 std::size_t want, std::size_t buffer_size = 5) {
-    auto result = test::read_from_link(io, link, want, buffer_size, kHangGuard);
+    auto result = test::read_from_link(io, link, want, buffer_size, kReplayHangGuard);
     return {std::move(result.bytes), result.end};
   }
 
@@ -175,7 +175,7 @@ TEST_F(ReplayLinkTest, PausedPlaybackDeliversNothingUntilResumed) {
 
   link->set_paused(false);
   io.restart();
-  io.run_for(kHangGuard);
+  io.run_for(kReplayHangGuard);
   ASSERT_TRUE(called);
   EXPECT_EQ(Bytes(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(delivered)),
             Bytes(device.begin(), device.begin() + 7));
@@ -232,7 +232,7 @@ TEST_F(ReplayLinkTest, WritesAreAcceptedAndIgnored) {
     EXPECT_FALSE(ec);
     written = n;
   });
-  io.run_for(kHangGuard);
+  io.run_for(kReplayHangGuard);
   EXPECT_EQ(written, 2u);
   EXPECT_FALSE(link->set_baud(512000, error));
   EXPECT_NE(error.find("no line rate"), std::string::npos);
@@ -248,7 +248,7 @@ TEST_F(ReplayLinkTest, CloseAbortsAWaitingRead) {
   boost::system::error_code seen;
   link->async_read_some(buffer, [&](const boost::system::error_code& ec, std::size_t) { seen = ec; });
   boost::asio::post(io, [&] { link->close(); });
-  io.run_for(kHangGuard);
+  io.run_for(kReplayHangGuard);
   EXPECT_EQ(seen, boost::asio::error::operation_aborted);
 }
 

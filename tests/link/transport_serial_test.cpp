@@ -58,7 +58,7 @@ class PseudoTerminal {
   std::string slave_path_;
 };
 
-constexpr auto kHangGuard = std::chrono::seconds(5);
+constexpr auto kSerialHangGuard = std::chrono::seconds(5);
 
 // Opens the pty's slave the way the session opens a port; a failure fails the test with its sentence.
 std::unique_ptr<SerialLink> open_slave(boost::asio::io_context& io, const PseudoTerminal& pty, std::uint32_t baud) {
@@ -121,7 +121,7 @@ TEST(SerialLink, CarriesEveryByteValueBothWays) {
   for (std::size_t i = 0; i < device_bytes.size(); ++i) device_bytes[i] = static_cast<std::uint8_t>(i);
   ASSERT_EQ(::write(pty.master(), device_bytes.data(), device_bytes.size()), static_cast<ssize_t>(device_bytes.size()));
 
-  const auto received = test::read_from_link(io, *link, device_bytes.size(), 64, kHangGuard);
+  const auto received = test::read_from_link(io, *link, device_bytes.size(), 64, kSerialHangGuard);
   EXPECT_FALSE(received.end) << received.end.message();
   EXPECT_EQ(received.bytes, device_bytes);
 
@@ -133,7 +133,7 @@ TEST(SerialLink, CarriesEveryByteValueBothWays) {
     written = true;
   });
   io.restart();
-  io.run_for(kHangGuard);
+  io.run_for(kSerialHangGuard);
   EXPECT_TRUE(written);
   EXPECT_EQ(pty.read_master(commands.size()), std::vector<std::uint8_t>(commands.begin(), commands.end()));
   // No echo: the master saw only the commands, not the 256 bytes it sent.
@@ -154,7 +154,7 @@ TEST(SerialLink, CloseAbortsAPendingRead) {
     called = true;
   });
   boost::asio::post(io, [&] { link->close(); });
-  io.run_for(kHangGuard);
+  io.run_for(kSerialHangGuard);
   EXPECT_TRUE(called);
   EXPECT_EQ(seen, boost::asio::error::operation_aborted);
   EXPECT_EQ(link->native_handle(), -1);
@@ -173,7 +173,7 @@ TEST(SerialLink, InputThatArrivesWhileUnwatchedIsAllReadAfterwards) {
   // Nothing watches the port, so the context has nothing to do while the bytes pile up.
   EXPECT_EQ(io.poll(), 0u);
 
-  const auto received = test::read_from_link(io, *link, device_bytes.size(), 4096, kHangGuard);
+  const auto received = test::read_from_link(io, *link, device_bytes.size(), 4096, kSerialHangGuard);
   EXPECT_FALSE(received.end) << received.end.message();
   EXPECT_EQ(received.bytes, device_bytes);
 }
@@ -187,7 +187,7 @@ TEST(SerialLink, CommandsGoOutWhileInputIsUnwatched) {
   const std::array<std::uint8_t, 2> stop{0xA5, 0x65};
   bool written = false;
   link->async_write(stop, [&](const boost::system::error_code& ec, std::size_t) { written = !ec; });
-  io.run_for(kHangGuard);
+  io.run_for(kSerialHangGuard);
   EXPECT_TRUE(written);
   EXPECT_EQ(pty.read_master(stop.size()), std::vector<std::uint8_t>(stop.begin(), stop.end()));
 }

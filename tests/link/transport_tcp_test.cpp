@@ -19,7 +19,7 @@ namespace ydscope {
 namespace {
 
 using boost::asio::ip::tcp;
-constexpr auto kHangGuard = std::chrono::seconds(5);
+constexpr auto kTcpHangGuard = std::chrono::seconds(5);
 
 TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
   boost::asio::io_context io;
@@ -39,7 +39,7 @@ TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
 
   const std::vector<std::uint8_t> device_bytes{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81, 0xAA, 0x55};
   boost::asio::write(bridge, boost::asio::buffer(device_bytes));
-  const auto received = test::read_from_link(io, *link, device_bytes.size(), 4, kHangGuard);
+  const auto received = test::read_from_link(io, *link, device_bytes.size(), 4, kTcpHangGuard);
   EXPECT_FALSE(received.end) << received.end.message();
   EXPECT_EQ(received.bytes, device_bytes);
 
@@ -51,7 +51,7 @@ TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
     written = true;
   });
   io.restart();
-  io.run_for(kHangGuard);
+  io.run_for(kTcpHangGuard);
   ASSERT_TRUE(written);
   std::array<std::uint8_t, 2> at_bridge{};
   boost::asio::read(bridge, boost::asio::buffer(at_bridge));
@@ -59,7 +59,7 @@ TEST(TcpLink, ConnectsAndCarriesBytesBothWays) {
 
   // The bridge hanging up is end-of-file for the session (it reconnects).
   bridge.close();
-  const auto after_hang_up = test::read_from_link(io, *link, SIZE_MAX, 4, kHangGuard);
+  const auto after_hang_up = test::read_from_link(io, *link, SIZE_MAX, 4, kTcpHangGuard);
   EXPECT_TRUE(after_hang_up.bytes.empty());
   EXPECT_EQ(after_hang_up.end, boost::asio::error::eof);
 }
@@ -130,7 +130,7 @@ TEST(TcpLink, AConnectThatWaitsLeavesTheIoContextFreeForOtherWork) {
   boost::asio::steady_timer other_work(io, std::chrono::milliseconds(20));
   other_work.async_wait([&](const boost::system::error_code&) { timer_fired_while_connecting = !connect_done; });
   io.restart();
-  io.run_for(kHangGuard);
+  io.run_for(kTcpHangGuard);
   EXPECT_TRUE(connect_done);
   EXPECT_TRUE(timer_fired_while_connecting);
   EXPECT_NE(error.find("no answer within 1000 ms"), std::string::npos) << error;

@@ -15,7 +15,7 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-constexpr std::int64_t kStart = 7'000'000'000;
+constexpr std::int64_t kSourcesStart = 7'000'000'000;
 
 class RecordingSourcesTest : public ::testing::Test {
  protected:
@@ -39,17 +39,17 @@ TEST_F(RecordingSourcesTest, ThreeSourcesRoundTripWithTheirIdsAndMetadata) {
       path("three.ydrec"),
       {source("left", "G1", "/dev/pts/1", {0.1, 0.2, 90, false}), source("mid", "G6", "/dev/pts/2", {0, 0, 0, false}),
        source("right", "TG30", "tcp://h:1", {-0.1, 0.2, -90, true})},
-      kStart, error);
+      kSourcesStart, error);
   ASSERT_TRUE(writer) << error;
-  ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{1, 1}, kStart + 10, 0));
-  ASSERT_TRUE(writer->append(Direction::HostToDevice, Bytes{0xA5, 0x60}, kStart + 20, 2));
-  ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{2, 2, 2}, kStart + 30, 1));
+  ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{1, 1}, kSourcesStart + 10, 0));
+  ASSERT_TRUE(writer->append(Direction::HostToDevice, Bytes{0xA5, 0x60}, kSourcesStart + 20, 2));
+  ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{2, 2, 2}, kSourcesStart + 30, 1));
   RecordingMetadata device;
   device.serial = "123";
-  ASSERT_TRUE(writer->update_metadata(device, kStart + 40, 2));
-  ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{3}, kStart + 50, 2));
+  ASSERT_TRUE(writer->update_metadata(device, kSourcesStart + 40, 2));
+  ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{3}, kSourcesStart + 50, 2));
   // A source the file was not made with is refused, in words.
-  EXPECT_FALSE(writer->append(Direction::DeviceToHost, Bytes{9}, kStart + 60, 3));
+  EXPECT_FALSE(writer->append(Direction::DeviceToHost, Bytes{9}, kSourcesStart + 60, 3));
   EXPECT_NE(writer->error().find("records 3 sources"), std::string::npos) << writer->error();
   writer->close();
 
@@ -106,12 +106,12 @@ TEST_F(RecordingSourcesTest, OneSourceStillWritesVersionOneByteForByte) {
   metadata.model = "G6";
   metadata.start_wall_time = "2026-12-02T08:00:00.000Z";
   std::string error;
-  auto one = RecordingWriter::create(path("one.ydrec"), metadata, kStart, error);
+  auto one = RecordingWriter::create(path("one.ydrec"), metadata, kSourcesStart, error);
   ASSERT_TRUE(one) << error;
-  auto listed = RecordingWriter::create_sources(path("listed.ydrec"), std::vector{metadata}, kStart, error);
+  auto listed = RecordingWriter::create_sources(path("listed.ydrec"), std::vector{metadata}, kSourcesStart, error);
   ASSERT_TRUE(listed) << error;
   for (RecordingWriter* writer : {one.get(), listed.get()}) {
-    ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{0xAA, 0x55}, kStart + 5));
+    ASSERT_TRUE(writer->append(Direction::DeviceToHost, Bytes{0xAA, 0x55}, kSourcesStart + 5));
     writer->close();
   }
   const Bytes bytes = test::read_file_bytes(path("one.ydrec"));

@@ -16,23 +16,15 @@ using test::bytes;
 using test::exchange;
 using test::kMs;
 
-// A5 5A <len u32 LE, mode in the top 2 bits> <type> for a single reply.
-std::vector<std::uint8_t> single(std::uint8_t length, std::uint8_t type, std::vector<std::uint8_t> payload) {
-  std::vector<std::uint8_t> out = {0xA5, 0x5A, length, 0x00, 0x00, 0x00, type};
-  for (const std::uint8_t byte : payload) out.push_back(byte);  // (insert trips a GCC 12 false warning)
-  return out;
-}
-std::vector<std::uint8_t> one_byte(std::uint8_t value) { return single(0x01, 0x04, {value}); }
-std::vector<std::uint8_t> scan_hz(std::uint32_t centihz) {
-  return single(0x04, 0x04,
-                {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
-                 static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
-}
-const std::vector<std::uint8_t> kNoReply;
-const std::vector<std::uint8_t> kScanHeader{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81};
+using test::kNoReply;
+using test::kScanHeader;
+using test::scan_hz_reply;
+using test::single_reply;
+
+std::vector<std::uint8_t> one_byte(std::uint8_t value) { return single_reply(0x01, 0x04, {value}); }
 
 bool is_g1(Model m) { return m == Model::G1; }
-bool is_tg(Model m) { return m == Model::TG15 || m == Model::TG30 || m == Model::TG50; }
+using test::is_tg;
 
 class Conformance : public ::testing::TestWithParam<Model> {
  protected:
@@ -67,7 +59,7 @@ TEST_P(Conformance, DeviceInfoCarriesModelFirmwareHardwareSerial) {
   const auto reply = exchange(lidar, {0xA5, 0x90}, now);
   ASSERT_EQ(reply.size(), 7u + 20u);
   const std::vector<std::uint8_t> head(reply.begin(), reply.begin() + 11);
-  EXPECT_EQ(head, single(0x14, 0x04, {profile().model_code, 2, 5, 3}));
+  EXPECT_EQ(head, single_reply(0x14, 0x04, {profile().model_code, 2, 5, 3}));
   for (std::size_t i = 11; i < reply.size(); ++i) EXPECT_LT(reply[i], 10) << "serial digit " << i - 11;
   // The model codes seen in the field (docs/conventions.md): G1 19, G6 13, TG15/30/50 100/101/102.
   const std::map<Model, int> codes{
@@ -77,7 +69,7 @@ TEST_P(Conformance, DeviceInfoCarriesModelFirmwareHardwareSerial) {
 
 TEST_P(Conformance, HealthAnswersOnTheManualsCommandOnly) {
   VirtualLidar lidar(config());
-  EXPECT_EQ(exchange(lidar, {0xA5, health_code()}, now), single(0x03, 0x06, {0x00, 0x00, 0x00}));
+  EXPECT_EQ(exchange(lidar, {0xA5, health_code()}, now), single_reply(0x03, 0x06, {0x00, 0x00, 0x00}));
   EXPECT_EQ(exchange(lidar, {0xA5, other_health_code()}, now), kNoReply);
   EXPECT_EQ(lidar.counters().unsupported, 1u);
 }
@@ -86,8 +78,8 @@ TEST_P(Conformance, RaisedHealthBitsShowInTheHealthReply) {
   VirtualLidarConfig c = config();
   c.faults.health_bits = 0x05;
   VirtualLidar lidar(c);
-  const auto expected = is_g1(GetParam()) ? single(0x03, 0x06, {0x05, 0x00, 0x00})   // status bits
-                                          : single(0x03, 0x06, {0x02, 0x05, 0x00});  // error + code
+  const auto expected = is_g1(GetParam()) ? single_reply(0x03, 0x06, {0x05, 0x00, 0x00})   // status bits
+                                          : single_reply(0x03, 0x06, {0x02, 0x05, 0x00});  // error + code
   EXPECT_EQ(exchange(lidar, {0xA5, health_code()}, now), expected);
 }
 
@@ -96,18 +88,18 @@ TEST_P(Conformance, HealthQuirkAnswersOnlyTheOtherCommand) {
   c.health_quirk = true;
   VirtualLidar lidar(c);
   EXPECT_EQ(exchange(lidar, {0xA5, health_code()}, now), kNoReply);
-  EXPECT_EQ(exchange(lidar, {0xA5, other_health_code()}, now), single(0x03, 0x06, {0x00, 0x00, 0x00}));
+  EXPECT_EQ(exchange(lidar, {0xA5, other_health_code()}, now), single_reply(0x03, 0x06, {0x00, 0x00, 0x00}));
 }
 
 TEST_P(Conformance, ScanFrequencySteppingAndReadBack) {
   VirtualLidar lidar(config());
   const std::uint32_t f = default_centihz();
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(f));
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x09}, now), scan_hz(f + 10));
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz(f + 110));
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0A}, now), scan_hz(f + 100));
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0C}, now), scan_hz(f));
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(f));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(f));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x09}, now), scan_hz_reply(f + 10));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz_reply(f + 110));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0A}, now), scan_hz_reply(f + 100));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0C}, now), scan_hz_reply(f));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(f));
   EXPECT_EQ(lidar.scan_centihz(), f);
 }
 
@@ -116,10 +108,10 @@ TEST_P(Conformance, ScanFrequencyIsClampedToTheModelsLimits) {
   const auto max = static_cast<std::uint32_t>(profile().max_scan_hz * 100 + 0.5);
   const auto min = static_cast<std::uint32_t>(profile().min_scan_hz * 100 + 0.5);
   for (int i = 0; i < 20; ++i) exchange(lidar, {0xA5, 0x0B}, now);
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x09}, now), scan_hz(max));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x09}, now), scan_hz_reply(max));
   for (int i = 0; i < 20; ++i) exchange(lidar, {0xA5, 0x0C}, now);
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0A}, now), scan_hz(min));
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x09}, now), scan_hz(min + 10));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0A}, now), scan_hz_reply(min));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x09}, now), scan_hz_reply(min + 10));
 }
 
 TEST_P(Conformance, RangingReadBackAndCycling) {
@@ -188,7 +180,7 @@ TEST_P(Conformance, RestartAnswersNothingAndRestoresPowerOnState) {
   EXPECT_EQ(exchange(lidar, {0xA5, restart_code()}, now), kNoReply);
   EXPECT_EQ(lidar.counters().restarts, 1u);
   EXPECT_FALSE(lidar.power_down_protection());
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(default_centihz()));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(default_centihz()));
 }
 
 TEST_P(Conformance, UnknownCodesAndStrayBytesGetNoReply) {

@@ -11,11 +11,12 @@
 
 #include "core/protocol/commands.h"
 #include "core/protocol/scan_packet.h"
+#include "sim/sim_test_support.h"
 
 namespace ydscope {
 namespace {
 
-constexpr std::int64_t kMs = 1'000'000;
+using test::kMs;
 
 std::vector<std::uint8_t> packet_of(std::size_t size) {
   std::vector<std::uint8_t> packet(size);

@@ -13,6 +13,7 @@
 #include "core/protocol/scan_decoder.h"
 #include "core/sim/sim_server.h"
 #include "sim/host_port.h"
+#include "sim/sim_test_support.h"
 #include "support/field_decoder.h"
 
 namespace ydscope {
@@ -22,7 +23,7 @@ using namespace std::chrono_literals;
 using test::Clock;
 using test::HostPort;
 
-const std::vector<std::uint8_t> kScanHeader{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81};
+using test::kScanHeader;
 
 std::filesystem::path temp_root() {
   return std::filesystem::temp_directory_path() / ("ydscope-sim-test-" + std::to_string(::getpid()));

@@ -35,4 +35,24 @@ inline std::vector<std::uint8_t> run_for(VirtualLidar& lidar, std::int64_t& now,
 
 inline std::vector<std::uint8_t> bytes(std::initializer_list<std::uint8_t> list) { return list; }
 
+// A single reply written out as the manuals give it (A5 5A, u32 length | mode 0 << 30, type code,
+// payload), not built with the encoders under test.
+inline std::vector<std::uint8_t> single_reply(std::uint8_t length, std::uint8_t type,
+                                              const std::vector<std::uint8_t>& payload) {
+  std::vector<std::uint8_t> out = {0xA5, 0x5A, length, 0x00, 0x00, 0x00, type};
+  for (const std::uint8_t byte : payload) out.push_back(byte);  // (insert trips a GCC 12 false warning)
+  return out;
+}
+// The scan frequency replies (A5 09/0B/0D...): 4 bytes, hundredths of a hertz.
+inline std::vector<std::uint8_t> scan_hz_reply(std::uint32_t centihz) {
+  return single_reply(0x04, 0x04,
+                      {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
+                       static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
+}
+inline const std::vector<std::uint8_t> kNoReply;
+// The reply header that opens a scan (continuous mode, type 81).
+inline const std::vector<std::uint8_t> kScanHeader{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81};
+
+inline bool is_tg(Model m) { return m == Model::TG15 || m == Model::TG30 || m == Model::TG50; }
+
 }  // namespace ydscope::test

@@ -31,22 +31,13 @@ using test::exchange;
 using test::kMs;
 using Bytes = std::vector<std::uint8_t>;
 
-Bytes single(std::uint8_t length, std::uint8_t type, const Bytes& payload) {
-  Bytes out = {0xA5, 0x5A, length, 0x00, 0x00, 0x00, type};
-  for (const std::uint8_t byte : payload) out.push_back(byte);
-  return out;
-}
-Bytes scan_hz(std::uint32_t centihz) {
-  return single(0x04, 0x04,
-                {static_cast<std::uint8_t>(centihz & 0xFF), static_cast<std::uint8_t>(centihz >> 8),
-                 static_cast<std::uint8_t>(centihz >> 16), static_cast<std::uint8_t>(centihz >> 24)});
-}
-const Bytes kNoReply;
-const Bytes kHealthGood = single(0x03, 0x06, {0x00, 0x00, 0x00});
-const Bytes kZeroOffsetNone = single(0x04, 0x04, {0x00, 0x00, 0x00, 0x00});
-const Bytes kScanHeader{0xA5, 0x5A, 0x05, 0x00, 0x00, 0x40, 0x81};
-
-bool is_tg(Model m) { return m == Model::TG15 || m == Model::TG30 || m == Model::TG50; }
+using test::is_tg;
+using test::kNoReply;
+using test::kScanHeader;
+using test::scan_hz_reply;
+using test::single_reply;
+const Bytes kHealthGood = single_reply(0x03, 0x06, {0x00, 0x00, 0x00});
+const Bytes kZeroOffsetNone = single_reply(0x04, 0x04, {0x00, 0x00, 0x00, 0x00});
 
 class VendorSdkStartup : public ::testing::TestWithParam<Model> {
  protected:
@@ -75,25 +66,25 @@ TEST_P(VendorSdkStartup, EveryRequestIsAnsweredAsTheSdkChecksIt) {
 
   const Bytes info = exchange(lidar, {0xA5, 0x90}, now);
   ASSERT_EQ(info.size(), 27u);
-  EXPECT_EQ(Bytes(info.begin(), info.begin() + 8), single(0x14, 0x04, {profile().model_code}));
+  EXPECT_EQ(Bytes(info.begin(), info.begin() + 8), single_reply(0x14, 0x04, {profile().model_code}));
 
   if (is_tg(model)) {
-    EXPECT_EQ(exchange(lidar, {0xA5, 0xD1}, now), single(0x01, 0x04, {0x02}));  // 9 kHz
+    EXPECT_EQ(exchange(lidar, {0xA5, 0xD1}, now), single_reply(0x01, 0x04, {0x02}));  // 9 kHz
   }
 
   // Scan frequency toward the yaml's 10 Hz. TG reports 0.4 Hz high (the SDK subtracts it), so at
   // its default 10 Hz the SDK sees 10.0 and steps nothing.
   if (model == Model::G1) {
-    EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(900));
-    EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz(1000));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(900));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz_reply(1000));
   } else if (model == Model::G6) {
-    EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(800));
-    EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz(900));
-    EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz(1000));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(800));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz_reply(900));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0x0B}, now), scan_hz_reply(1000));
   } else {
-    EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(1040));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(1040));
   }
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(is_tg(model) ? 1040 : 1000));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(is_tg(model) ? 1040 : 1000));
   EXPECT_EQ(lidar.scan_centihz(), 1000u) << "the motor runs at the 10 Hz the host asked for";
 
   if (model == Model::G1 || is_tg(model)) {
@@ -102,7 +93,7 @@ TEST_P(VendorSdkStartup, EveryRequestIsAnsweredAsTheSdkChecksIt) {
 
   sdk_stop(lidar);
   if (model == Model::G6) {
-    EXPECT_EQ(exchange(lidar, {0xA5, 0xD1}, now), single(0x01, 0x04, {0x02}));
+    EXPECT_EQ(exchange(lidar, {0xA5, 0xD1}, now), single_reply(0x01, 0x04, {0x02}));
   }
   exchange(lidar, {0xA5, 0x60}, now, 0);
   now += 200 * kMs;
@@ -110,7 +101,7 @@ TEST_P(VendorSdkStartup, EveryRequestIsAnsweredAsTheSdkChecksIt) {
   lidar.produce(now, stream);
   ASSERT_GE(stream.size(), 7u + 27u + 10u);
   EXPECT_EQ(Bytes(stream.begin(), stream.begin() + 7), kScanHeader);
-  EXPECT_EQ(Bytes(stream.begin() + 7, stream.begin() + 15), single(0x14, 0x04, {profile().model_code}))
+  EXPECT_EQ(Bytes(stream.begin() + 7, stream.begin() + 15), single_reply(0x14, 0x04, {profile().model_code}))
       << "the device-info frame the SDK waits up to 1 s for";
   EXPECT_EQ(Bytes(stream.begin() + 15, stream.begin() + 34), Bytes(info.begin() + 8, info.end()));
   // Then the stream: G1 puts its LastCRC byte before the first zero packet, a real TG its byte.
@@ -145,8 +136,8 @@ TEST_P(VendorSdkStartup, HealthFaultsReachTheSdksHealthRequest) {
   c.faults.health_bits = 0x05;
   VirtualLidar lidar(c);
   // G1's A5 92 is its manual's (status bits); G6/TG answer A5 92 as their A5 91: status 2 + code.
-  const Bytes expected =
-      GetParam() == Model::G1 ? single(0x03, 0x06, {0x05, 0x00, 0x00}) : single(0x03, 0x06, {0x02, 0x05, 0x00});
+  const Bytes expected = GetParam() == Model::G1 ? single_reply(0x03, 0x06, {0x05, 0x00, 0x00})
+                                                 : single_reply(0x03, 0x06, {0x02, 0x05, 0x00});
   EXPECT_EQ(exchange(lidar, {0xA5, 0x92}, now), expected);
 }
 
@@ -157,9 +148,9 @@ TEST_P(VendorSdkStartup, ManualModeAnswersNoneOfTheExtras) {
   }
   EXPECT_EQ(exchange(lidar, {0xA5, 0x93}, now), kNoReply);
   EXPECT_EQ(exchange(lidar, {0xA5, 0x00}, now), kNoReply);
-  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz(GetParam() == Model::G1   ? 900
-                                                        : GetParam() == Model::G6 ? 800
-                                                                                  : 1000));
+  EXPECT_EQ(exchange(lidar, {0xA5, 0x0D}, now), scan_hz_reply(GetParam() == Model::G1   ? 900
+                                                              : GetParam() == Model::G6 ? 800
+                                                                                        : 1000));
   const Bytes start = exchange(lidar, {0xA5, 0x60}, now, 200 * kMs);
   ASSERT_GT(start.size(), 9u);
   EXPECT_EQ(Bytes(start.begin(), start.begin() + 7), kScanHeader);

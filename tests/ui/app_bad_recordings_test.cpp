@@ -21,8 +21,6 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-constexpr int kViewLeft = 448;  // the view is right of the panels
-
 // In the test's folder, with a settings folder of its own.
 ProgramRun run_program(const std::filesystem::path& dir, const std::string& program, const std::string& arguments) {
   return test::run_program(program, arguments, {.working_dir = dir.string(), .config_home = dir.string()});

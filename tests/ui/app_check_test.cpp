@@ -9,20 +9,18 @@
 
 #include "app_test_support.h"
 #include "hands_on_app.h"
+#include "support/text_file.h"
 
 namespace ydscope::test {
 namespace {
+
+using test::read_text;
 
 #ifdef YDSCOPE_APP_PATH
 
 // The Check panel's PASS badge (ui/panels/check_panel.cpp: 0.18, 0.49, 0.20).
 bool is_pass_green(const unsigned char* p) {
   return std::abs(p[0] - 46) < 8 && std::abs(p[1] - 125) < 8 && std::abs(p[2] - 51) < 8;
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 class AppCheck : public HandsOnApp {};

@@ -11,9 +11,8 @@ namespace {
 #ifdef YDSCOPE_APP_PATH
 
 // The view is right of the panels (~430 px of 1280); the overlay box sits at its centre.
-constexpr int kViewLeft = 448;
 
-struct Reading {
+struct NoDataReading {
   int points = 0;         // saturated scan-point pixels inside the rings
   int overlay_words = 0;  // near-white pixels in the band where the overlay writes
   int sidebar_green = 0;  // the panels' "all is well" green (state, health lamp and status words)
@@ -22,8 +21,8 @@ struct Reading {
 // The panels' green words and lamps (ImGui colours 0.35, 0.9, 0.55 and 70, 200, 110).
 bool is_all_is_well_green(const unsigned char* p) { return p[1] > 170 && p[1] > p[0] + 80 && p[1] > p[2] + 40; }
 
-Reading read(const Image& image) {
-  Reading r;
+NoDataReading read(const Image& image) {
+  NoDataReading r;
   r.points = points_in_rings(image, kViewLeft);
   r.sidebar_green = count_pixels(image, {0, 0, kViewLeft - 20, image.height}, is_all_is_well_green);
   const int cx = (kViewLeft + image.width) / 2;
@@ -42,8 +41,8 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--port", link, "--model", "G6"});
   std::set<std::string> seen;
 
-  const auto live = [](const Reading& r) { return r.points > 300 && r.overlay_words < 400; };
-  const Reading before = screenshot_until(app, dir, seen, read, live, std::chrono::seconds(30));
+  const auto live = [](const NoDataReading& r) { return r.points > 300 && r.overlay_words < 400; };
+  const NoDataReading before = screenshot_until(app, dir, seen, read, live, std::chrono::seconds(30));
   EXPECT_GT(before.points, 300) << "the live scan never showed";
   EXPECT_LT(before.overlay_words, 400) << "a live view must carry no overlay";
 
@@ -52,8 +51,8 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   // At once: the killed sim's link names a pty number that another test's lidar may take next,
   // and the app, reconnecting to the link, would show that one live (seen under ctest -j2).
   std::filesystem::remove(link);
-  const auto dimmed = [&](const Reading& r) { return r.points < before.points / 10 && r.overlay_words > 1500; };
-  const Reading dead = screenshot_until(app, dir, seen, read, dimmed, std::chrono::seconds(20));
+  const auto dimmed = [&](const NoDataReading& r) { return r.points < before.points / 10 && r.overlay_words > 1500; };
+  const NoDataReading dead = screenshot_until(app, dir, seen, read, dimmed, std::chrono::seconds(20));
   EXPECT_LT(dead.points, before.points / 10) << "the old scan stays bright after the lidar died";
   EXPECT_GT(dead.overlay_words, 1500) << "no large overlay words over the view";
   // Issue 26: the panels kept a green "status 0: normal" through the outage. Stale values are
@@ -67,7 +66,8 @@ TEST(AppBadDay, KilledLidarDimsTheViewWithAnOverlayAndRecovers) {
   sim = spawn_in(dir, sim_argv);
   const bool back = wait_for_path(link, std::chrono::seconds(15));
   EXPECT_TRUE(back) << "the virtual lidar did not come back at " << link;
-  const Reading after = back ? screenshot_until(app, dir, seen, read, live, std::chrono::seconds(40)) : Reading{};
+  const NoDataReading after =
+      back ? screenshot_until(app, dir, seen, read, live, std::chrono::seconds(40)) : NoDataReading{};
   EXPECT_GT(after.points, 300) << "the scan did not come back after the lidar returned";
   EXPECT_LT(after.overlay_words, 400) << "the overlay stayed after the lidar returned";
 

@@ -19,8 +19,6 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-constexpr int kViewLeft = 448;  // the view is right of the panels (~430 px of 1280)
-
 bool near_hue(const unsigned char* p, ui::Rgba8 c) {
   // Bright and closest to this colour: enough to tell the palette's first two apart.
   if (!is_point_pixel(p)) return false;

@@ -15,14 +15,14 @@ namespace {
 bool info_blue(const unsigned char* p) { return p[2] > 230 && p[0] > 100 && p[0] < 170 && p[1] > 160 && p[1] < 210; }
 bool warning_orange(const unsigned char* p) { return p[0] > 230 && p[1] > 170 && p[1] < 225 && p[2] < 130; }
 
-struct Reading {
+struct EndReading {
   int overlay_words = 0;
   int blue_status = 0;
   int orange_status = 0;
 };
 
-Reading read(const Image& image, int view_left) {
-  Reading r;
+EndReading read(const Image& image, int view_left) {
+  EndReading r;
   const int cx = (view_left + image.width) / 2;
   const int cy = image.height / 2;
   r.overlay_words = count_pixels(image, {cx - 320, cy - 90, cx + 320, cy + 90}, is_white_pixel);
@@ -42,10 +42,10 @@ TEST(AppReplayEnd, ReplayOnceStopsAtTheEndAndSaysSo) {
   std::set<std::string> seen;
 
   // The view sits right of the panels, which take at most 40 % of the window.
-  const auto ended = [](const Reading& r) { return r.overlay_words > 1500 && r.blue_status > 30; };
+  const auto ended = [](const EndReading& r) { return r.overlay_words > 1500 && r.blue_status > 30; };
   // Before its first lap the view says "No data ... waiting" in the same large overlay and the same
   // information blue, so the end only counts once the replay has been seen playing (no overlay).
-  Reading last;
+  EndReading last;
   int view_left = 0;
   bool played = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -66,7 +66,7 @@ TEST(AppReplayEnd, ReplayOnceStopsAtTheEndAndSaysSo) {
   for (int i = 0; i < 3; ++i) {
     const Image image = screenshot_of(app, dir, seen);
     ASSERT_TRUE(image) << "the app stopped answering after the replay ended";
-    const Reading again = read(image, view_left);
+    const EndReading again = read(image, view_left);
     EXPECT_GT(again.overlay_words, 1500) << "screenshot " << i << " after the end: the overlay went away";
     EXPECT_GT(again.blue_status, 30) << "screenshot " << i;
     EXPECT_LT(again.orange_status, 10) << "screenshot " << i;

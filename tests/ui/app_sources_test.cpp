@@ -15,7 +15,6 @@ namespace {
 
 #ifdef YDSCOPE_APP_PATH
 
-constexpr int kViewLeft = 448;  // the view is right of the panels (~430 px of 1280)
 constexpr double kPi = 3.14159265358979;
 
 double hue_deg(const unsigned char* p) {

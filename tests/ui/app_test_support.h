@@ -21,6 +21,9 @@
 
 namespace ydscope::test {
 
+// The polar view starts right of the panels (about 430 px of a 1280 px window).
+inline constexpr int kViewLeft = 448;
+
 struct Image {
   int width = 0;
   int height = 0;

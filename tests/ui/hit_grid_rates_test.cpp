@@ -13,7 +13,7 @@
 namespace ydscope::ui {
 namespace {
 
-ViewTransform make_view() {
+ViewTransform grid_view() {
   ViewTransform v;
   v.set_viewport({0.0f, 0.0f}, {1000.0f, 800.0f});
   v.fit_range(4000.0f);
@@ -21,7 +21,7 @@ ViewTransform make_view() {
 }
 
 TEST(HitTest, FindsTheNearestPointWithinTheRadius) {
-  const ViewTransform v = make_view();
+  const ViewTransform v = grid_view();
   const std::vector<LapPoint> points{
       {0.0f, 2000.0f, PointFlag::None}, {90.0f, 2000.0f, PointFlag::Specular}, {91.0f, 0.0f, PointFlag::None}};
   const Vec2 right = v.world_to_screen(polar_to_world(90.0f, 2000.0f));
@@ -66,7 +66,7 @@ TEST(GridLayout, FormatsDistancesForLabels) {
 }
 
 TEST(GridLayout, RingsCoverTheViewAndLabelsStayInside) {
-  const ViewTransform v = make_view();
+  const ViewTransform v = grid_view();
   const GridLayout grid = layout_grid(v, 70.0f, 30.0f);
   ASSERT_FALSE(grid.ring_radii_mm.empty());
   EXPECT_GE(grid.ring_step_mm * v.px_per_mm(), 70.0f);
@@ -85,7 +85,7 @@ TEST(GridLayout, RingsCoverTheViewAndLabelsStayInside) {
 }
 
 TEST(GridLayout, RingLabelsKeepClearOfTheWindowEdgesAtEveryZoom) {
-  ViewTransform v = make_view();
+  ViewTransform v = grid_view();
   std::size_t labels = 0;
   for (int step = 0; step < 60; ++step) {
     v.zoom_about(v.viewport_centre(), 1.07f);
@@ -100,7 +100,7 @@ TEST(GridLayout, RingLabelsKeepClearOfTheWindowEdgesAtEveryZoom) {
 }
 
 TEST(GridLayout, SpokesOfALidarOffScreenMayHaveNoLabel) {
-  ViewTransform v = make_view();
+  ViewTransform v = grid_view();
   v.pan_by_pixels({-3000.0f, 0.0f});  // the lidar is far to the left of the window
   const GridLayout grid = layout_grid(v, 70.0f, 30.0f);
   EXPECT_LT(grid.spoke_labels.size(), 12u);
@@ -235,7 +235,7 @@ namespace ydscope::ui {
 namespace {
 
 TEST(GridGeometry, RingsAreQuadsAroundTheCircleAndSpokesLeaveTheMarkerClear) {
-  const ViewTransform v = make_view();
+  const ViewTransform v = grid_view();
   const GridLayout grid = layout_grid(v, 70.0f, 30.0f);
   GridStyle style;
   std::vector<LineVertex> lines;

@@ -2,6 +2,7 @@
 // frozen laps, not the live one), the newest only or every shown lap, each row with its lap's
 // index and receive time t, in ydscope-cli's --format csv columns and number text.
 #include "ui/view/export/lap_csv.h"
+#include "support/text_file.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,8 @@
 namespace ydscope::ui {
 namespace {
 
+using test::lines_of;
+
 // A lap whose bytes arrived over the 100 ms before `rx_ns`.
 Lap lap_of(std::uint64_t index, std::int64_t rx_ns, std::vector<LapPoint> points) {
   Lap lap;
@@ -19,13 +22,6 @@ Lap lap_of(std::uint64_t index, std::int64_t rx_ns, std::vector<LapPoint> points
   lap.last_rx_ns = rx_ns;
   lap.points = std::move(points);
   return lap;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
 }
 
 TEST(LapCsv, TheNewestShownLapWithItsReceiveTime) {
