@@ -7,7 +7,7 @@
 #include <map>
 
 #include "core/link/serial_link.h"
-#include "link/reply_rewriter.h"
+#include "session/reply_rewriter.h"
 #include "support/session_test_support.h"
 
 namespace ydscope {
