@@ -58,6 +58,7 @@ std::string App::start_listed() {
     model().show_source_tab = static_cast<int>(request.kind);
   }
   const std::vector<Pose> spread = ui::spread_poses(options_.sources.size());
+  std::uint32_t sims = 0;  // virtual lidars so far: each answers with a serial of its own
   for (std::size_t i = 0; i < options_.sources.size(); ++i) {
     const SourceChoice& choice = options_.sources[i];
     ui::SourceLook look;
@@ -66,6 +67,7 @@ std::string App::start_listed() {
     look.serial = choice.serial;  // --serial: this name and pose belong to that unit, on any port
     ui::recall_look(settings_, sources_.looks(), look, choice.pose.has_value());
     listed.push_back({std::move(look), connect_request_for(choice, options_.scene)});
+    if (listed.back().request.kind == ui::ConnectRequest::Kind::Sim) listed.back().request.sim_unit = sims++;
   }
   // Several lidars are told apart by colour first; by-range stays one click away. (One port
   // given a --name or --pose is still one lidar, drawn as always.)
@@ -172,8 +174,9 @@ void App::update_model(SourceSlot& slot) {
   slot.refresh_model();
   // Every slot is refreshed once the last one is: the units' serials can be compared now.
   if (&slot != sources_.slots().back().get()) return;
-  // With no unit bound by serial, the only thing to say is that some units share one (two virtual
-  // lidars of one seed): worth a line on stderr, not a banner over the view of lidars kept by port.
+  // With no unit bound by serial, the only thing to say is that some units share one (two real
+  // units, or virtual lidars started apart with one seed): worth a line on stderr, not a banner
+  // over the view of lidars kept by port.
   const bool some_bound = std::any_of(sources_.slots().begin(), sources_.slots().end(),
                                       [](const auto& s) { return !s->look.serial.empty(); });
   const std::vector<std::string> notes = units_.follow(sources_);

@@ -66,6 +66,7 @@ std::string LidarSource::start(const ui::ConnectRequest& request) {
       options.device.scene = request.scene;
       options.device.faults = request.faults;
       options.device.seed = 7;
+      options.device.unit = request.sim_unit;
       options.device.host_compat = request.host_compat;
       options.device.firmware_major = request.firmware_major;
       options.device.firmware_minor = request.firmware_minor;

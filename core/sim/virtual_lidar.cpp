@@ -43,7 +43,7 @@ VirtualLidar::VirtualLidar(const VirtualLidarConfig& config, std::int64_t now_ns
   info_.firmware_major = config.firmware_major;
   info_.firmware_minor = config.firmware_minor;
   info_.hardware = config.hardware;
-  FaultRandom serial_random(config.seed ^ 0x5E41A1);
+  FaultRandom serial_random((config.seed ^ 0x5E41A1) + config.unit);
   for (auto& digit : info_.serial) digit = static_cast<std::uint8_t>(serial_random.below(10));
   if (!config.serial.empty()) {
     if (!valid_sim_serial(config.serial))

@@ -60,6 +60,9 @@ struct VirtualLidarConfig {
   // The serial A5 90 reports, 16 characters 0-9 and A-F (valid_sim_serial); empty: made from
   // the seed. Two units told apart by serial (core/frame/unit_identity.h) are two of these.
   std::string serial;
+  // Which of several virtual lidars sharing one seed (as the app starts them): each unit makes a
+  // serial of its own from the seed, the rest of its bytes unchanged. Unit 0 is the seed's serial.
+  std::uint32_t unit = 0;
   // Where it stands in the scene (core/sim/posed_scene.h); empty: at the scene's origin.
   std::optional<Pose> pose;
   FaultConfig faults;

@@ -3,6 +3,7 @@
 // with the encoders under test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "core/protocol/model_profile.h"
@@ -15,6 +16,7 @@ namespace {
 using test::bytes;
 using test::exchange;
 using test::kMs;
+using test::run_for;
 
 using test::kNoReply;
 using test::kScanHeader;
@@ -65,6 +67,24 @@ TEST_P(Conformance, DeviceInfoCarriesModelFirmwareHardwareSerial) {
   const std::map<Model, int> codes{
       {Model::G1, 19}, {Model::G6, 13}, {Model::TG15, 100}, {Model::TG30, 101}, {Model::TG50, 102}};
   EXPECT_EQ(reply[7], codes.at(GetParam()));
+}
+
+// The app starts several virtual lidars from one seed: each is a unit of its own by serial
+// (core/frame/unit_identity.h), and nothing else it sends differs.
+TEST_P(Conformance, UnitsOfOneSeedAnswerWithSerialsOfTheirOwnAndTheSameScan) {
+  VirtualLidarConfig second = config();
+  second.unit = 1;
+  VirtualLidar first_lidar(config()), second_lidar(second);
+  std::int64_t first_now = 0, second_now = 0;
+  const auto first_info = exchange(first_lidar, {0xA5, 0x90}, first_now);
+  const auto second_info = exchange(second_lidar, {0xA5, 0x90}, second_now);
+  ASSERT_EQ(first_info.size(), 27u);
+  ASSERT_EQ(second_info.size(), 27u);
+  EXPECT_TRUE(std::equal(first_info.begin(), first_info.begin() + 11, second_info.begin()));  // header, model, firmware
+  EXPECT_FALSE(std::equal(first_info.begin() + 11, first_info.end(), second_info.begin() + 11));  // the serial
+  exchange(first_lidar, {0xA5, 0x60}, first_now);
+  exchange(second_lidar, {0xA5, 0x60}, second_now);
+  EXPECT_EQ(run_for(first_lidar, first_now, 500 * kMs), run_for(second_lidar, second_now, 500 * kMs));
 }
 
 TEST_P(Conformance, HealthAnswersOnTheManualsCommandOnly) {

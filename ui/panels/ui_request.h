@@ -30,9 +30,10 @@ struct ConnectRequest {
   HostCompat host_compat = HostCompat::Manual;  // Sim only: what it answers beyond the manual
   std::uint8_t firmware_major = 1;              // Sim only: what its device info reports
   std::uint8_t firmware_minor = 2;
-  DeliveryModel delivery;     // Sim only: how its bytes reach the host
-  double replay_speed = 1.0;  // Replay only: 1 as recorded, within the panel's slider
-  bool replay_loop = true;    // Replay only: false stops at the end and says so
+  DeliveryModel delivery;      // Sim only: how its bytes reach the host
+  std::uint32_t sim_unit = 0;  // Sim only: the how-manyth virtual lidar of this window (its serial)
+  double replay_speed = 1.0;   // Replay only: 1 as recorded, within the panel's slider
+  bool replay_loop = true;     // Replay only: false stops at the end and says so
 };
 
 // ---- the source -------------------------------------------------------------------------------
