@@ -14,7 +14,7 @@
 namespace ydscope::cli {
 
 struct CheckSetPlan {
-  CheckPlan check;                 // for every unit; each unit's session is its spec's config
+  CheckPlan check;                 // for every unit, with each unit's session its spec's config
   std::vector<SourceSpec> lidars;  // two or more, in --port order (source_specs_from)
   std::optional<std::string> reports_folder;
   bool json = false;  // stdout: one JSON object for the set instead of the text

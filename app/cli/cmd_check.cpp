@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "app/common/arguments.h"
 #include "app/cli/check_output.h"
@@ -191,10 +192,9 @@ void show_on_terminal(const std::string& line) {
   std::fflush(stderr);
 }
 
-CheckPlan plan_from(const Arguments& args, bool loop) {
+CheckPlan plan_from(const Arguments& args, SessionConfig session) {
   CheckPlan plan;
-  plan.session =
-      loop ? session_config_awaiting(args, args.value("port").value_or("")) : session_config_from(args, /*scan=*/true);
+  plan.session = std::move(session);
   plan.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
   plan.seconds = args.number("seconds", 1, 3600).value_or(10);
   plan.settle_seconds = args.number("settle-seconds", 0, 60).value_or(1);
@@ -280,7 +280,7 @@ int run_check_command(std::span<const std::string> raw) {
     for (const char* name : {"name", "serial"})
       if (args.has(name))
         throw UsageError(std::string("--") + name + " names one of several lidars checked at once; not with --loop");
-    CheckPlan plan = plan_from(args, loop);
+    CheckPlan plan = plan_from(args, session_config_awaiting(args, args.value("port").value_or("")));
     plan.context.command_line = command_line(raw);
     const StationPlan station = station_plan_from(args, std::move(plan));
     end_on_signals(check_on_signal);
@@ -288,7 +288,7 @@ int run_check_command(std::span<const std::string> raw) {
   }
   // One lidar is a set of one: its port is read and checked as record and serve read theirs.
   std::vector<SourceSpec> lidars = source_specs_from(args, /*scan=*/true);
-  CheckPlan plan = plan_from(args, loop);
+  CheckPlan plan = plan_from(args, lidars.front().config);
   plan.context.command_line = command_line(raw);
   if (several) {
     const CheckSetPlan set = set_plan_from(args, std::move(plan), std::move(lidars));

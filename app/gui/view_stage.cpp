@@ -70,7 +70,10 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
   // The booth frames a lone lidar's room by what it has learned of it (booth_framing.h).
   const float framed =
       frame.booth && !several ? ui::booth_frame_range_mm(selected.motion, view_->transform().viewport_size()) : 0.0f;
-  view_->auto_range_to(framed > 0.0f ? framed : ui::robust_extent_mm(layers, 0.93f) * 1.1f, settings);
+  if (framed > 0.0f)
+    view_->auto_range_to(framed, settings);
+  else
+    view_->auto_range(layers, settings);
   model.cloud = view_->update_cloud(layers, settings, frame.phase);
   model.laps_on_screen = selected.history.size();
   model.points_drawn_total = view_->vertex_count();

@@ -33,7 +33,7 @@ void ViewStage::lay_out_split(SourceList& sources, ui::ViewSettings& settings, c
     tile.handle_input(settings, frame.hovered, frame.now_s);
     // Its own frame, in its own colour when the view colours by source.
     const ui::SourceLayer layer{&slot.history, Pose{}, slot.look.colour, false, &slot.motion};
-    tile.auto_range_to(ui::robust_extent_mm(std::span(&layer, 1), 0.93f) * 1.1f, settings);
+    tile.auto_range(std::span(&layer, 1), settings);
     tile.update_cloud(std::span(&layer, 1), settings, frame.phase);
     points += tile.vertex_count();
     tile.lay_out(slot.history, settings);

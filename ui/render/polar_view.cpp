@@ -109,6 +109,10 @@ std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
   return swept;
 }
 
+void PolarView::auto_range(std::span<const SourceLayer> layers, const ViewSettings& settings) {
+  auto_range_to(robust_extent_mm(layers, 0.93f) * 1.1f, settings);
+}
+
 void PolarView::auto_range_to(float extent_mm, const ViewSettings& settings) {
   // Asked every frame, lap or not, so turning auto-range back on is seen the frame it happens.
   if (const auto range = fit_.update(settings.auto_range, extent_mm)) view_.fit_range(*range);

@@ -48,9 +48,10 @@ class PolarView {
   std::optional<Vec2> take_forward_click();
   // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
   void invalidate() { dirty_ = true; }
-  // Fits the view to `extent_mm` from the origin when auto-range is on (robust_extent_mm of the
-  // layers, or the booth's framing).
+  // Fits the view to `extent_mm` from the origin when auto-range is on (the booth's framing).
   void auto_range_to(float extent_mm, const ViewSettings& settings);
+  // Fits it to where the layers' returns lie, outliers left out (robust_extent_mm), with a margin.
+  void auto_range(std::span<const SourceLayer> layers, const ViewSettings& settings);
   // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics. Each source
   // is a layer posed into the common frame (source_cloud.h); one lidar is a layer at the identity
   // pose. `phase` (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud
