@@ -23,10 +23,17 @@ std::span<const CliCommand> registered_commands() {
 
 RegisterCliCommand::RegisterCliCommand(const CliCommand& command) { registry().push_back(command); }
 
-void end_on_signals(void (*handler)(int), bool interrupt_writes) {
+namespace {
+std::atomic<bool> end_signalled{false};
+extern "C" void on_end_signal(int) { end_signalled.store(true); }
+}  // namespace
+
+const std::atomic<bool>& end_requested() { return end_signalled; }
+
+void end_on_signals(bool interrupt_writes) {
   for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
     struct sigaction action {};
-    action.sa_handler = handler;
+    action.sa_handler = on_end_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = interrupt_writes ? 0 : SA_RESTART;  // std::signal's restarting semantics otherwise
     sigaction(signal, &action, nullptr);

@@ -1,6 +1,7 @@
 #pragma once
 // ydscope-cli subcommands register themselves here, one file each (cmd_*.cpp), so adding a
 // command never touches main or another command.
+#include <atomic>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,10 +29,12 @@ struct CliCommand {
 std::span<const CliCommand> registered_commands();
 
 // The signals that end a command as Ctrl-C does (so a device command stops the lidar and keeps
-// what it recorded): SIGINT, SIGTERM and SIGHUP, a closed terminal or ssh session. With
-// `interrupt_writes` a write the command is blocked in (a reader that stopped reading) fails with
-// EINTR instead of going on waiting, so the command can stop the lidar and end.
-void end_on_signals(void (*handler)(int), bool interrupt_writes = false);
+// what it recorded): SIGINT, SIGTERM and SIGHUP, a closed terminal or ssh session. Once called,
+// any of them sets end_requested(), which the command polls. With `interrupt_writes` a write the
+// command is blocked in (a reader that stopped reading) fails with EINTR instead of going on
+// waiting, so the command can stop the lidar and end.
+void end_on_signals(bool interrupt_writes = false);
+const std::atomic<bool>& end_requested();
 
 // While it lives, threads this one starts (a session's I/O thread) never take those signals, so
 // they reach this thread and interrupt what it is blocked in.

@@ -2,7 +2,6 @@
 // matching several laps of each against the reference's walls (core/align). Prints the poses as
 // --pose and as the source list spells them; --apply keeps them where the app looks them up.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -25,7 +24,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kAlignHelp =
     R"(usage: ydscope-cli align --port A [--name N] [--serial S] [--pose X,Y,YAW[,flip]] --port B [--name N] ...
                          [--laps N] [--apply] [--model M] [--baud B] [--conventions field|manual]
 
@@ -56,9 +55,6 @@ example:
   ydscope-cli align --port /dev/ydlidar-front --name front --port /dev/ydlidar-rear --name rear \
       --pose -0.4,0,180 --apply
 )";
-
-std::atomic<bool> interrupted{false};
-extern "C" void on_align_signal(int) { interrupted.store(true); }
 
 struct Lidar {
   SourceText text;
@@ -115,7 +111,7 @@ void gather(std::vector<Lidar>& lidars, std::size_t wanted, LapBell& bell) {
         throw std::runtime_error(lidar.text.port + ": " + (s.message.empty() ? describe_snapshot(s) : s.message));
     }
     if (all) return;
-    if (interrupted.load()) throw std::runtime_error("interrupted before every lidar gave its laps");
+    if (end_requested().load()) throw std::runtime_error("interrupted before every lidar gave its laps");
     if (std::chrono::steady_clock::now() > deadline)
       throw std::runtime_error("not every lidar gave " + std::to_string(wanted) + " laps in time");
     bell.wait(std::chrono::milliseconds(200));
@@ -145,7 +141,7 @@ int run_align(std::span<const std::string> raw) {
     EndSignalsStayHere signals_here;  // the sessions' threads leave Ctrl-C to this one
     for (Lidar& lidar : lidars) lidar.session = std::make_unique<Session>(laps_wanted + 4, [&bell] { bell.ring(); });
   }
-  end_on_signals(on_align_signal);
+  end_on_signals();
   for (std::size_t i = 0; i < lidars.size(); ++i) connect_or_throw(*lidars[i].session, configs[i]);
   std::fprintf(stderr, "ydscope-cli align: gathering %zu laps of each of %zu lidars\n", laps_wanted, lidars.size());
   gather(lidars, laps_wanted, bell);
@@ -186,8 +182,8 @@ int run_align(std::span<const std::string> raw) {
   return all_aligned ? kExitOk : kExitLidarFault;
 }
 
-const RegisterCliCommand registration{
-    {"align", "find where several lidars sit from the walls they share", kHelpText, run_align}};
+const RegisterCliCommand align_command{
+    {"align", "find where several lidars sit from the walls they share", kAlignHelp, run_align}};
 
 }  // namespace
 }  // namespace ydscope::cli

@@ -2,7 +2,6 @@
 // unit after unit with --loop for the production line (check_station.h).
 #include <unistd.h>
 
-#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -23,7 +22,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kCheckHelp =
     R"(usage: ydscope-cli check --port PATH [--model auto|M] [--seconds S] [--scan-hz F] [--ranging-khz K]
                          [--sector A:B [--band MIN:MAX] --target-mm D [--tolerance-mm T] [--noise-mm N]]
                          [--format text|json] [--report OUT.html] [--operator NAME] [--station NAME]
@@ -145,9 +144,6 @@ examples:
   ydscope-cli check --port /dev/ttyUSB0 --name front --port /dev/ttyUSB1 --name rear --reports ~/qa
   ydscope-cli check --loop --station bench-2 --operator ana --port /dev/ydlidar --reports ~/qa
 )";
-
-std::atomic<bool> interrupted{false};
-extern "C" void check_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
 
 struct LimitOption {
   const char* name;
@@ -283,8 +279,8 @@ int run_check_command(std::span<const std::string> raw) {
     CheckPlan plan = plan_from(args, session_config_awaiting(args, args.value("port").value_or("")));
     plan.context.command_line = command_line(raw);
     const StationPlan station = station_plan_from(args, std::move(plan));
-    end_on_signals(check_on_signal);
-    return run_check_station(station, interrupted);
+    end_on_signals();
+    return run_check_station(station, end_requested());
   }
   // One lidar is a set of one: its port is read and checked as record and serve read theirs.
   std::vector<SourceSpec> lidars = source_specs_from(args, /*scan=*/true);
@@ -292,15 +288,15 @@ int run_check_command(std::span<const std::string> raw) {
   plan.context.command_line = command_line(raw);
   if (several) {
     const CheckSetPlan set = set_plan_from(args, std::move(plan), std::move(lidars));
-    end_on_signals(check_on_signal);
-    return run_check_set(set, interrupted);
+    end_on_signals();
+    return run_check_set(set, end_requested());
   }
   const std::optional<std::string> report = args.value("report");
   if (report)
     if (const std::string problem = report_output_problem(*report); !problem.empty()) throw UsageError(problem);
 
-  end_on_signals(check_on_signal);
-  const CheckRecord record = run_check(plan, interrupted);
+  end_on_signals();
+  const CheckRecord record = run_check(plan, end_requested());
   if (plan.progress) std::fprintf(stderr, "\r\033[K");
   if (format == "json")
     print_check_json(stdout, record);
@@ -327,8 +323,8 @@ int run_check_command(std::span<const std::string> raw) {
   return all_passed(record.results) ? kExitOk : kExitLidarFault;
 }
 
-const RegisterCliCommand registration{
-    {"check", "acceptance test of a lidar against its model's limits (PASS/FAIL per criterion)", kHelpText,
+const RegisterCliCommand check_command{
+    {"check", "acceptance test of a lidar against its model's limits (PASS/FAIL per criterion)", kCheckHelp,
      &run_check_command}};
 
 }  // namespace

@@ -30,7 +30,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kDecodeHelp =
     R"(usage: ydscope-cli decode --model MODEL [--format jsonl|csv|summary] [--filter LIST]
                           [--distance-scale X] [--mcap OUT.mcap [MCAP options]] FILE|-
 
@@ -267,8 +267,8 @@ int run_decode(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"decode", "decode raw lidar bytes into laps (JSON lines or a summary)", kHelpText, &run_decode}};
+const RegisterCliCommand decode_command{
+    {"decode", "decode raw lidar bytes into laps (JSON lines or a summary)", kDecodeHelp, &run_decode}};
 
 }  // namespace
 }  // namespace ydscope::cli

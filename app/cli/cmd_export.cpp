@@ -19,7 +19,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kExportHelp =
     R"(usage: ydscope-cli export REC.ydrec --mcap OUT.mcap [--model MODEL] [--distance-scale X]
                           [--compression zstd|lz4|none] [--frame-id ID] [--no-link-bytes] [--force]
 
@@ -144,8 +144,8 @@ int run_export(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"export", "convert a recording to MCAP for Foxglove and ROS 2 (/scan, /points, ...)", kHelpText, &run_export}};
+const RegisterCliCommand export_command{
+    {"export", "convert a recording to MCAP for Foxglove and ROS 2 (/scan, /points, ...)", kExportHelp, &run_export}};
 
 }  // namespace
 }  // namespace ydscope::cli

@@ -11,7 +11,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli info --port PATH [--model auto|MODEL] [--baud B|auto]
+constexpr std::string_view kInfoHelp = R"(usage: ydscope-cli info --port PATH [--model auto|MODEL] [--baud B|auto]
 
 Stops the lidar if it was scanning, asks for its device info, health, scan frequency and ranging
 frequency, and prints them as one JSON object on one line.
@@ -55,8 +55,8 @@ int run_info(std::span<const std::string> raw) {
   return std::fflush(stdout) == 0 ? kExitOk : kExitFailure;
 }
 
-const RegisterCliCommand registration{
-    {"info", "print a lidar's model, firmware, serial, health and frequencies as JSON", kHelpText, &run_info}};
+const RegisterCliCommand info_command{
+    {"info", "print a lidar's model, firmware, serial, health and frequencies as JSON", kInfoHelp, &run_info}};
 
 }  // namespace
 }  // namespace ydscope::cli

@@ -16,7 +16,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText = R"(usage: ydscope-cli ports [--format table|json] [--ask]
+constexpr std::string_view kPortsHelp = R"(usage: ydscope-cli ports [--format table|json] [--ask]
 
 Lists the serial ports a lidar may be on: /dev/serial/by-id/* (names that survive re-plugging),
 /dev/ydlidar-* (made by the udev rule 70-ydlidar.rules), /dev/ttyUSB* and /dev/ttyACM*, with the
@@ -141,8 +141,8 @@ int run_ports(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"ports", "list serial ports a lidar may be on, with their USB identity", kHelpText, &run_ports}};
+const RegisterCliCommand ports_command{
+    {"ports", "list serial ports a lidar may be on, with their USB identity", kPortsHelp, &run_ports}};
 
 }  // namespace
 }  // namespace ydscope::cli

@@ -1,6 +1,5 @@
 // ydscope-cli record: every byte between a live lidar and us, both directions, into a .ydrec file,
 // an MCAP file, or both.
-#include <atomic>
 #include <csignal>
 #include <string>
 
@@ -14,7 +13,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kRecordHelp =
     R"(usage: ydscope-cli record --port PATH (--out FILE | --mcap OUT.mcap | both) [--model auto|MODEL]
                           [--baud B|auto] [--seconds S] [--force] [MCAP options]
        ydscope-cli record --port PATH [--name NAME] [--pose X,Y,YAW[,flip]] --port PATH ...
@@ -92,19 +91,16 @@ examples:
                      --port /dev/ttyUSB1 --name back --pose -0.2,0,180,flip --out robot.ydrec --mcap robot.mcap
 )";
 
-std::atomic<bool> interrupted{false};
-extern "C" void record_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
-
 int run_record(std::span<const std::string> raw) {
   const Arguments args(
       raw, with_mcap_value_options(session_value_options({"out", "seconds", "mcap", "name", "pose", "serial"})),
       with_mcap_flags({"force", "no-reconnect"}), 0, source_repeatable_options());
-  end_on_signals(record_on_signal);
-  return record_sources(args, interrupted);
+  end_on_signals();
+  return record_sources(args, end_requested());
 }
 
-const RegisterCliCommand registration{
-    {"record", "record every byte of a live lidar session to a file", kHelpText, &run_record}};
+const RegisterCliCommand record_command{
+    {"record", "record every byte of a live lidar session to a file", kRecordHelp, &run_record}};
 
 }  // namespace
 }  // namespace ydscope::cli

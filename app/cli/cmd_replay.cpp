@@ -1,6 +1,5 @@
 // ydscope-cli replay: a recording's device bytes, played back through the replay link with their
 // original timing (or faster), decoded into laps as `decode` prints them.
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -26,7 +25,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kReplayHelp =
     R"(usage: ydscope-cli replay FILE [--speed X] [--format jsonl|csv|summary] [--model MODEL]
                           [--distance-scale X] [--keep-gaps]
 
@@ -65,9 +64,6 @@ examples:
 
 constexpr std::size_t kReadBuffer = 4096;
 
-std::atomic<bool> interrupted{false};
-extern "C" void replay_on_signal(int) { interrupted.store(true); }  // C linkage: a unique name
-
 int run_replay(std::span<const std::string> raw) {
   const Arguments args(raw, {"speed", "format", "model", "distance-scale", "conventions"}, {"keep-gaps"},
                        /*max_positionals=*/1);
@@ -84,8 +80,8 @@ int run_replay(std::span<const std::string> raw) {
       recording_plan_or_throw(path, RecordingUse::Replay, args.value("model"), scale_option, reading_option(args));
   print_recording_warnings("ydscope-cli replay", plan.warnings());
   if (plan.several_sources()) {
-    end_on_signals(replay_on_signal);
-    print_source_laps(path, plan, format, {speed, args.has("keep-gaps")}, {}, interrupted);
+    end_on_signals();
+    print_source_laps(path, plan, format, {speed, args.has("keep-gaps")}, {}, end_requested());
     return kExitOk;
   }
   const ModelProfile& profile = *plan.profile;
@@ -134,8 +130,8 @@ int run_replay(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"replay", "play a recording back with its timing and decode it into laps", kHelpText, &run_replay}};
+const RegisterCliCommand replay_command{
+    {"replay", "play a recording back with its timing and decode it into laps", kReplayHelp, &run_replay}};
 
 }  // namespace
 }  // namespace ydscope::cli

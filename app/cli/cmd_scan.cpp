@@ -2,7 +2,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -24,7 +23,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kScanHelp =
     R"(usage: ydscope-cli scan --port PATH [--model auto|MODEL] [--baud B|auto] --laps N [--format jsonl|csv|summary]
 
 Starts the lidar scanning, prints N complete laps and a summary, then stops the lidar.
@@ -68,9 +67,6 @@ example:
   ydscope-cli scan --port /dev/ttyUSB0 --laps 10 --format jsonl
 )";
 
-std::atomic<bool> interrupted{false};
-extern "C" void on_signal(int) { interrupted.store(true); }
-
 int run_scan(std::span<const std::string> raw) {
   const Arguments args(raw, session_value_options({"laps", "format", "distance-scale"}), {"no-reconnect"});
   const auto laps_wanted = args.integer("laps", 1, 1'000'000);
@@ -88,7 +84,7 @@ int run_scan(std::span<const std::string> raw) {
   std::optional<EndSignalsStayHere> signals_here(std::in_place);
   Session session(64, [&bell] { bell.ring(); });
   signals_here.reset();
-  end_on_signals(on_signal, /*interrupt_writes=*/true);
+  end_on_signals(/*interrupt_writes=*/true);
   // A reader that goes away (`scan ... | head -1`) must not kill us before the lidar is stopped:
   // the write fails instead, and the loop ends as for Ctrl-C.
   std::signal(SIGPIPE, SIG_IGN);
@@ -114,10 +110,10 @@ int run_scan(std::span<const std::string> raw) {
     } catch (const std::runtime_error&) {
       // A signal that broke a blocked write ends the run as Ctrl-C does; anything else is a
       // reader that went away.
-      (interrupted.load() ? output_stuck : reader_gone) = true;
+      (end_requested().load() ? output_stuck : reader_gone) = true;
     }
   };
-  while (printed < *laps_wanted && !interrupted.load() && !reader_gone) {
+  while (printed < *laps_wanted && !end_requested().load() && !reader_gone) {
     if (session.laps().try_pop(lap)) {
       health.observe_lap(lap);
       if (!start) {
@@ -175,8 +171,8 @@ int run_scan(std::span<const std::string> raw) {
   return health.worst() == HealthLevel::Error ? kExitLidarFault : kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"scan", "print N laps from a live lidar (JSON lines or a summary)", kHelpText, &run_scan}};
+const RegisterCliCommand scan_command{
+    {"scan", "print N laps from a live lidar (JSON lines or a summary)", kScanHelp, &run_scan}};
 
 }  // namespace
 }  // namespace ydscope::cli

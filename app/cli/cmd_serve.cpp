@@ -1,7 +1,6 @@
 // ydscope-cli serve: the headless robot-side server. Scans a lidar (reconnecting by itself),
 // serves it live over the Foxglove WebSocket protocol and optionally records it to MCAP. One lidar
 // or several alike: a SourceSet shared by one SessionShare (a set of one keeps the plain names).
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -25,7 +24,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kServeHelp =
     R"(usage: ydscope-cli serve --port PATH|tcp://HOST:PORT [--listen HOST:PORT] [--mcap FILE]
                          [--model auto|MODEL] [--baud B|auto] [--queue N] [--seconds S]
                          [--force] [MCAP options]
@@ -98,9 +97,6 @@ examples:
   ydscope-cli serve --port /dev/ttyUSB0 --listen 0.0.0.0:8765 --mcap /var/lib/ydscope/run.mcap
 )";
 
-std::atomic<bool> stop_requested{false};
-extern "C" void serve_on_signal(int) { stop_requested.store(true); }
-
 using Clock = std::chrono::steady_clock;
 
 foxglove::ServerOptions listen_options(const Arguments& args) {
@@ -144,7 +140,7 @@ void serve_until_stopped(SessionShare& share, SourceSet& set, std::optional<doub
     notes.emplace_back("ydscope-cli serve", named_apart(set.infos()) ? set.info(id).name : "the lidar",
                        "serving on; the clients see the outage on /diagnostics");
   Lap lap;
-  while (!stop_requested.load() &&
+  while (!end_requested().load() &&
          (!seconds || std::chrono::duration<double>(Clock::now() - start).count() < *seconds)) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (const std::string failed = share.topics().error(); !failed.empty()) throw std::runtime_error(failed);
@@ -200,7 +196,7 @@ int run_serve(std::span<const std::string> raw) {
   options.mcap_path = mcap_path.value_or("");
   options.server.name = "ydscope on " + (several ? std::to_string(set.size()) + " lidars" : set.config(0).address);
 
-  end_on_signals(serve_on_signal);
+  end_on_signals();
   // Clients and the MCAP file get the sessions' records from their taps, on a thread of their own.
   std::vector<SessionShare::Source> shared;
   for (std::size_t id = 0; id < set.size(); ++id) shared.push_back({&set.session(id), set.info(id)});
@@ -222,8 +218,8 @@ int run_serve(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"serve", "serve a lidar live to Foxglove over WebSocket (and record MCAP)", kHelpText, &run_serve}};
+const RegisterCliCommand serve_command{
+    {"serve", "serve a lidar live to Foxglove over WebSocket (and record MCAP)", kServeHelp, &run_serve}};
 
 }  // namespace
 }  // namespace ydscope::cli

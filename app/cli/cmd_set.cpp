@@ -14,7 +14,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kSetHelp =
     R"(usage: ydscope-cli set --port PATH [--model auto|MODEL] [--baud B|auto] (--scan-hz F | --ranging-khz K)
 
 Steps the set scan frequency (A5 09/0A/0B/0C: +-0.1 and +-1 Hz) until the read-back (A5 0D) is
@@ -79,8 +79,8 @@ int run_set(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"set", "set a lidar's scan or ranging frequency and print the read-back", kHelpText, &run_set}};
+const RegisterCliCommand set_command{
+    {"set", "set a lidar's scan or ranging frequency and print the read-back", kSetHelp, &run_set}};
 
 }  // namespace
 }  // namespace ydscope::cli

@@ -23,7 +23,7 @@
 namespace ydscope::cli {
 namespace {
 
-constexpr std::string_view kHelpText =
+constexpr std::string_view kSimHelp =
     R"(usage: ydscope-cli sim --model MODEL (--pty LINK | --tcp HOST:PORT) [--scene room|demo|booth] [--pose X,Y,YAW]
                        [--seed N] [--serial S] [--host-compat manual|ydlidar-sdk] [--firmware MAJOR.MINOR]
                        [--delivery whole|burst:BYTES:US|random:MAX] [fault options] [--verbose]
@@ -264,8 +264,8 @@ int run_sim(std::span<const std::string> raw) {
   return kExitOk;
 }
 
-const RegisterCliCommand registration{
-    {"sim", "serve a virtual lidar on a pseudo-terminal or TCP port", kHelpText, &run_sim}};
+const RegisterCliCommand sim_command{
+    {"sim", "serve a virtual lidar on a pseudo-terminal or TCP port", kSimHelp, &run_sim}};
 
 }  // namespace
 }  // namespace ydscope::cli

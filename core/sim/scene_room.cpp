@@ -20,7 +20,7 @@ struct Hit {
   Surface surface = Surface::None;
 };
 
-struct Segment {
+struct RoomWall {
   Vec a;
   Vec b;
   Surface surface;
@@ -29,7 +29,7 @@ struct Segment {
 // Room 8 m x 6 m; the lidar stands at the origin, off-centre. Right wall holds the mirror, top wall
 // the window, so both are split around them.
 constexpr double kLeft = -3200, kRight = 4800, kBottom = -2400, kTop = 3600;
-constexpr std::array<Segment, 12> kSegments{{
+constexpr std::array<RoomWall, 12> kRoomWalls{{
     {{kLeft, kBottom}, {kRight, kBottom}, Surface::Matte},
     {{kRight, kBottom}, {kRight, -1400}, Surface::Matte},
     {{kRight, -1400}, {kRight, 400}, Surface::Mirror},
@@ -63,7 +63,7 @@ constexpr double kPersonRadius = 220;
 
 Hit nearest(Vec origin, Vec dir, std::span<const Circle> people) {
   Hit best;
-  for (const auto& s : kSegments) {
+  for (const auto& s : kRoomWalls) {
     const double t = hit_segment(origin, dir, s.a, s.b);
     if (t < best.t) best = {t, s.surface};
   }

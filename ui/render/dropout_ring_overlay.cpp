@@ -6,12 +6,11 @@
 
 #include <imgui.h>
 
+#include "ui/render/im_vec.h"
 #include "ui/view/geometry/view_frame.h"
 
 namespace ydscope::ui {
 namespace {
-
-ImVec2 im(Vec2 v) { return {v.x, v.y}; }
 
 // Screen point `px` pixels from the lidar towards its angle `deg`, through its pose.
 Vec2 ring_point(const ViewTransform& view, const Pose& pose, float deg, float px) {

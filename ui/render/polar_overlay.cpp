@@ -6,13 +6,12 @@
 
 #include <imgui.h>
 
+#include "ui/render/im_vec.h"
 #include "ui/view/geometry/unit_marks.h"
 #include "ui/view/geometry/view_frame.h"
 
 namespace ydscope::ui {
 namespace {
-
-ImVec2 im(Vec2 v) { return {v.x, v.y}; }
 
 const char* flag_text(PointFlag flag) {
   switch (flag) {

@@ -5,12 +5,11 @@
 
 #include <imgui.h>
 
+#include "ui/render/im_vec.h"
 #include "ui/view/geometry/view_frame.h"
 
 namespace ydscope::ui {
 namespace {
-
-ImVec2 im(Vec2 v) { return {v.x, v.y}; }
 
 struct ZoneColours {
   ImU32 fill, edge, text;
