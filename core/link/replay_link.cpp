@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -53,7 +54,8 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
         skip_gaps_(options.skip_gaps),
         on_gap_(options.on_gap),
         anchor_wall_(Clock::now()) {
-    status_duration_.store(duration_ns);
+    status_.duration_ns = duration_ns;
+    status_.skip_gaps = skip_gaps_;
     publish();
   }
 
@@ -106,19 +108,8 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
 
   // Status, any thread.
   ReplayStatus status() const {
-    ReplayStatus status;
-    status.position_ns = status_position_.load(std::memory_order_relaxed);
-    status.duration_ns = status_duration_.load(std::memory_order_relaxed);
-    status.speed = status_speed_.load(std::memory_order_relaxed);
-    status.paused = status_paused_.load(std::memory_order_relaxed);
-    status.loop = status_loop_.load(std::memory_order_relaxed);
-    status.finished = status_finished_.load(std::memory_order_relaxed);
-    status.loops = status_loops_.load(std::memory_order_relaxed);
-    status.bytes = status_bytes_.load(std::memory_order_relaxed);
-    status.gaps = status_gaps_.load(std::memory_order_relaxed);
-    status.last_gap = {status_gap_at_.load(std::memory_order_relaxed), status_gap_ns_.load(std::memory_order_relaxed)};
-    status.skip_gaps = skip_gaps_;
-    return status;
+    const std::lock_guard lock(status_mutex_);
+    return status_;
   }
 
  private:
@@ -161,9 +152,10 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
       rebase();
       anchor_position_ = saturated_ns(static_cast<double>(anchor_position_) + static_cast<double>(gap.length_ns));
     }
-    status_gap_at_.store(gap.at_ns, std::memory_order_relaxed);
-    status_gap_ns_.store(gap.length_ns, std::memory_order_relaxed);
-    status_gaps_.fetch_add(1, std::memory_order_relaxed);
+    update_status([&gap](ReplayStatus& status) {
+      status.last_gap = gap;
+      ++status.gaps;
+    });
     if (on_gap_) on_gap_(gap, skip_gaps_);
   }
 
@@ -176,7 +168,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
         pass_bytes_ = 0;
         anchor_position_ = 0;
         anchor_wall_ = Clock::now();
-        status_loops_.fetch_add(1, std::memory_order_relaxed);
+        update_status([](ReplayStatus& status) { ++status.loops; });
         load_next();
       } else {
         finished_ = true;
@@ -211,7 +203,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     if (speed_ == 0.0) anchor_position_ = chunk_t_;
     delivered_t_ = chunk_t_;
     pass_bytes_ += n;
-    status_bytes_.fetch_add(n, std::memory_order_relaxed);
+    update_status([n](ReplayStatus& status) { status.bytes += n; });
     publish();
     complete(std::exchange(read_handler_, nullptr), {}, n);
   }
@@ -221,15 +213,23 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     boost::asio::post(io_, [handler = std::move(handler), ec, n] { handler(ec, n); });
   }
 
+  // One lock around every change, so status() reads one moment, never fields from two.
+  template <class Change>
+  void update_status(Change change) {
+    const std::lock_guard lock(status_mutex_);
+    change(status_);
+  }
+
   void publish() {
-    // Within the recording: an I/O thread that runs late must not show a point past its end.
-    status_position_.store(
-        std::clamp<std::int64_t>(position_now(), 0, status_duration_.load(std::memory_order_relaxed)),
-        std::memory_order_relaxed);
-    status_speed_.store(speed_, std::memory_order_relaxed);
-    status_paused_.store(paused_, std::memory_order_relaxed);
-    status_loop_.store(loop_, std::memory_order_relaxed);
-    status_finished_.store(finished_, std::memory_order_relaxed);
+    const std::int64_t position = position_now();
+    update_status([&](ReplayStatus& status) {
+      // Within the recording: an I/O thread that runs late must not show a point past its end.
+      status.position_ns = std::clamp<std::int64_t>(position, 0, status.duration_ns);
+      status.speed = speed_;
+      status.paused = paused_;
+      status.loop = loop_;
+      status.finished = finished_;
+    });
   }
 
   boost::asio::io_context& io_;
@@ -256,17 +256,8 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
   std::uint64_t wait_generation_ = 0;
   std::uint64_t pass_bytes_ = 0;
 
-  std::atomic<std::int64_t> status_position_{0};
-  std::atomic<std::int64_t> status_duration_{0};
-  std::atomic<double> status_speed_{1.0};
-  std::atomic<bool> status_paused_{false};
-  std::atomic<bool> status_loop_{false};
-  std::atomic<bool> status_finished_{false};
-  std::atomic<std::uint64_t> status_loops_{0};
-  std::atomic<std::uint64_t> status_bytes_{0};
-  std::atomic<std::uint64_t> status_gaps_{0};
-  std::atomic<std::int64_t> status_gap_at_{0};
-  std::atomic<std::int64_t> status_gap_ns_{0};
+  mutable std::mutex status_mutex_;
+  ReplayStatus status_;  // guarded by status_mutex_
 };
 
 ReplayLink::ReplayLink(std::shared_ptr<Core> core, std::string path, RecordingMetadata metadata,

@@ -7,9 +7,8 @@
 // Threads: the ByteLink calls (async_read_some, async_write, close) belong to the thread running
 // the io_context, like every ByteLink. The controls (set_speed, set_paused, set_loop, restart)
 // may be called from any thread: they are posted to the io_context. status() may be read from
-// any thread (atomics). The link may be destroyed on any thread (its playback is closed on the
-// io_context's thread), as long as the io_context outlives it.
-#include <atomic>
+// any thread (a copy taken under a lock). The link may be destroyed on any thread (its playback
+// is closed on the io_context's thread), as long as the io_context outlives it.
 #include <cstdint>
 #include <functional>
 #include <memory>

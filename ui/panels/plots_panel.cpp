@@ -8,16 +8,11 @@
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
+#include "ui/panels/plot_palette.h"
 #include "ui/panels/time_plot.h"
 
 namespace ydscope::ui {
 namespace {
-
-const ImU32 kMeasured = IM_COL32(110, 160, 255, 255);
-const ImU32 kSet = IM_COL32(90, 210, 120, 220);
-const ImU32 kValue = IM_COL32(150, 180, 235, 255);
-const ImU32 kChecksum = IM_COL32(255, 153, 89, 255);
-const ImU32 kCrc8 = IM_COL32(235, 110, 200, 255);
 
 // What each event mark's colour means, in the marks' own colours.
 void event_key() {
@@ -57,17 +52,17 @@ void draw_plots_panel(const UiModel& m, PanelEdits& e) {
     if (const auto t = draw_time_plot(spec, list, axis)) pointer = t;
   };
   plot(TimePlotSpec{"##scan_rate", "scan rate", "Hz", "%.2f", false, 0.2f, h, false},
-       PlotSeries{&p.measured_hz(), &p.rate_times(), kMeasured, "measured"},
-       PlotSeries{&p.set_hz(), &p.rate_times(), kSet, "set"});
+       PlotSeries{&p.measured_hz(), &p.rate_times(), plot_palette::kMeasured, "measured"},
+       PlotSeries{&p.set_hz(), &p.rate_times(), plot_palette::kSet, "set"});
   plot(TimePlotSpec{"##points", "points per lap", "", "%.0f", true, 0.2f, h, false},
-       PlotSeries{&p.points(), &p.lap_times(), kValue});
+       PlotSeries{&p.points(), &p.lap_times(), plot_palette::kValue});
   plot(TimePlotSpec{"##latency", "lap to screen", "ms", "%.1f", true, 0.2f, h, false},
-       PlotSeries{&p.latency_ms(), &p.latency_times(), kValue});
+       PlotSeries{&p.latency_ms(), &p.latency_times(), plot_palette::kValue});
   plot(TimePlotSpec{"##bytes", "received", "bytes/s", "%.0f", true, 0.2f, h, false},
-       PlotSeries{&p.bytes_per_s(), &p.second_times(), kValue});
+       PlotSeries{&p.bytes_per_s(), &p.second_times(), plot_palette::kValue});
   plot(TimePlotSpec{"##errors", "errors", "per s", "%.0f", true, 0.2f, h * 0.7f, true},
-       PlotSeries{&p.checksum_errors_per_s(), &p.second_times(), kChecksum, "checksum", true},
-       PlotSeries{&p.crc8_failures_per_s(), &p.second_times(), kCrc8, "CRC8", true});
+       PlotSeries{&p.checksum_errors_per_s(), &p.second_times(), plot_palette::kChecksum, "checksum", true},
+       PlotSeries{&p.crc8_failures_per_s(), &p.second_times(), plot_palette::kCrc8, "CRC8", true});
   event_key();
 
   if (pointer) {

@@ -8,16 +8,12 @@
 #include <cstdio>
 #include <limits>
 
+#include "ui/panels/plot_palette.h"
 #include "ui/view/history/plot_readout.h"
 #include "ui/view/history/plot_ticks.h"
 
 namespace ydscope::ui {
 namespace {
-
-const ImU32 kFrame = IM_COL32(22, 26, 34, 255);
-const ImU32 kGrid = IM_COL32(70, 78, 92, 110);
-const ImU32 kTickText = IM_COL32(150, 158, 172, 255);
-const ImU32 kCursor = IM_COL32(230, 232, 240, 150);
 
 struct Frame {
   ImVec2 lo, hi;  // the data area
@@ -129,15 +125,15 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   const ImVec2 mouse = ImGui::GetIO().MousePos;
 
   // The frame, the value grid and its labels (left of the data, never on it).
-  draw->AddRectFilled(f.lo, f.hi, kFrame, 2.0f);
+  draw->AddRectFilled(f.lo, f.hi, plot_palette::kFrame, 2.0f);
   for (int k = 0; k < value_ticks.count; ++k) {
     const double v = value_ticks.at[static_cast<std::size_t>(k)];
     const float y = f.y(v);
-    draw->AddLine({f.lo.x, y}, {f.hi.x, y}, kGrid);
+    draw->AddLine({f.lo.x, y}, {f.hi.x, y}, plot_palette::kGrid);
     tick_text(text, sizeof text, v, value_ticks.decimals);
     const ImVec2 size = ImGui::CalcTextSize(text);
     const float ty = std::clamp(y - size.y * 0.5f, f.lo.y - 2.0f, f.hi.y - size.y + 2.0f);
-    draw->AddText({f.lo.x - 4.0f - size.x, ty}, kTickText, text);
+    draw->AddText({f.lo.x - 4.0f - size.x, ty}, plot_palette::kTickText, text);
   }
   // The time axis: ticks counted back from now, labelled under the last plot of a group.
   const AxisTicks time_ticks = choose_ticks(axis.span.start_s - axis.now_s, axis.span.end_s - axis.now_s,
@@ -145,14 +141,15 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   for (int k = 0; k < time_ticks.count; ++k) {
     const double ago = time_ticks.at[static_cast<std::size_t>(k)];
     const float x = f.x(axis.now_s + ago);
-    draw->AddLine({x, f.lo.y}, {x, f.hi.y}, kGrid);
+    draw->AddLine({x, f.lo.y}, {x, f.hi.y}, plot_palette::kGrid);
     if (!spec.time_labels) continue;
     if (ago == 0.0)
       std::snprintf(text, sizeof text, "now");
     else
       std::snprintf(text, sizeof text, "%.*f s", time_ticks.decimals, ago);
     const float w = ImGui::CalcTextSize(text).x;
-    draw->AddText({std::clamp(x - w * 0.5f, f.lo.x - label_w, f.hi.x - w), f.hi.y + 1.0f}, kTickText, text);
+    draw->AddText({std::clamp(x - w * 0.5f, f.lo.x - label_w, f.hi.x - w), f.hi.y + 1.0f}, plot_palette::kTickText,
+                  text);
   }
 
   // The data, clipped to the frame, then the events over it.
@@ -192,7 +189,7 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   if (hovered && mouse.x >= f.lo.x && mouse.x <= f.hi.x) {
     const double t = time_at_x(mouse.x, f.lo.x, f.hi.x, axis.span);
     pointer_time = t;
-    draw->AddLine({mouse.x, f.lo.y}, {mouse.x, f.hi.y}, kCursor);
+    draw->AddLine({mouse.x, f.lo.y}, {mouse.x, f.hi.y}, plot_palette::kCursor);
     const double gap = std::max((axis.span.end_s - axis.span.start_s) * 0.03, 0.6);
     for (const PlotSeries& s : series) {
       const auto r = read_at(*s.times, *s.values, t, gap);
