@@ -212,11 +212,13 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
   }
   if (tty) std::fputs("\r\033[K", stderr);
 
-  // Close the files first (every tap's last records in them), then stop the lidars. Every tap's
-  // close is asked for before waiting on any, so the .ydrec and the MCAP end at the same byte of
-  // each lidar (each session closes its taps in the order asked, between two reads).
-  std::vector<std::future<CommandResult>> closed;
-  if (recording) closed = set.stop_recording(*recording);
+  // Close the files first (every tap's last records in them), then stop the lidars. Each lidar's
+  // taps close together, so the .ydrec and the MCAP end at the same byte of it.
+  std::vector<SessionTap> taps;
+  if (recording) taps = recording_taps(set.sessions(), *recording);
+  if (live)
+    for (const SessionTap& tap : live->taps()) taps.push_back(tap);
+  std::vector<std::future<CommandResult>> closed = close_taps_together(taps);
   if (live && !live->stop() && failure.empty()) failure = live->error();
   for (auto& tap_closed : closed) tap_closed.wait();
   if (recording && !recording->finish() && failure.empty()) failure = recording->error();

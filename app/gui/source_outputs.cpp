@@ -130,9 +130,12 @@ void SourceOutputs::stop_ydrec() {
 void SourceOutputs::stop_recording(SourceList& sources, const std::string& why) {
   if (!recording()) return;
   ui::UiModel& m = sources.selected().model;
-  // Every tap's close is asked for before waiting on any, so both files end at the same byte.
-  std::vector<std::future<CommandResult>> closed;
-  if (ydrec_) closed = stop_recording_taps(ydrec_sessions_, *ydrec_);
+  // Each lidar's taps close together, so both files end at the same byte of it.
+  std::vector<SessionTap> taps;
+  if (ydrec_) taps = recording_taps(ydrec_sessions_, *ydrec_);
+  if (mcap_recording_)
+    for (const SessionTap& tap : mcap_recording_->taps()) taps.push_back(tap);
+  std::vector<std::future<CommandResult>> closed = close_taps_together(taps);
   bool written = true;
   std::string said;
   if (mcap_recording_) {

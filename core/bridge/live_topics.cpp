@@ -99,6 +99,13 @@ void LiveTopics::detach() {
   new_taps_ = true;
 }
 
+std::vector<SessionTap> LiveTopics::taps() const {
+  std::vector<SessionTap> open;
+  for (const Lane& lane : lanes_)
+    if (lane.tap) open.push_back({lane.source.session, lane.tap});
+  return open;
+}
+
 bool LiveTopics::stop() {
   if (stopped_) return error().empty();
   stopped_ = true;

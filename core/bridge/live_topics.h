@@ -24,6 +24,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "core/bridge/foxglove_server.h"
 #include "core/bridge/session_parameters.h"
@@ -31,6 +32,7 @@
 #include "core/export/mcap_recording_export.h"
 #include "core/session/record_tap.h"
 #include "core/session/session.h"
+#include "core/session/source_set.h"
 
 namespace ydscope {
 
@@ -77,6 +79,9 @@ class LiveTopics {
   void detach_source(std::size_t id);
   bool attached(std::size_t id) const { return lanes_.at(id).tap != nullptr; }
   bool attached() const { return !lanes_.empty() && lanes_.front().tap != nullptr; }
+  // The open taps, for close_taps_together with another file's before stop() (which then finds
+  // them closed and writes what they held).
+  std::vector<SessionTap> taps() const;
 
   // Empty, or the sentence saying why writing the file failed (any thread).
   std::string error() const;

@@ -52,7 +52,10 @@ void Session::start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
   impl_->post_start_tap(std::move(tap), std::move(done));
 }
 void Session::stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
-  impl_->post_stop_tap(std::move(tap), std::move(done));
+  impl_->post_stop_taps({std::move(tap)}, std::move(done));
+}
+void Session::stop_taps(std::vector<std::shared_ptr<RecordTap>> taps, CommandCallback done) {
+  impl_->post_stop_taps(std::move(taps), std::move(done));
 }
 void Session::set_distance_scale(std::optional<double> mm_per_count) { impl_->post_distance_scale(mm_per_count); }
 void Session::set_reading(Reading reading) { impl_->post_reading(reading); }
@@ -202,9 +205,11 @@ void Session::Impl::post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallba
   });
 }
 
-void Session::Impl::post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done) {
-  asio::post(io_, [this, tap = std::move(tap), done = std::move(done)] {
-    board_.post_result(recording_.stop_tap(tap), done);
+void Session::Impl::post_stop_taps(std::vector<std::shared_ptr<RecordTap>> taps, CommandCallback done) {
+  asio::post(io_, [this, taps = std::move(taps), done = std::move(done)] {
+    CommandResult result;
+    for (const auto& tap : taps) result = recording_.stop_tap(tap);  // each is ok; the last one's words
+    board_.post_result(result, done);
   });
 }
 

@@ -85,9 +85,12 @@ class Session {
   void start_recording(std::string path, CommandCallback done = {});
   void stop_recording(CommandCallback done = {});
   // Every record a recording would hold, live, into `tap` (for MCAP and the WebSocket bridge),
-  // beside or without a file recording, and beside other taps. stop_tap(tap) closes that tap.
+  // beside or without a file recording, and beside other taps. stop_tap(tap) closes that tap;
+  // stop_taps closes several in one step on the I/O thread, so no read lands between them and
+  // they all end at the same byte (a .ydrec and an MCAP file of one run hold the same laps).
   void start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done = {});
   void stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done = {});
+  void stop_taps(std::vector<std::shared_ptr<RecordTap>> taps, CommandCallback done = {});
   // Empty: back to the model profile's scale. Applies from the next decoded byte.
   void set_distance_scale(std::optional<double> mm_per_count);
   // Reads the unit's bytes the field's way or the manual's way from the next byte on.

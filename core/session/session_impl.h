@@ -39,7 +39,7 @@ class Session::Impl {
   void post_start_recording(std::string path, CommandCallback done);
   void post_stop_recording(CommandCallback done);
   void post_start_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
-  void post_stop_tap(std::shared_ptr<RecordTap> tap, CommandCallback done);
+  void post_stop_taps(std::vector<std::shared_ptr<RecordTap>> taps, CommandCallback done);
   void post_distance_scale(std::optional<double> scale);
   void post_reading(Reading reading);
   SessionSnapshot snapshot() const;

@@ -1,5 +1,6 @@
 #include "core/session/source_set.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/record/recording_source.h"
@@ -41,13 +42,24 @@ std::unique_ptr<SourcesRecording> record_sessions(const std::string& path, const
   return recording;
 }
 
-std::vector<std::future<CommandResult>> stop_recording_taps(const std::vector<Session*>& sessions,
-                                                            const SourcesRecording& recording) {
+std::vector<SessionTap> recording_taps(const std::vector<Session*>& sessions, const SourcesRecording& recording) {
+  std::vector<SessionTap> taps;
+  for (std::size_t id = 0; id < sessions.size(); ++id) taps.push_back({sessions[id], recording.tap(id)});
+  return taps;
+}
+
+std::vector<std::future<CommandResult>> close_taps_together(const std::vector<SessionTap>& taps) {
+  std::vector<Session*> sessions;
+  for (const SessionTap& t : taps)
+    if (std::find(sessions.begin(), sessions.end(), t.session) == sessions.end()) sessions.push_back(t.session);
   std::vector<std::future<CommandResult>> closed;
-  for (std::size_t id = 0; id < sessions.size(); ++id) {
+  for (Session* session : sessions) {
+    std::vector<std::shared_ptr<RecordTap>> its_taps;
+    for (const SessionTap& t : taps)
+      if (t.session == session) its_taps.push_back(t.tap);
     auto promise = std::make_shared<std::promise<CommandResult>>();
     closed.push_back(promise->get_future());
-    sessions[id]->stop_tap(recording.tap(id), [promise](const CommandResult& r) { promise->set_value(r); });
+    session->stop_taps(std::move(its_taps), [promise](const CommandResult& r) { promise->set_value(r); });
   }
   return closed;
 }
@@ -65,10 +77,6 @@ std::unique_ptr<SourcesRecording> SourceSet::record(const std::string& path, std
     entries.back().port = configs_[id].address;
   }
   return record_sessions(path, sessions(), std::move(entries), error);
-}
-
-std::vector<std::future<CommandResult>> SourceSet::stop_recording(const SourcesRecording& recording) {
-  return stop_recording_taps(sessions(), recording);
 }
 
 void SourceSet::connect_all() {

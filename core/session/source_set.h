@@ -38,10 +38,18 @@ struct SetStart {
 // sentence in `error` when the file cannot be made.
 std::unique_ptr<SourcesRecording> record_sessions(const std::string& path, const std::vector<Session*>& sessions,
                                                   std::vector<RecordingMetadata> entries, std::string& error);
-// Asks every session to close its tap of `recording` (all asked before any is waited on, so
-// every lidar's file ends between two reads); the futures say when each did.
-std::vector<std::future<CommandResult>> stop_recording_taps(const std::vector<Session*>& sessions,
-                                                            const SourcesRecording& recording);
+// A record tap and the session it taps.
+struct SessionTap {
+  Session* session = nullptr;
+  std::shared_ptr<RecordTap> tap;
+};
+// Every session's tap of `recording`, by source id.
+std::vector<SessionTap> recording_taps(const std::vector<Session*>& sessions, const SourcesRecording& recording);
+// Closes `taps`, each session's in one step on its I/O thread (Session::stop_taps), every session
+// asked before any is waited on: every file of a run (a .ydrec and an MCAP file alike) ends at the
+// same byte of each lidar. Closes asked one by one let a read land between them, and an MCAP file
+// then held a lap more than the .ydrec of the same run. A future per session says when it did.
+std::vector<std::future<CommandResult>> close_taps_together(const std::vector<SessionTap>& taps);
 
 class SourceSet {
  public:
@@ -60,8 +68,6 @@ class SourceSet {
   // several), each session tapped before it connects so the start-up exchange is in the file.
   // Call before connect_all(). Null plus one sentence in `error` when the file cannot be made.
   std::unique_ptr<SourcesRecording> record(const std::string& path, std::string& error);
-  // Every session's tap of `recording` closed (stop_recording_taps).
-  std::vector<std::future<CommandResult>> stop_recording(const SourcesRecording& recording);
   std::vector<Session*> sessions() const;
 
   void connect_all();

@@ -157,8 +157,8 @@ if (killed) {
   expected.length = Math.min(expected.length, clouds.length, scans.length);
   clouds.length = scans.length = expected.length;
 }
-if (clouds.length !== expected.length) fail(`/points has ${clouds.length} messages, decode printed ${expected.length} laps`);
-if (scans.length !== expected.length) fail(`/scan has ${scans.length} messages, decode printed ${expected.length} laps`);
+if (clouds.length !== expected.length) fail(`${prefix}/points has ${clouds.length} messages, decode printed ${expected.length} laps`);
+if (scans.length !== expected.length) fail(`${prefix}/scan has ${scans.length} messages, decode printed ${expected.length} laps`);
 // The lidar's model, as its /diagnostics name it: only a G1 flags interference.
 const diagnostics = byTopic.get(`${prefix}/diagnostics`) ?? [];
 if (diagnostics.length === 0) fail(`no ${prefix}/diagnostics messages`);

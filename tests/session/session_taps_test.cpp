@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/session/record_tap.h"
+#include "core/session/source_set.h"
 #include "support/session_test_support.h"
 
 namespace ydscope {
@@ -59,6 +60,29 @@ TEST(SessionTaps, TwoTapsAreFedAtOnceAndStopOneByOne) {
             "that tap was not open");
   device_bytes_in(*stranger, open, std::chrono::milliseconds(10));
   EXPECT_TRUE(open);
+}
+
+// A .ydrec and an MCAP file of one run come from two taps of each session: closed together, they
+// end at the same byte, so both files hold the same laps (closed one by one, a read could land
+// between the two closes, and under load the MCAP file once held a lap the .ydrec did not).
+TEST(SessionTaps, TapsClosedTogetherEndAtTheSameByte) {
+  for (int round = 0; round < 3; ++round) {
+    SimOnPty sim(Model::G6);
+    Session session(64);
+    auto ydrec = std::make_shared<RecordTap>();
+    auto mcap = std::make_shared<RecordTap>();
+    ASSERT_TRUE(run_command([&](CommandCallback done) { session.start_tap(ydrec, done); }).ok);
+    ASSERT_TRUE(run_command([&](CommandCallback done) { session.start_tap(mcap, done); }).ok);
+    session.connect(config_for(sim.port()));
+    ASSERT_EQ(take_laps(session, 2), 2u) << describe_snapshot(session.snapshot());
+
+    for (auto& closed : close_taps_together({{&session, ydrec}, {&session, mcap}})) EXPECT_TRUE(closed.get().ok);
+    std::size_t ydrec_bytes = 0, mcap_bytes = 0;
+    for (bool open = true; open;) ydrec_bytes += device_bytes_in(*ydrec, open);
+    for (bool open = true; open;) mcap_bytes += device_bytes_in(*mcap, open);
+    EXPECT_GT(ydrec_bytes, 1000u);
+    EXPECT_EQ(ydrec_bytes, mcap_bytes) << "round " << round;
+  }
 }
 
 }  // namespace

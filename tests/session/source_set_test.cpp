@@ -118,7 +118,7 @@ TEST(SourceSet, ASetOfOneRecordsAVersionOneFileWithoutNameOrPose) {
   set.connect_all();
   ASSERT_TRUE(wait_until_settled(set).any_scanned);
   ASSERT_EQ(take_laps(set.session(0), 2), 2u);
-  for (auto& closed : set.stop_recording(*recording)) EXPECT_TRUE(closed.get().ok);
+  for (auto& closed : close_taps_together(recording_taps(set.sessions(), *recording))) EXPECT_TRUE(closed.get().ok);
   set.disconnect_all();
   recording.reset();
 
@@ -144,7 +144,7 @@ TEST(SourceSet, SeveralLidarsRecordOneVersionTwoFileNamingAndPlacingEach) {
   set.connect_all();
   const SetStart start = wait_until_settled(set);
   ASSERT_TRUE(start.settled && start.failure.empty()) << start.failure;
-  for (auto& closed : set.stop_recording(*recording)) EXPECT_TRUE(closed.get().ok);
+  for (auto& closed : close_taps_together(recording_taps(set.sessions(), *recording))) EXPECT_TRUE(closed.get().ok);
   set.disconnect_all();
   recording.reset();
 
