@@ -106,6 +106,12 @@ std::vector<SessionTap> LiveTopics::taps() const {
   return open;
 }
 
+std::vector<std::future<CommandResult>> close_run_taps(std::vector<SessionTap> ydrec_taps, const LiveTopics* mcap) {
+  if (mcap)
+    for (const SessionTap& tap : mcap->taps()) ydrec_taps.push_back(tap);
+  return close_taps_together(ydrec_taps);
+}
+
 bool LiveTopics::stop() {
   if (stopped_) return error().empty();
   stopped_ = true;

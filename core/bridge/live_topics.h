@@ -19,6 +19,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -79,8 +80,8 @@ class LiveTopics {
   void detach_source(std::size_t id);
   bool attached(std::size_t id) const { return lanes_.at(id).tap != nullptr; }
   bool attached() const { return !lanes_.empty() && lanes_.front().tap != nullptr; }
-  // The open taps, for close_taps_together with another file's before stop() (which then finds
-  // them closed and writes what they held).
+  // The open taps, for close_run_taps before stop() (which then finds them closed and writes
+  // what they held).
   std::vector<SessionTap> taps() const;
 
   // Empty, or the sentence saying why writing the file failed (any thread).
@@ -143,5 +144,10 @@ class LiveTopics {
   bool stopped_ = false;
   std::thread thread_;
 };
+
+// The files of one run close together (close_taps_together): a .ydrec's taps (`ydrec_taps`, empty
+// without one) and an MCAP file's (`mcap`, null without one), so both end at the same byte of each
+// lidar. `record` and the app's Record both end their runs here.
+std::vector<std::future<CommandResult>> close_run_taps(std::vector<SessionTap> ydrec_taps, const LiveTopics* mcap);
 
 }  // namespace ydscope

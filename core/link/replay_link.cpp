@@ -203,8 +203,7 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     if (speed_ == 0.0) anchor_position_ = chunk_t_;
     delivered_t_ = chunk_t_;
     pass_bytes_ += n;
-    update_status([n](ReplayStatus& status) { status.bytes += n; });
-    publish();
+    publish(n);
     complete(std::exchange(read_handler_, nullptr), {}, n);
   }
 
@@ -220,9 +219,11 @@ class ReplayLink::Core : public std::enable_shared_from_this<Core> {
     change(status_);
   }
 
-  void publish() {
+  // `delivered`: device bytes the read now completing hands over (one lock for both changes).
+  void publish(std::size_t delivered = 0) {
     const std::int64_t position = position_now();
     update_status([&](ReplayStatus& status) {
+      status.bytes += delivered;
       // Within the recording: an I/O thread that runs late must not show a point past its end.
       status.position_ns = std::clamp<std::int64_t>(position, 0, status.duration_ns);
       status.speed = speed_;
