@@ -79,8 +79,9 @@ int run_scan(std::span<const std::string> raw) {
   config.distance_scale = args.number("distance-scale", kMinDistanceScale, kMaxDistanceScale);
 
   LapBell bell;
-  // Ctrl-C or SIGTERM must reach this thread, to interrupt a write to a reader that stopped
-  // reading (a full pipe): blocked there, the loop would never stop the lidar.
+  // A reader that stops reading (a full pipe) must not keep the lidar spinning: the output gives
+  // up once Ctrl-C or SIGTERM comes (JsonOut's give_up). The signals also reach this thread, so a
+  // write that does block (a terminal held by Ctrl-S) is interrupted.
   std::optional<EndSignalsStayHere> signals_here(std::in_place);
   Session session(64, [&bell] { bell.ring(); });
   signals_here.reset();
@@ -95,7 +96,7 @@ int run_scan(std::span<const std::string> raw) {
 
   HealthWatch health("ydscope-cli scan");
   health.observe_answer(started.health);
-  JsonOut out(stdout);
+  JsonOut out(stdout, end_requested());
   LapPrinter printer(out, format, g1_info);
   std::optional<std::string> start;  // wall-clock time of the first printed lap's first byte
   Lap lap;

@@ -1,6 +1,11 @@
 #include "app/cli/lap_json.h"
 
+#include <poll.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <stdexcept>
 
@@ -16,12 +21,46 @@ JsonOut::~JsonOut() {
   }
 }
 
+namespace {
+[[noreturn]] void throw_write_failed() {
+  throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
+}
+
+// Writes `text` to `fd` in pieces that never block, waiting for room in short polls, until it is
+// written or, with no room, `give_up` is set. A signal alone cannot be trusted to break a blocked
+// write: one that had written part of its bytes returns that count and stdio writes the rest,
+// blocking again. PIPE_BUF bytes fit once poll says a pipe has room.
+void write_until(int fd, std::string_view text, const std::atomic<bool>& give_up) {
+  while (!text.empty()) {
+    pollfd room{fd, POLLOUT, 0};
+    const int ready = ::poll(&room, 1, /*ms=*/100);
+    if (ready < 0 && errno != EINTR) throw_write_failed();
+    ssize_t written = -1;
+    if (ready > 0) written = ::write(fd, text.data(), std::min<std::size_t>(text.size(), PIPE_BUF));
+    if (written > 0) {
+      text.remove_prefix(static_cast<std::size_t>(written));
+      continue;
+    }
+    if (written < 0 && ready > 0 && errno != EINTR && errno != EAGAIN) throw_write_failed();
+    if (give_up.load()) throw std::runtime_error("writing the output was given up: its reader took nothing");
+  }
+}
+}  // namespace
+
 void JsonOut::flush() {
-  // fflush too: stdout on a pipe is fully buffered, and a reader must get each line we hand over.
-  if (!text_.empty() &&
-      (std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size() || std::fflush(file_) != 0)) {
+  if (text_.empty()) return;
+  const std::string_view text = text_;
+  try {
+    if (give_up_) {
+      if (std::fflush(file_) != 0) throw_write_failed();  // nothing of stdio's may come after ours
+      write_until(::fileno(file_), text, *give_up_);
+    } else if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0) {
+      // fflush too: stdout on a pipe is fully buffered, and a reader must get each line we hand over.
+      throw_write_failed();
+    }
+  } catch (...) {
     text_.clear();
-    throw std::runtime_error("writing the output failed: " + std::string(std::strerror(errno)));
+    throw;
   }
   text_.clear();
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The JSON lines `decode` defined for laps and its summary (schema in `ydscope-cli decode --help`),
 // shared by every subcommand that prints laps (decode, scan) so they all speak one schema.
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -21,6 +22,9 @@ class JsonOut {
   static constexpr std::size_t kFlushAt = 1 << 16;
 
   explicit JsonOut(std::FILE* file) : file_(file) { text_.reserve(2 * kFlushAt); }
+  // A writer that gives up once `give_up` is set, however long its reader has stopped taking
+  // output: flush() then throws instead of waiting on a full pipe (scan, which must stop the lidar).
+  JsonOut(std::FILE* file, const std::atomic<bool>& give_up) : JsonOut(file) { give_up_ = &give_up; }
   ~JsonOut();  // flushes; a failure there is lost, so call flush() yourself to see it
 
   void raw(std::string_view text) { text_.append(text); }
@@ -34,6 +38,7 @@ class JsonOut {
 
  private:
   std::FILE* file_;
+  const std::atomic<bool>* give_up_ = nullptr;
   std::string text_;
 };
 
