@@ -16,7 +16,7 @@ namespace {
 
 enum class Layout : std::uint8_t { TwoByte, ThreeByte };
 
-struct Family {
+struct KnownFamily {
   std::string_view name;
   std::string_view codes;  // device-info model code(s), as the table gives them
   std::uint8_t code_min, code_max;
@@ -30,7 +30,7 @@ struct Family {
 // rate, intensity bits); the T-mini Pro is not in that table: its code is the SDK's model enum
 // (YDLIDAR_TminiPro = 150), its baud and 4 k rate its datasheet's. 8- and 10-bit intensity units
 // send 3-byte samples (the SDK's NODE_QUAL8 / QUAL10: intensity byte, then the u16 distance word).
-constexpr Family kFamilies[] = {
+constexpr KnownFamily kFamilies[] = {
     {"G1", "19", 19, 19, 230400, 9, 9, Layout::TwoByte, ""},
     {"G6", "13", 13, 13, 512000, 8, 18, Layout::TwoByte, ""},
     {"TG15/TG30/TG50", "100-102", 100, 102, 512000, 10, 20, Layout::TwoByte, ""},
@@ -52,14 +52,14 @@ constexpr double kRateSlack = 0.3;
 // A layout counts as found with this many verified packets (one could be chance in 8 KiB).
 constexpr std::size_t kMinPackets = 3;
 
-const Family* family_of(const ModelProfile& profile) {
-  for (const Family& f : kFamilies)
+const KnownFamily* known_family_of(const ModelProfile& profile) {
+  for (const KnownFamily& f : kFamilies)
     if (profile.model_code >= f.code_min && profile.model_code <= f.code_max && profile.default_baud == f.baud)
       return &f;
   return nullptr;
 }
 
-bool rate_fits(const Family& f, double ksps) {
+bool rate_fits(const KnownFamily& f, double ksps) {
   return ksps >= f.min_ksps * (1 - kRateSlack) && ksps <= f.max_ksps * (1 + kRateSlack);
 }
 
@@ -69,12 +69,12 @@ std::string format(const char* fmt, double value) {
   return text;
 }
 
-std::string ksps_text(const Family& f) {
+std::string ksps_text(const KnownFamily& f) {
   return f.min_ksps == f.max_ksps ? format("%g k", f.min_ksps)
                                   : format("%g", f.min_ksps) + "-" + format("%g k", f.max_ksps);
 }
 
-std::string describe(const Family& f) {
+std::string describe(const KnownFamily& f) {
   std::string text = std::string(f.name) + " (model code " + std::string(f.codes) + ", " + std::to_string(f.baud) +
                      " baud, " + ksps_text(f) + " samples/s";
   if (!f.intensity.empty()) text += ", " + std::string(f.intensity) + " intensity";
@@ -93,21 +93,21 @@ std::string join_or(const std::vector<std::string>& items) {
 
 // Families of `layout` other than `expected`, narrowed by the measured rate (when known) and then
 // to those at the line's baud when any is.
-std::vector<const Family*> candidates(Layout layout, const Family* expected, std::optional<double> ksps,
-                                      std::uint32_t baud) {
-  std::vector<const Family*> found;
-  for (const Family& f : kFamilies)
+std::vector<const KnownFamily*> candidates(Layout layout, const KnownFamily* expected, std::optional<double> ksps,
+                                           std::uint32_t baud) {
+  std::vector<const KnownFamily*> found;
+  for (const KnownFamily& f : kFamilies)
     if (f.layout == layout && &f != expected && (!ksps || rate_fits(f, *ksps))) found.push_back(&f);
-  std::vector<const Family*> at_baud;
-  for (const Family* f : found)
+  std::vector<const KnownFamily*> at_baud;
+  for (const KnownFamily* f : found)
     if (f->baud == baud) at_baud.push_back(f);
   return at_baud.empty() ? found : at_baud;
 }
 
-std::string family_list(const std::vector<const Family*>& families) {
+std::string family_list(const std::vector<const KnownFamily*>& families) {
   std::vector<std::string> names;
   names.reserve(families.size());
-  for (const Family* f : families) names.push_back(describe(*f));
+  for (const KnownFamily* f : families) names.push_back(describe(*f));
   return join_or(names);
 }
 
@@ -242,7 +242,7 @@ std::optional<std::string> StreamDiagnosis::verdict(const ModelProfile& expected
   if (bytes_seen_ < kMinBytes) return std::nullopt;
   const StreamFindings f = findings();
   const std::string model(expected.name);
-  const Family* own = family_of(expected);
+  const KnownFamily* own = known_family_of(expected);
 
   if (f.three_byte_packets >= kMinPackets && f.three_byte_bytes > f.two_byte_bytes) {
     const std::optional<double> ksps = samples_ksps(f, f.three_byte_samples);
