@@ -34,14 +34,16 @@ void write_until(int fd, std::string_view text, const std::atomic<bool>& give_up
   while (!text.empty()) {
     pollfd room{fd, POLLOUT, 0};
     const int ready = ::poll(&room, 1, /*ms=*/100);
-    if (ready < 0 && errno != EINTR) throw_write_failed();
-    ssize_t written = -1;
-    if (ready > 0) written = ::write(fd, text.data(), std::min<std::size_t>(text.size(), PIPE_BUF));
-    if (written > 0) {
-      text.remove_prefix(static_cast<std::size_t>(written));
-      continue;
+    if (ready > 0) {
+      const ssize_t written = ::write(fd, text.data(), std::min<std::size_t>(text.size(), PIPE_BUF));
+      if (written > 0) {
+        text.remove_prefix(static_cast<std::size_t>(written));
+        continue;
+      }
+      if (written < 0 && errno != EINTR && errno != EAGAIN) throw_write_failed();
+    } else if (ready < 0 && errno != EINTR) {
+      throw_write_failed();
     }
-    if (written < 0 && ready > 0 && errno != EINTR && errno != EAGAIN) throw_write_failed();
     if (give_up.load()) throw std::runtime_error("writing the output was given up: its reader took nothing");
   }
 }

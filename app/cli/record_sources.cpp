@@ -214,8 +214,7 @@ int record_sources(const Arguments& args, const std::atomic<bool>& interrupted) 
 
   // Close the files first (every tap's last records in them), then stop the lidars. Each lidar's
   // taps close together, so the .ydrec and the MCAP end at the same byte of it.
-  std::vector<std::future<CommandResult>> closed =
-      close_run_taps(recording ? recording_taps(set.sessions(), *recording) : std::vector<SessionTap>{}, live.get());
+  std::vector<std::future<CommandResult>> closed = close_run_taps(set.sessions(), recording.get(), live.get());
   if (live && !live->stop() && failure.empty()) failure = live->error();
   for (auto& tap_closed : closed) tap_closed.wait();
   if (recording && !recording->finish() && failure.empty()) failure = recording->error();

@@ -131,8 +131,7 @@ void SourceOutputs::stop_recording(SourceList& sources, const std::string& why) 
   if (!recording()) return;
   ui::UiModel& m = sources.selected().model;
   // Each lidar's taps close together, so both files end at the same byte of it.
-  std::vector<std::future<CommandResult>> closed = close_run_taps(
-      ydrec_ ? recording_taps(ydrec_sessions_, *ydrec_) : std::vector<SessionTap>{}, mcap_recording_.get());
+  std::vector<std::future<CommandResult>> closed = close_run_taps(ydrec_sessions_, ydrec_.get(), mcap_recording_.get());
   bool written = true;
   std::string said;
   if (mcap_recording_) {

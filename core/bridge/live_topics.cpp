@@ -106,10 +106,13 @@ std::vector<SessionTap> LiveTopics::taps() const {
   return open;
 }
 
-std::vector<std::future<CommandResult>> close_run_taps(std::vector<SessionTap> ydrec_taps, const LiveTopics* mcap) {
+std::vector<std::future<CommandResult>> close_run_taps(const std::vector<Session*>& sessions,
+                                                       const SourcesRecording* ydrec, const LiveTopics* mcap) {
+  std::vector<SessionTap> taps;
+  if (ydrec) taps = recording_taps(sessions, *ydrec);
   if (mcap)
-    for (const SessionTap& tap : mcap->taps()) ydrec_taps.push_back(tap);
-  return close_taps_together(ydrec_taps);
+    for (const SessionTap& tap : mcap->taps()) taps.push_back(tap);
+  return close_taps_together(taps);
 }
 
 bool LiveTopics::stop() {

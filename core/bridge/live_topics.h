@@ -145,9 +145,10 @@ class LiveTopics {
   std::thread thread_;
 };
 
-// The files of one run close together (close_taps_together): a .ydrec's taps (`ydrec_taps`, empty
-// without one) and an MCAP file's (`mcap`, null without one), so both end at the same byte of each
-// lidar. `record` and the app's Record both end their runs here.
-std::vector<std::future<CommandResult>> close_run_taps(std::vector<SessionTap> ydrec_taps, const LiveTopics* mcap);
+// The files of one run close together (close_taps_together): the .ydrec `ydrec` records of
+// `sessions` and the MCAP file `mcap` writes (either null without one), so both end at the same
+// byte of each lidar. `record` and the app's Record both end their runs here.
+std::vector<std::future<CommandResult>> close_run_taps(const std::vector<Session*>& sessions,
+                                                       const SourcesRecording* ydrec, const LiveTopics* mcap);
 
 }  // namespace ydscope
