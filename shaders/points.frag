@@ -2,6 +2,7 @@
 // Round point sprites with an antialiased rim and a slightly brighter core, so dense scans read as
 // glowing dots rather than squares.
 in vec4 v_colour;
+in float v_stack;
 uniform float u_point_size;
 out vec4 frag_colour;
 
@@ -13,5 +14,7 @@ void main() {
   float coverage = 1.0 - smoothstep(1.0 - rim, 1.0, r);
   if (coverage <= 0.0) discard;
   vec3 core = mix(v_colour.rgb, vec3(1.0), 0.35 * (1.0 - smoothstep(0.0, 0.6, r)));
-  frag_colour = vec4(core, v_colour.a * coverage);
+  // A sprite standing for a stack of points covers what their layers would have, rim included.
+  float alpha = 1.0 - pow(1.0 - v_colour.a * coverage, v_stack);
+  frag_colour = vec4(core, alpha);
 }

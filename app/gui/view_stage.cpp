@@ -76,7 +76,7 @@ void ViewStage::lay_out_common(SourceList& sources, ui::ViewSettings& settings, 
     view_->auto_range(layers, settings);
   model.cloud = view_->update_cloud(layers, settings, frame.phase);
   model.laps_on_screen = selected.history.size();
-  model.points_drawn_total = view_->vertex_count();
+  model.points_drawn_total = view_->points_shown();
 
   // The hover box reads one lidar's own frame, which several do not share.
   static const ui::LapHistory no_laps;

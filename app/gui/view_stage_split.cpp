@@ -35,7 +35,7 @@ void ViewStage::lay_out_split(SourceList& sources, ui::ViewSettings& settings, c
     const ui::SourceLayer layer{&slot.history, Pose{}, slot.look.colour, false, &slot.motion};
     tile.auto_range(std::span(&layer, 1), settings);
     tile.update_cloud(std::span(&layer, 1), settings, frame.phase);
-    points += tile.vertex_count();
+    points += tile.points_shown();
     tile.lay_out(slot.history, settings);
     ui::draw_view_overlay(slot.model, x, tile_w, tile_h, y);
     ui::draw_source_label(source_row(slot, now), {x, y}, &slot == &sources.selected());

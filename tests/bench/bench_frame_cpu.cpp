@@ -8,7 +8,9 @@
 // the frames it presented are counted too (the Gallium HUD, kept hidden, writes frames/s once a
 // second to a file), and CPU per frame: on a loaded machine the app gets fewer frames than it asks
 // for, so its share of a core alone under-states a frame's cost.
-//   xvfb-run -a -s "-screen 0 1280x800x24" build/ui/tests/bench/bench_frame_cpu [seconds]
+//   xvfb-run -a -s "-screen 0 1280x800x24" build/ui/tests/bench/bench_frame_cpu [seconds] [scene]
+// scene is the virtual lidar's: demo (the default, a turning flower: every lap lands elsewhere) or
+// room (walls that stay put, as on a bench or a robot: laps land on the same pixels).
 // Not a Google Benchmark: it measures another process, so it has its own main.
 #include <unistd.h>
 
@@ -59,6 +61,7 @@ void print_frames(double cpu_percent, double fps) {
 
 int main(int argc, char** argv) {
   const int seconds = argc > 1 ? std::atoi(argv[1]) : 20;
+  const std::string scene = argc > 2 ? argv[2] : "demo";
   const auto binaries = find_app_binaries("bench_frame_cpu");
   if (!binaries) return 1;
   const std::string& app = binaries->app;
@@ -80,7 +83,7 @@ int main(int argc, char** argv) {
     fs::create_directories(home / "ydscope");
     std::ofstream(home / "ydscope" / "settings.ini") << "smooth = " << (smooth ? "true" : "false") << "\n";
     const std::string link = (home / "g6").string();
-    const pid_t sim = spawn({cli, "sim", "--model", "G6", "--scene", "demo", "--pty", link}, true);
+    const pid_t sim = spawn({cli, "sim", "--model", "G6", "--scene", scene, "--pty", link}, true);
     for (int i = 0; i < 50 && !fs::exists(link); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     count_frames_into(frames);
     const pid_t pid = spawn({app, "--port", link, "--model", "G6"}, true);
@@ -88,8 +91,8 @@ int main(int argc, char** argv) {
     const double sim_cpu = measure_cpu(sim, 0, 2);
     stop(pid);
     stop(sim);
-    std::printf("streaming (G6 demo, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)",
-                smooth ? "on" : "off", streaming, sim_cpu);
+    std::printf("streaming (G6 %s, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)",
+                scene.c_str(), smooth ? "on" : "off", streaming, sim_cpu);
     print_frames(streaming, frames_per_second(frames, 5));
   }
   fs::remove_all(home);

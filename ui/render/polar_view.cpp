@@ -145,8 +145,13 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   const bool several_laps = std::any_of(layers.begin(), layers.end(),
                                         [](const SourceLayer& l) { return l.history && l.history->size() > 1; });
   const ColourParams colours = colours_for(settings, phase, several_laps);
+  // Points are merged per pixel, so a zoom changes what is drawn.
+  if (view_.px_per_mm() != merged_px_per_mm_) dirty_ = true;
   if (dirty_) {
     stats_ = build_source_clouds(layers, colours, settings.interference, vertices_, scratch_, phase);
+    points_shown_ = vertices_.size();
+    merged_px_per_mm_ = view_.px_per_mm();
+    if (merged_px_per_mm_ > 0.0f) merge_points_per_pixel(vertices_, 1.0f / merged_px_per_mm_, merge_scratch_);
     upload_if_dirty(phase);
   }
   return stats_;

@@ -14,6 +14,7 @@
 #include "ui/view/geometry/hit_test.h"
 #include "ui/view/status/hover_gate.h"
 #include "ui/view/scene/lap_history.h"
+#include "ui/view/scene/pixel_merge.h"
 #include "ui/view/geometry/pose_drag.h"
 #include "ui/view/settings/settings.h"
 #include "ui/view/scene/source_cloud.h"
@@ -74,7 +75,8 @@ class PolarView {
   const ViewTransform& transform() const { return view_; }
   // The colours the cloud was last built with (range near/far following auto-range).
   const ColourParams& colours_in_use() const { return last_colours_; }
-  std::size_t vertex_count() const { return vertices_.size(); }
+  // Points in the cloud, before those sharing a pixel were merged into one sprite.
+  std::size_t points_shown() const { return points_shown_; }
 
  private:
   PolarRenderer renderer_;
@@ -104,6 +106,9 @@ class PolarView {
   std::optional<std::pair<float, float>> swept_;
 
   std::vector<PointVertex> scratch_;  // one source's cloud before it is posed
+  PixelMergeScratch merge_scratch_;
+  std::size_t points_shown_ = 0;
+  float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at
   std::vector<SourceMark> marks_;
   std::optional<DropoutRingShape> dropouts_;
   std::optional<ZoneShapes> zones_;

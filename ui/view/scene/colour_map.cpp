@@ -35,9 +35,11 @@ constexpr std::array<Stop, 9> kViridis{{{0.194f, 0.398f, 0.553f},
                                         {0.774f, 0.877f, 0.179f},
                                         {0.992f, 0.906f, 0.145f}}};
 
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
-
 }  // namespace
+
+std::uint8_t unit_to_byte(float v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
 
 std::string_view colour_mode_name(ColourMode mode) {
   switch (mode) {
@@ -61,7 +63,8 @@ Rgba8 sample_palette(Palette palette, float t) {
   const float f = pos - static_cast<float>(i);
   const Stop& a = stops[i];
   const Stop& b = stops[i + 1];
-  return {to_byte(a.r + (b.r - a.r) * f), to_byte(a.g + (b.g - a.g) * f), to_byte(a.b + (b.b - a.b) * f), 255};
+  return {unit_to_byte(a.r + (b.r - a.r) * f), unit_to_byte(a.g + (b.g - a.g) * f), unit_to_byte(a.b + (b.b - a.b) * f),
+          255};
 }
 
 Rgba8 flag_colour(PointFlag flag) {
@@ -95,7 +98,7 @@ Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age,
   if (params.fade_old_laps) {
     // The newest lap is opaque; the oldest kept one is barely there.
     const float alpha = 1.0f - 0.85f * age;
-    c.a = to_byte(alpha);
+    c.a = unit_to_byte(alpha);
   }
   return c;
 }

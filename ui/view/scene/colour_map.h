@@ -20,6 +20,9 @@ std::string_view palette_name(Palette palette);
 // t in [0, 1] (clamped) -> colour along the palette, interpolated between its stops.
 Rgba8 sample_palette(Palette palette, float t);
 
+// A 0..1 channel as a byte, rounded, out-of-range values clamped.
+std::uint8_t unit_to_byte(float v);
+
 // Colours of the interference flags, also used by the legend in the panels.
 Rgba8 flag_colour(PointFlag flag);
 

@@ -12,10 +12,11 @@
 namespace ydscope::ui {
 
 struct PointVertex {
-  float x, y;    // world mm
-  Rgba8 colour;  // premultiplied by nothing; the shader blends with alpha
+  float x, y;          // world mm
+  Rgba8 colour;        // premultiplied by nothing; the shader blends with alpha
+  float stack = 1.0f;  // how many points of one pixel this sprite stands for (pixel_merge.h)
 };
-static_assert(sizeof(PointVertex) == 12, "the shader's vertex layout expects 12 bytes");
+static_assert(sizeof(PointVertex) == 16, "the shader's vertex layout expects 16 bytes");
 
 struct InterferenceSettings {
   bool drop_specular = false;  // G1 flag 2

@@ -1,0 +1,114 @@
+// Points sharing a pixel are merged into one sprite before drawing (ui/view/scene/pixel_merge.h):
+// the merge must lay its stack as the GPU's blend would have (each point over those before it),
+// keep sprites in the order their topmost points were drawn, and leave points in other pixels alone.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "ui/view/scene/pixel_merge.h"
+
+namespace ydscope::ui {
+namespace {
+
+constexpr float kCellMm = 10.0f;
+
+TEST(PixelMerge, PointsInDifferentPixelsAreLeftAsTheyWere) {
+  std::vector<PointVertex> points{
+      {5.0f, 5.0f, {200, 10, 10, 255}}, {15.0f, 5.0f, {10, 200, 10, 128}}, {-5.0f, 5.0f, {10, 10, 200, 40}}};
+  const std::vector<PointVertex> before = points;
+  PixelMergeScratch scratch;
+  merge_points_per_pixel(points, kCellMm, scratch);
+  ASSERT_EQ(points.size(), 3u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_EQ(points[i].x, before[i].x);
+    EXPECT_EQ(points[i].y, before[i].y);
+    EXPECT_EQ(points[i].colour, before[i].colour) << "point " << i;
+    EXPECT_EQ(points[i].stack, 1.0f);
+  }
+}
+
+TEST(PixelMerge, AStackBlendsAsEachPointOverThoseBeforeIt) {
+  // Red at half alpha, then blue at half alpha over it: the blend gives 0.75 alpha, of which red
+  // 0.25 and blue 0.5, so the colour is (85, 0, 170); two layers of alpha 0.5 stack to 0.75.
+  std::vector<PointVertex> points{{2.0f, 3.0f, {255, 0, 0, 128}}, {7.0f, 8.0f, {0, 0, 255, 128}}};
+  PixelMergeScratch scratch;
+  merge_points_per_pixel(points, kCellMm, scratch);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_EQ(points[0].x, 7.0f) << "the sprite sits where its topmost point was";
+  EXPECT_EQ(points[0].y, 8.0f);
+  EXPECT_NEAR(points[0].colour.r, 85, 1);
+  EXPECT_EQ(points[0].colour.g, 0);
+  EXPECT_NEAR(points[0].colour.b, 170, 1);
+  EXPECT_NEAR(points[0].colour.a, 128, 1);
+  EXPECT_EQ(points[0].stack, 2.0f);
+}
+
+TEST(PixelMerge, AnOpaquePointHidesWhatLiesUnderIt) {
+  std::vector<PointVertex> points{
+      {1.0f, 1.0f, {255, 0, 0, 200}}, {2.0f, 1.0f, {0, 255, 0, 90}}, {3.0f, 1.0f, {0, 0, 255, 255}}};
+  PixelMergeScratch scratch;
+  merge_points_per_pixel(points, kCellMm, scratch);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_EQ(points[0].colour, (Rgba8{0, 0, 255, 255}));
+}
+
+TEST(PixelMerge, SpritesKeepTheOrderOfTheirTopmostPoints) {
+  // A and C share a pixel, B has its own: B was drawn under C, so the merged A+C comes after B.
+  std::vector<PointVertex> points{{1.0f, 1.0f, {255, 0, 0, 100}},   // A
+                                  {25.0f, 1.0f, {0, 255, 0, 255}},  // B
+                                  {4.0f, 2.0f, {0, 0, 255, 100}}};  // C
+  PixelMergeScratch scratch;
+  merge_points_per_pixel(points, kCellMm, scratch);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].x, 25.0f);
+  EXPECT_EQ(points[1].x, 4.0f);
+  EXPECT_EQ(points[1].stack, 2.0f);
+}
+
+TEST(PixelMerge, NegativeCoordinatesFallInTheirOwnPixels) {
+  // -1 and -2 mm share the cell left of zero, 1 and 2 mm the one right of it; cells rounded
+  // towards zero would have put all four in one.
+  std::vector<PointVertex> points{{-1.0f, 1.0f, {255, 0, 0, 255}},
+                                  {-2.0f, 1.0f, {255, 0, 0, 255}},
+                                  {1.0f, 1.0f, {0, 255, 0, 255}},
+                                  {2.0f, 1.0f, {0, 255, 0, 255}}};
+  PixelMergeScratch scratch;
+  merge_points_per_pixel(points, kCellMm, scratch);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].colour, (Rgba8{255, 0, 0, 255}));
+  EXPECT_EQ(points[1].colour, (Rgba8{0, 255, 0, 255}));
+}
+
+TEST(PixelMerge, FewPointsSharingPixelsAreDrawnAsTheyAre) {
+  // Five points in four pixels: merging would leave 80 % of the sprites, not worth its cost.
+  std::vector<PointVertex> points{{1.0f, 1.0f, {255, 0, 0, 100}},
+                                  {2.0f, 1.0f, {0, 255, 0, 100}},
+                                  {11.0f, 1.0f, {0, 0, 255, 100}},
+                                  {21.0f, 1.0f, {0, 0, 255, 100}},
+                                  {31.0f, 1.0f, {0, 0, 255, 100}}};
+  const std::vector<PointVertex> before = points;
+  PixelMergeScratch scratch;
+  merge_points_per_pixel(points, kCellMm, scratch);
+  ASSERT_EQ(points.size(), before.size());
+  for (std::size_t i = 0; i < points.size(); ++i) EXPECT_EQ(points[i].colour, before[i].colour) << i;
+}
+
+TEST(PixelMerge, AStaticWallOfTenLapsBecomesOneSpritePerPixel) {
+  // Ten laps of the same 100 points, 10 mm apart along a wall, each lap 1 mm off the last (noise):
+  // every lap lands in the same pixels as the others. The scratch is reused as the app does.
+  PixelMergeScratch scratch;
+  for (int frame = 0; frame < 3; ++frame) {
+    std::vector<PointVertex> points;
+    for (int lap = 0; lap < 10; ++lap)
+      for (int i = 0; i < 100; ++i)
+        points.push_back({10.0f * static_cast<float>(i) + 2.0f + 0.5f * static_cast<float>(lap),
+                          3000.0f + 3.0f,
+                          {40, 200, 120, static_cast<std::uint8_t>(40 + 20 * lap)}});
+    merge_points_per_pixel(points, kCellMm, scratch);
+    ASSERT_EQ(points.size(), 100u) << "frame " << frame;
+    for (const PointVertex& p : points) EXPECT_EQ(p.stack, 10.0f);
+  }
+}
+
+}  // namespace
+}  // namespace ydscope::ui

@@ -1,0 +1,117 @@
+// A sprite that stands for a stack of points (ui/view/scene/pixel_merge.h) must look like the stack
+// did: drawn with the app's own renderer and point shader into an offscreen picture, the merged
+// sprite and the points it replaced give the same pixels, antialiased rim included. Needs the
+// display CTest gives the suite (xvfb-run); skips without one.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+#include "ui/render/gl.h"
+#include "ui/render/polar_renderer.h"
+#include "ui/view/scene/pixel_merge.h"
+
+namespace ydscope::ui {
+namespace {
+
+constexpr int kSide = 32;
+
+// A hidden window's GL 3.3 core context and a framebuffer of kSide x kSide to draw into.
+class OffscreenGl : public testing::Test {
+ protected:
+  void SetUp() override {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (the suite runs under xvfb-run)";
+    ASSERT_TRUE(glfwInit()) << "GLFW could not start on this display";
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    window_ = glfwCreateWindow(kSide, kSide, "point stack", nullptr, nullptr);
+    ASSERT_NE(window_, nullptr) << "no GL 3.3 core context on this display";
+    glfwMakeContextCurrent(window_);
+    glGenFramebuffers(1, &framebuffer_);
+    glGenRenderbuffers(1, &colour_);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kSide, kSide);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+    view_.set_viewport({0.0f, 0.0f}, {static_cast<float>(kSide), static_cast<float>(kSide)});
+    view_.fit_range(1000.0f);
+  }
+  void TearDown() override {
+    if (!window_) return;
+    glDeleteRenderbuffers(1, &colour_);
+    glDeleteFramebuffers(1, &framebuffer_);
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
+
+  // The picture `renderer` draws of `points` over the view's background, bottom row first, RGBA.
+  std::vector<unsigned char> picture(PolarRenderer& renderer, const std::vector<PointVertex>& points, float size_px) {
+    glClearColor(9 / 255.0f, 11 / 255.0f, 15 / 255.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    renderer.upload_points(points);
+    PolarStyle style;
+    style.point_size_px = size_px;
+    style.show_grid = false;
+    renderer.draw(view_, style, 1.0f, kSide);
+    std::vector<unsigned char> pixels(static_cast<std::size_t>(kSide * kSide * 4));
+    glReadPixels(0, 0, kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    return pixels;
+  }
+
+  float cell_mm() const { return 1.0f / view_.px_per_mm(); }
+
+  ViewTransform view_;
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  GLuint framebuffer_ = 0;
+  GLuint colour_ = 0;
+};
+
+// The largest difference in a colour channel; alpha is left out, as the window shows none.
+int largest_difference(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+  int largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (i % 4 != 3) largest = std::max(largest, std::abs(a[i] - b[i]));
+  return largest;
+}
+
+// Nine faded laps of one point of a wall, on one spot, as the persistence draws them.
+std::vector<PointVertex> faded_stack() {
+  std::vector<PointVertex> stack;
+  for (int age = 9; age >= 1; --age)
+    stack.push_back(
+        {1.0f, 1.0f, {40, 200, 120, static_cast<std::uint8_t>(255.0f * (1.0f - 0.085f * static_cast<float>(age)))}});
+  return stack;
+}
+
+TEST_F(OffscreenGl, AMergedStackDrawsTheSamePixelsAsItsPoints) {
+  PolarRenderer renderer;
+  for (const float size_px : {3.0f, 7.0f}) {
+    std::vector<PointVertex> merged = faded_stack();
+    PixelMergeScratch scratch;
+    merge_points_per_pixel(merged, cell_mm(), scratch);
+    ASSERT_EQ(merged.size(), 1u);
+    const auto stacked = picture(renderer, faded_stack(), size_px);
+    const auto one = picture(renderer, merged, size_px);
+    EXPECT_LE(largest_difference(stacked, one), 3) << size_px << " px points";
+
+    // Not a vacuous match: the same colour and total alpha as one plain layer loses the rim the
+    // stack's layers build up, and that shows.
+    PointVertex plain = merged[0];
+    plain.colour.a = static_cast<std::uint8_t>(
+        255.0f * (1.0f - std::pow(1.0f - static_cast<float>(merged[0].colour.a) / 255.0f, merged[0].stack)));
+    plain.stack = 1.0f;
+    EXPECT_GT(largest_difference(stacked, picture(renderer, {plain}, size_px)), 10) << size_px << " px points";
+  }
+}
+
+}  // namespace
+}  // namespace ydscope::ui

@@ -1,0 +1,45 @@
+#pragma once
+// Points that fall in the same pixel are drawn as one sprite. With ten laps kept, a static wall
+// puts dozens of points on each of its pixels, and a software renderer (Mesa's llvmpipe, what
+// robots' boards, VMs and CI draw with) pays for every one of them at every frame, because the
+// fade moves. Merging them on the CPU, with the same "over" rule the GPU's blend applies, gives
+// the picture the stack would have given for a fraction of the raster work.
+#include <cstdint>
+#include <vector>
+
+#include "ui/view/scene/point_cloud.h"
+
+namespace ydscope::ui {
+
+// Kept between frames: which points share a pixel is worked out again only when the points moved
+// (a new lap, a zoom), since between laps only their fade changes; and nothing is allocated once
+// warmed up.
+struct PixelMergeScratch {
+  struct Cell {
+    std::uint64_t key = 0;
+    std::uint32_t slot = 0;
+    std::uint32_t round = 0;  // the grouping that filled it; older ones read as empty, so no clearing
+  };
+  struct Slot {
+    float x = 0, y = 0;         // the topmost member's position: it is what shows
+    float r = 0, g = 0, b = 0;  // premultiplied colour of the stack so far, 0..1
+    float a = 0;                // the stack's alpha so far, 0..1
+    float members = 0;
+  };
+  std::vector<Cell> table;
+  std::uint32_t round = 0;
+  // The grouping of the points last merged: their positions, each one's slot, the cell size.
+  std::vector<float> positions;
+  std::vector<std::uint32_t> slot_of;
+  float cell_mm = 0.0f;
+  std::vector<Slot> slots;  // made top first
+};
+
+// Replaces `points` (in draw order: the last is on top) with one sprite per cell of `cell_mm`
+// square that holds any, in the order of their topmost members. Each sprite carries the stack's
+// colour and, in `stack`, how many points it stands for: the shader spreads the alpha over that
+// many layers so an antialiased rim grows as a stack's rims would. Where the cells would leave
+// more than three quarters of the points (a scene that moves), `points` is left as it was.
+void merge_points_per_pixel(std::vector<PointVertex>& points, float cell_mm, PixelMergeScratch& scratch);
+
+}  // namespace ydscope::ui
