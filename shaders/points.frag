@@ -2,7 +2,7 @@
 // Round point sprites with an antialiased rim and a slightly brighter core, so dense scans read as
 // glowing dots rather than squares.
 in vec4 v_colour;
-in float v_stack;
+flat in vec2 v_rim;
 uniform float u_point_size;
 out vec4 frag_colour;
 
@@ -15,6 +15,6 @@ void main() {
   if (coverage <= 0.0) discard;
   vec3 core = mix(v_colour.rgb, vec3(1.0), 0.35 * (1.0 - smoothstep(0.0, 0.6, r)));
   // A sprite standing for a stack of points covers what their layers would have, rim included.
-  float alpha = 1.0 - pow(1.0 - v_colour.a * coverage, v_stack);
+  float alpha = clamp(coverage * (v_rim.x + v_rim.y * coverage), 0.0, 1.0);
   frag_colour = vec4(core, alpha);
 }

@@ -46,7 +46,7 @@ PolarRenderer::PolarRenderer()
   create_vertex_array(points_.vao, points_.vbo, sizeof(PointVertex),
                       {{2, GL_FLOAT, GL_FALSE, offsetof(PointVertex, x)},
                        {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(PointVertex, colour)},
-                       {1, GL_FLOAT, GL_FALSE, offsetof(PointVertex, stack)}});
+                       {1, GL_FLOAT, GL_FALSE, offsetof(PointVertex, half_clear)}});
   create_vertex_array(lines_.vao, lines_.vbo, sizeof(LineVertex),
                       {{2, GL_FLOAT, GL_FALSE, offsetof(LineVertex, x)},
                        {1, GL_FLOAT, GL_FALSE, offsetof(LineVertex, edge_px)},

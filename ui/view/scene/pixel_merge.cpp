@@ -69,36 +69,37 @@ void group(const std::vector<PointVertex>& points, float cell_mm, PixelMergeScra
 
 // Lays `p` under what `slot` holds so far, as the blend would have laid the stack bottom up.
 void lay_under(Slot& slot, const PointVertex& p) {
-  const float own = p.colour.a / 255.0f;
-  // A sprite that already stands for `stack` layers covers as much as they did.
-  const float alpha = p.stack == 1.0f ? own : 1.0f - std::pow(1.0f - own, p.stack);
+  const float alpha = p.colour.a / 255.0f;
   const float under = (1.0f - slot.a) * alpha;
   slot.r += under * (p.colour.r / 255.0f);
   slot.g += under * (p.colour.g / 255.0f);
   slot.b += under * (p.colour.b / 255.0f);
   slot.a += under;
-  slot.members += p.stack;
+  slot.half_clear *= p.half_clear < 0.0f ? 1.0f - 0.5f * alpha : p.half_clear;
 }
 
 PointVertex sprite_of(const Slot& slot) {
   const float inverse_alpha = slot.a > 0.0f ? 1.0f / slot.a : 0.0f;
-  const float a = std::clamp(slot.a, 0.0f, 1.0f);
-  // The alpha each of `members` equal layers would need to stack up to the slot's.
-  const float layer_alpha = slot.members == 1.0f ? a : 1.0f - std::pow(1.0f - a, 1.0f / slot.members);
   return {slot.x, slot.y,
           Rgba8{unit_to_byte(slot.r * inverse_alpha), unit_to_byte(slot.g * inverse_alpha),
-                unit_to_byte(slot.b * inverse_alpha), unit_to_byte(layer_alpha)},
-          slot.members};
+                unit_to_byte(slot.b * inverse_alpha), unit_to_byte(slot.a)},
+          slot.half_clear};
 }
 
 }  // namespace
 
 void merge_points_per_pixel(std::vector<PointVertex>& points, float cell_mm, PixelMergeScratch& scratch) {
   if (points.size() < 2 || !(cell_mm > 0.0f)) return;
-  if (!same_points(points, cell_mm, scratch)) group(points, cell_mm, scratch);
-  // Where few points share a pixel (a scene that moves from lap to lap), merging would cost the
-  // CPU about what it saves the renderer: the points are drawn as they are.
-  if (static_cast<float>(scratch.slots.size()) > kWorthMerging * static_cast<float>(points.size())) return;
+  if (!same_points(points, cell_mm, scratch)) {
+    if (!scratch.worth_merging && scratch.clouds_until_next_look-- > 0) return;
+    group(points, cell_mm, scratch);
+    // Where few points share a pixel (a scene that moves from lap to lap), merging would cost the
+    // CPU about what it saves the renderer: the points are drawn as they are.
+    scratch.worth_merging =
+        static_cast<float>(scratch.slots.size()) <= kWorthMerging * static_cast<float>(points.size());
+    scratch.clouds_until_next_look = kCloudsBetweenLooks;
+  }
+  if (!scratch.worth_merging) return;
   for (Slot& slot : scratch.slots) slot = {slot.x, slot.y};
   for (std::size_t i = points.size(); i-- > 0;) lay_under(scratch.slots[scratch.slot_of[i]], points[i]);
   // Slots were made top first; drawn bottom first.

@@ -24,7 +24,7 @@ struct PixelMergeScratch {
     float x = 0, y = 0;         // the topmost member's position: it is what shows
     float r = 0, g = 0, b = 0;  // premultiplied colour of the stack so far, 0..1
     float a = 0;                // the stack's alpha so far, 0..1
-    float members = 0;
+    float half_clear = 1;       // what shows through the stack where each member covers half
   };
   std::vector<Cell> table;
   std::uint32_t round = 0;
@@ -33,13 +33,22 @@ struct PixelMergeScratch {
   std::vector<std::uint32_t> slot_of;
   float cell_mm = 0.0f;
   std::vector<Slot> slots;  // made top first
+  // Whether the last grouping merged enough to pay, and if not, how many more clouds to draw as
+  // they are before grouping again: a scene that moves stays one for a while.
+  bool worth_merging = false;
+  int clouds_until_next_look = 0;
 };
+
+// Clouds drawn as they are after one whose merge would not have paid: about a second at the
+// display's rate, four at a frame a lap.
+inline constexpr int kCloudsBetweenLooks = 30;
 
 // Replaces `points` (in draw order: the last is on top) with one sprite per cell of `cell_mm`
 // square that holds any, in the order of their topmost members. Each sprite carries the stack's
-// colour and, in `stack`, how many points it stands for: the shader spreads the alpha over that
-// many layers so an antialiased rim grows as a stack's rims would. Where the cells would leave
-// more than three quarters of the points (a scene that moves), `points` is left as it was.
+// colour and alpha and, in `half_clear`, what shows through the stack at half coverage, from
+// which the point shader draws the rim the stack's rims would have built up. Where the cells would leave
+// more than three quarters of the points (a scene that moves), `points` is left as it was, and
+// the next kCloudsBetweenLooks clouds are not looked at.
 void merge_points_per_pixel(std::vector<PointVertex>& points, float cell_mm, PixelMergeScratch& scratch);
 
 }  // namespace ydscope::ui

@@ -12,9 +12,11 @@
 namespace ydscope::ui {
 
 struct PointVertex {
-  float x, y;          // world mm
-  Rgba8 colour;        // premultiplied by nothing; the shader blends with alpha
-  float stack = 1.0f;  // how many points of one pixel this sprite stands for (pixel_merge.h)
+  float x, y;    // world mm
+  Rgba8 colour;  // premultiplied by nothing; the shader blends with alpha
+  // How much of what lies under shows through where the sprite covers half a pixel, for a sprite
+  // standing for several points (pixel_merge.h); below 0, a lone point's: 1 - alpha / 2.
+  float half_clear = -1.0f;
 };
 static_assert(sizeof(PointVertex) == 16, "the shader's vertex layout expects 16 bytes");
 
