@@ -16,8 +16,8 @@ TEST(PixelMerge, PointsInDifferentPixelsAreLeftAsTheyWere) {
   std::vector<PointVertex> points{
       {5.0f, 5.0f, {200, 10, 10, 255}}, {15.0f, 5.0f, {10, 200, 10, 128}}, {-5.0f, 5.0f, {10, 10, 200, 40}}};
   const std::vector<PointVertex> before = points;
-  PixelMergeScratch scratch;
-  merge_points_per_pixel(points, kCellMm, scratch);
+  PixelMerger merger;
+  merger.merge(points, kCellMm);
   ASSERT_EQ(points.size(), 3u);
   for (std::size_t i = 0; i < points.size(); ++i) {
     EXPECT_EQ(points[i].x, before[i].x);
@@ -32,8 +32,8 @@ TEST(PixelMerge, AStackBlendsAsEachPointOverThoseBeforeIt) {
   // 0.25 and blue 0.5, so the colour is (85, 0, 170). Where each covers half, each lets 0.75
   // through, so the stack lets 0.5625 through.
   std::vector<PointVertex> points{{2.0f, 3.0f, {255, 0, 0, 128}}, {7.0f, 8.0f, {0, 0, 255, 128}}};
-  PixelMergeScratch scratch;
-  merge_points_per_pixel(points, kCellMm, scratch);
+  PixelMerger merger;
+  merger.merge(points, kCellMm);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_EQ(points[0].x, 7.0f) << "the sprite sits where its topmost point was";
   EXPECT_EQ(points[0].y, 8.0f);
@@ -47,8 +47,8 @@ TEST(PixelMerge, AStackBlendsAsEachPointOverThoseBeforeIt) {
 TEST(PixelMerge, AnOpaquePointHidesWhatLiesUnderIt) {
   std::vector<PointVertex> points{
       {1.0f, 1.0f, {255, 0, 0, 200}}, {2.0f, 1.0f, {0, 255, 0, 90}}, {3.0f, 1.0f, {0, 0, 255, 255}}};
-  PixelMergeScratch scratch;
-  merge_points_per_pixel(points, kCellMm, scratch);
+  PixelMerger merger;
+  merger.merge(points, kCellMm);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_EQ(points[0].colour, (Rgba8{0, 0, 255, 255}));
 }
@@ -58,8 +58,8 @@ TEST(PixelMerge, SpritesKeepTheOrderOfTheirTopmostPoints) {
   std::vector<PointVertex> points{{1.0f, 1.0f, {255, 0, 0, 100}},   // A
                                   {25.0f, 1.0f, {0, 255, 0, 255}},  // B
                                   {4.0f, 2.0f, {0, 0, 255, 100}}};  // C
-  PixelMergeScratch scratch;
-  merge_points_per_pixel(points, kCellMm, scratch);
+  PixelMerger merger;
+  merger.merge(points, kCellMm);
   ASSERT_EQ(points.size(), 2u);
   EXPECT_EQ(points[0].x, 25.0f);
   EXPECT_EQ(points[1].x, 4.0f);
@@ -73,8 +73,8 @@ TEST(PixelMerge, NegativeCoordinatesFallInTheirOwnPixels) {
                                   {-2.0f, 1.0f, {255, 0, 0, 255}},
                                   {1.0f, 1.0f, {0, 255, 0, 255}},
                                   {2.0f, 1.0f, {0, 255, 0, 255}}};
-  PixelMergeScratch scratch;
-  merge_points_per_pixel(points, kCellMm, scratch);
+  PixelMerger merger;
+  merger.merge(points, kCellMm);
   ASSERT_EQ(points.size(), 2u);
   EXPECT_EQ(points[0].colour, (Rgba8{255, 0, 0, 255}));
   EXPECT_EQ(points[1].colour, (Rgba8{0, 255, 0, 255}));
@@ -88,8 +88,8 @@ TEST(PixelMerge, FewPointsSharingPixelsAreDrawnAsTheyAre) {
                                   {21.0f, 1.0f, {0, 0, 255, 100}},
                                   {31.0f, 1.0f, {0, 0, 255, 100}}};
   const std::vector<PointVertex> before = points;
-  PixelMergeScratch scratch;
-  merge_points_per_pixel(points, kCellMm, scratch);
+  PixelMerger merger;
+  merger.merge(points, kCellMm);
   ASSERT_EQ(points.size(), before.size());
   for (std::size_t i = 0; i < points.size(); ++i) EXPECT_EQ(points[i].colour, before[i].colour) << i;
 }
@@ -107,26 +107,26 @@ std::vector<PointVertex> static_wall() {
 }
 
 TEST(PixelMerge, AfterAMovingSceneAStillOneIsMergedAgainWithinAWhile) {
-  PixelMergeScratch scratch;
+  PixelMerger merger;
   std::vector<PointVertex> moving{{1.0f, 1.0f, {255, 0, 0, 100}}, {11.0f, 1.0f, {0, 255, 0, 100}}};
-  merge_points_per_pixel(moving, kCellMm, scratch);
+  merger.merge(moving, kCellMm);
   ASSERT_EQ(moving.size(), 2u);
   int clouds = 0;
   std::vector<PointVertex> wall = static_wall();
-  for (; clouds <= kCloudsBetweenLooks && wall.size() == 1000u; ++clouds) {
+  for (; clouds <= PixelMerger::kCloudsBetweenLooks && wall.size() == 1000u; ++clouds) {
     wall = static_wall();
-    merge_points_per_pixel(wall, kCellMm, scratch);
+    merger.merge(wall, kCellMm);
   }
   EXPECT_EQ(wall.size(), 100u) << "still not merged after " << clouds << " clouds";
   EXPECT_GT(clouds, 1) << "a moving scene should be left alone for a while before looking again";
 }
 
 TEST(PixelMerge, AStaticWallOfTenLapsBecomesOneSpritePerPixel) {
-  // The scratch is reused as the app does.
-  PixelMergeScratch scratch;
+  // The merger is kept from cloud to cloud, as the app keeps it.
+  PixelMerger merger;
   for (int frame = 0; frame < 3; ++frame) {
     std::vector<PointVertex> points = static_wall();
-    merge_points_per_pixel(points, kCellMm, scratch);
+    merger.merge(points, kCellMm);
     ASSERT_EQ(points.size(), 100u) << "frame " << frame;
     float half_clear = 1.0f;  // what the ten laps' points let through at half coverage
     for (int lap = 0; lap < 10; ++lap) half_clear *= 1.0f - 0.5f * static_cast<float>(40 + 20 * lap) / 255.0f;

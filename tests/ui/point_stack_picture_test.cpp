@@ -103,8 +103,8 @@ TEST_F(OffscreenGl, AMergedStackDrawsTheSamePixelsAsItsPoints) {
   };
   for (const auto [size_px, tolerance] : {Case{3.0f, 3}, Case{7.0f, 5}}) {
     std::vector<PointVertex> merged = faded_stack();
-    PixelMergeScratch scratch;
-    merge_points_per_pixel(merged, cell_mm(), scratch);
+    PixelMerger merger;
+    merger.merge(merged, cell_mm());
     ASSERT_EQ(merged.size(), 1u);
     const auto stacked = picture(renderer, faded_stack(), size_px);
     const auto one = picture(renderer, merged, size_px);

@@ -151,7 +151,7 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
     stats_ = build_source_clouds(layers, colours, settings.interference, vertices_, scratch_, phase);
     points_shown_ = vertices_.size();
     merged_px_per_mm_ = view_.px_per_mm();
-    if (merged_px_per_mm_ > 0.0f) merge_points_per_pixel(vertices_, 1.0f / merged_px_per_mm_, merge_scratch_);
+    merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
     upload_if_dirty(phase);
   }
   return stats_;

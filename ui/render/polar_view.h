@@ -106,7 +106,7 @@ class PolarView {
   std::optional<std::pair<float, float>> swept_;
 
   std::vector<PointVertex> scratch_;  // one source's cloud before it is posed
-  PixelMergeScratch merge_scratch_;
+  PixelMerger merger_;
   std::size_t points_shown_ = 0;
   float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at
   std::vector<SourceMark> marks_;

@@ -9,8 +9,6 @@
 namespace ydscope::ui {
 namespace {
 
-using Slot = PixelMergeScratch::Slot;
-
 // Merging pays when it leaves at most this share of the sprites. It costs the CPU time of its own
 // (a grouping a lap, a composite a frame): where it left 81 % of them (the virtual lidar's demo
 // scene, which moves) that was about what llvmpipe saved (docs/performance.md).
@@ -22,22 +20,24 @@ std::uint64_t cell_key(float x, float y, float cell_mm) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) << 32) | static_cast<std::uint32_t>(cy);
 }
 
-bool same_points(const std::vector<PointVertex>& points, float cell_mm, const PixelMergeScratch& s) {
-  if (cell_mm != s.cell_mm || points.size() * 2 != s.positions.size()) return false;
+}  // namespace
+
+bool PixelMerger::same_points(const std::vector<PointVertex>& points, float cell_mm) const {
+  if (cell_mm != cell_mm_ || points.size() * 2 != positions_.size()) return false;
   for (std::size_t i = 0; i < points.size(); ++i)
-    if (points[i].x != s.positions[2 * i] || points[i].y != s.positions[2 * i + 1]) return false;
+    if (points[i].x != positions_[2 * i] || points[i].y != positions_[2 * i + 1]) return false;
   return true;
 }
 
 // The slot of `key`'s cell, made (at x, y) if this grouping has not seen the cell yet.
-std::uint32_t slot_for(PixelMergeScratch& s, std::uint64_t key, float x, float y) {
-  const std::size_t mask = s.table.size() - 1;
+std::uint32_t PixelMerger::slot_for(std::uint64_t key, float x, float y) {
+  const std::size_t mask = table_.size() - 1;
   std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
   for (;; i = (i + 1) & mask) {
-    PixelMergeScratch::Cell& cell = s.table[i];
-    if (cell.round != s.round) {
-      cell = {key, static_cast<std::uint32_t>(s.slots.size()), s.round};
-      s.slots.push_back({x, y});
+    Cell& cell = table_[i];
+    if (cell.round != round_) {
+      cell = {key, static_cast<std::uint32_t>(slots_.size()), round_};
+      slots_.push_back({x, y});
       return cell.slot;
     }
     if (cell.key == key) return cell.slot;
@@ -45,30 +45,30 @@ std::uint32_t slot_for(PixelMergeScratch& s, std::uint64_t key, float x, float y
 }
 
 // Which slot each point goes to, slots made top first so each sits where its topmost point was.
-void group(const std::vector<PointVertex>& points, float cell_mm, PixelMergeScratch& s) {
+void PixelMerger::group(const std::vector<PointVertex>& points, float cell_mm) {
   const std::size_t size = std::bit_ceil(points.size() * 2);  // at most half full: short probes
-  if (s.table.size() < size) {
-    s.table.assign(size, {});
-    s.round = 0;
+  if (table_.size() < size) {
+    table_.assign(size, {});
+    round_ = 0;
   }
-  if (++s.round == 0) {  // wrapped: every old stamp could read as this grouping's
-    std::fill(s.table.begin(), s.table.end(), PixelMergeScratch::Cell{});
-    s.round = 1;
+  if (++round_ == 0) {  // wrapped: every old stamp could read as this grouping's
+    std::fill(table_.begin(), table_.end(), Cell{});
+    round_ = 1;
   }
-  s.slots.clear();
-  s.slot_of.resize(points.size());
-  s.positions.resize(points.size() * 2);
+  slots_.clear();
+  slot_of_.resize(points.size());
+  positions_.resize(points.size() * 2);
   for (std::size_t i = points.size(); i-- > 0;) {
     const PointVertex& p = points[i];
-    s.slot_of[i] = slot_for(s, cell_key(p.x, p.y, cell_mm), p.x, p.y);
-    s.positions[2 * i] = p.x;
-    s.positions[2 * i + 1] = p.y;
+    slot_of_[i] = slot_for(cell_key(p.x, p.y, cell_mm), p.x, p.y);
+    positions_[2 * i] = p.x;
+    positions_[2 * i + 1] = p.y;
   }
-  s.cell_mm = cell_mm;
+  cell_mm_ = cell_mm;
 }
 
 // Lays `p` under what `slot` holds so far, as the blend would have laid the stack bottom up.
-void lay_under(Slot& slot, const PointVertex& p) {
+void PixelMerger::lay_under(Slot& slot, const PointVertex& p) {
   const float alpha = p.colour.a / 255.0f;
   const float under = (1.0f - slot.a) * alpha;
   slot.r += under * (p.colour.r / 255.0f);
@@ -78,7 +78,7 @@ void lay_under(Slot& slot, const PointVertex& p) {
   slot.half_clear *= p.half_clear < 0.0f ? 1.0f - 0.5f * alpha : p.half_clear;
 }
 
-PointVertex sprite_of(const Slot& slot) {
+PointVertex PixelMerger::sprite_of(const Slot& slot) {
   const float inverse_alpha = slot.a > 0.0f ? 1.0f / slot.a : 0.0f;
   return {slot.x, slot.y,
           Rgba8{unit_to_byte(slot.r * inverse_alpha), unit_to_byte(slot.g * inverse_alpha),
@@ -86,25 +86,22 @@ PointVertex sprite_of(const Slot& slot) {
           slot.half_clear};
 }
 
-}  // namespace
-
-void merge_points_per_pixel(std::vector<PointVertex>& points, float cell_mm, PixelMergeScratch& scratch) {
-  if (points.size() < 2 || !(cell_mm > 0.0f)) return;
-  if (!same_points(points, cell_mm, scratch)) {
-    if (!scratch.worth_merging && scratch.clouds_until_next_look-- > 0) return;
-    group(points, cell_mm, scratch);
+void PixelMerger::merge(std::vector<PointVertex>& points, float cell_mm) {
+  if (points.size() < 2 || !(cell_mm > 0.0f && std::isfinite(cell_mm))) return;
+  if (!same_points(points, cell_mm)) {
+    if (!worth_merging_ && clouds_until_next_look_-- > 0) return;
+    group(points, cell_mm);
     // Where few points share a pixel (a scene that moves from lap to lap), merging would cost the
     // CPU about what it saves the renderer: the points are drawn as they are.
-    scratch.worth_merging =
-        static_cast<float>(scratch.slots.size()) <= kWorthMerging * static_cast<float>(points.size());
-    scratch.clouds_until_next_look = kCloudsBetweenLooks;
+    worth_merging_ = static_cast<float>(slots_.size()) <= kWorthMerging * static_cast<float>(points.size());
+    clouds_until_next_look_ = kCloudsBetweenLooks;
   }
-  if (!scratch.worth_merging) return;
-  for (Slot& slot : scratch.slots) slot = {slot.x, slot.y};
-  for (std::size_t i = points.size(); i-- > 0;) lay_under(scratch.slots[scratch.slot_of[i]], points[i]);
+  if (!worth_merging_) return;
+  for (Slot& slot : slots_) slot = {slot.x, slot.y};
+  for (std::size_t i = points.size(); i-- > 0;) lay_under(slots_[slot_of_[i]], points[i]);
   // Slots were made top first; drawn bottom first.
   points.clear();
-  for (auto it = scratch.slots.rbegin(); it != scratch.slots.rend(); ++it) points.push_back(sprite_of(*it));
+  for (auto it = slots_.rbegin(); it != slots_.rend(); ++it) points.push_back(sprite_of(*it));
 }
 
 }  // namespace ydscope::ui

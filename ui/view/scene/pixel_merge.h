@@ -11,10 +11,25 @@
 
 namespace ydscope::ui {
 
+// Replaces a cloud (in draw order: the last point is on top) with one sprite per cell of `cell_mm`
+// square that holds any, in the order of their topmost points. Each sprite carries the stack's
+// colour and alpha and, in `half_clear`, what shows through the stack at half coverage, from which
+// the point shader draws the rim the stack's rims would have built up. Where the cells would leave
+// more than three quarters of the points (a scene that moves), the cloud is left as it was, and
+// the next kCloudsBetweenLooks clouds are not looked at.
+//
 // Kept between frames: which points share a pixel is worked out again only when the points moved
-// (a new lap, a zoom), since between laps only their fade changes; and nothing is allocated once
+// (a new lap, a zoom), since between laps only their fade changes; nothing is allocated once
 // warmed up.
-struct PixelMergeScratch {
+class PixelMerger {
+ public:
+  // Clouds drawn as they are after one whose merge would not have paid: about a second at the
+  // display's rate, four at a frame a lap.
+  static constexpr int kCloudsBetweenLooks = 30;
+
+  void merge(std::vector<PointVertex>& points, float cell_mm);
+
+ private:
   struct Cell {
     std::uint64_t key = 0;
     std::uint32_t slot = 0;
@@ -26,29 +41,24 @@ struct PixelMergeScratch {
     float a = 0;                // the stack's alpha so far, 0..1
     float half_clear = 1;       // what shows through the stack where each member covers half
   };
-  std::vector<Cell> table;
-  std::uint32_t round = 0;
+
+  bool same_points(const std::vector<PointVertex>& points, float cell_mm) const;
+  void group(const std::vector<PointVertex>& points, float cell_mm);
+  std::uint32_t slot_for(std::uint64_t key, float x, float y);
+  static void lay_under(Slot& slot, const PointVertex& p);
+  static PointVertex sprite_of(const Slot& slot);
+
+  std::vector<Cell> table_;
+  std::uint32_t round_ = 0;
   // The grouping of the points last merged: their positions, each one's slot, the cell size.
-  std::vector<float> positions;
-  std::vector<std::uint32_t> slot_of;
-  float cell_mm = 0.0f;
-  std::vector<Slot> slots;  // made top first
+  std::vector<float> positions_;
+  std::vector<std::uint32_t> slot_of_;
+  float cell_mm_ = 0.0f;
+  std::vector<Slot> slots_;  // made top first
   // Whether the last grouping merged enough to pay, and if not, how many more clouds to draw as
   // they are before grouping again: a scene that moves stays one for a while.
-  bool worth_merging = false;
-  int clouds_until_next_look = 0;
+  bool worth_merging_ = false;
+  int clouds_until_next_look_ = 0;
 };
-
-// Clouds drawn as they are after one whose merge would not have paid: about a second at the
-// display's rate, four at a frame a lap.
-inline constexpr int kCloudsBetweenLooks = 30;
-
-// Replaces `points` (in draw order: the last is on top) with one sprite per cell of `cell_mm`
-// square that holds any, in the order of their topmost members. Each sprite carries the stack's
-// colour and alpha and, in `half_clear`, what shows through the stack at half coverage, from
-// which the point shader draws the rim the stack's rims would have built up. Where the cells would leave
-// more than three quarters of the points (a scene that moves), `points` is left as it was, and
-// the next kCloudsBetweenLooks clouds are not looked at.
-void merge_points_per_pixel(std::vector<PointVertex>& points, float cell_mm, PixelMergeScratch& scratch);
 
 }  // namespace ydscope::ui
