@@ -8,9 +8,9 @@
 // the frames it presented are counted too (the Gallium HUD, kept hidden, writes frames/s once a
 // second to a file), and CPU per frame: on a loaded machine the app gets fewer frames than it asks
 // for, so its share of a core alone under-states a frame's cost.
-//   xvfb-run -a -s "-screen 0 1280x800x24" build/ui/tests/bench/bench_frame_cpu [seconds] [scene]
-// scene is the virtual lidar's: demo (the default, a turning flower: every lap lands elsewhere) or
-// room (walls that stay put, as on a bench or a robot: laps land on the same pixels).
+//   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_frame_cpu [--seconds 20] [--scene demo]
+// The scene is the virtual lidar's: demo (a turning flower: every lap lands elsewhere), room
+// (walls that stay put, as on a bench or a robot: laps land on the same pixels) or booth.
 // Not a Google Benchmark: it measures another process, so it has its own main.
 #include <unistd.h>
 
@@ -22,6 +22,7 @@
 #include <string>
 #include <thread>
 
+#include "tests/bench/bench_options.h"
 #include "tests/bench/process_probe.h"
 
 namespace fs = std::filesystem;
@@ -60,8 +61,14 @@ void print_frames(double cpu_percent, double fps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int seconds = argc > 1 ? std::atoi(argv[1]) : 20;
-  const std::string scene = argc > 2 ? argv[2] : "demo";
+  int seconds = 20;
+  std::string scene = "demo";
+  BenchOptions options("bench_frame_cpu", "the app's CPU: idle, then a G6 stream with smooth drawing on and off");
+  options.add("--seconds", seconds, "how long to measure each case, after 5 s")
+      .add("--scene", scene, "the virtual lidar's scene: demo, room or booth");
+  options.parse(argc, argv);
+  if (seconds < 1) options.fail("needs --seconds of 1 or more");
+  if (scene != "demo" && scene != "room" && scene != "booth") options.fail("knows the scenes demo, room and booth");
   const auto binaries = find_app_binaries("bench_frame_cpu");
   if (!binaries) return 1;
   const std::string& app = binaries->app;
