@@ -104,13 +104,6 @@ std::span<const ui::SourceLayer> ViewStage::layers_of(const SourceList& sources)
     layers_.push_back(layer);
     if (several) marks_.push_back({slot.look.pose, slot.look.colour, i == sources.selected_index()});
   }
-  // Moving, hiding or dimming a source changes the picture without a new lap.
-  std::vector<std::pair<Pose, bool>> key;
-  for (const ui::SourceLayer& layer : layers_) key.emplace_back(layer.pose, layer.dim);
-  if (key != drawn_layers_key_) {
-    drawn_layers_key_ = std::move(key);
-    view_->invalidate();
-  }
   return layers_;
 }
 

@@ -46,7 +46,7 @@ class ViewStage {
  private:
   void lay_out_common(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
   void lay_out_split(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
-  // Each shown source's laps at its pose, and its mark; a change of pose or dimming rebuilds the cloud.
+  // Each shown source's laps at its pose, and its mark.
   std::span<const ui::SourceLayer> layers_of(const SourceList& sources);
   // Changes whenever the GL layer of the view (or of the split view's tiles) would draw otherwise.
   std::uint64_t gl_generation() const;
@@ -58,8 +58,7 @@ class ViewStage {
   float sidebar_px_ = 0.0f;                            // the sidebar's width (window pixels), 0: none
   std::vector<ui::SourceLayer> layers_;                // this frame's, reused
   std::vector<ui::SourceMark> marks_;
-  std::vector<std::pair<Pose, bool>> drawn_layers_key_;  // pose and dimming the cloud was built with
-  std::uint64_t drawn_signature_ = 0;                    // draw_signature of the last frame rendered
+  std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
 };
 
 }  // namespace ydscope::gui

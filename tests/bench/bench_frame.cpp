@@ -84,14 +84,31 @@ void fill_history(LapHistory& history, std::size_t points) {
 void BM_BuildCloud(benchmark::State& state) {
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
-  std::vector<PointVertex> out;
+  FadingCloud cloud;
   for (auto _ : state) {
-    build_point_cloud(history, ColourParams{}, InterferenceSettings{}, out);
-    benchmark::DoNotOptimize(out.data());
+    cloud.clear();
+    append_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+    benchmark::DoNotOptimize(cloud.vertices.data());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_BuildCloud)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
+
+// What a frame between laps pays: the cloud built once, faded again for a new phase.
+void BM_FadeCloud(benchmark::State& state) {
+  LapHistory history;
+  fill_history(history, static_cast<std::size_t>(state.range(0)));
+  FadingCloud cloud;
+  append_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+  float phase = 0.0f;
+  for (auto _ : state) {
+    phase = phase >= 1.0f ? 0.0f : phase + 0.03f;
+    fade_cloud(cloud, ColourParams{}, phase);
+    benchmark::DoNotOptimize(cloud.vertices.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_FadeCloud)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
 
 // Motion highlighting's share: the cloud built in motion colours against a learned room, and the
 // learning itself, once per lap.
@@ -103,10 +120,11 @@ void BM_BuildCloudWithMotion(benchmark::State& state) {
     motion.add_lap(make_lap(static_cast<std::size_t>(state.range(0)) / 10, i));
   ColourParams colours;
   colours.mode = ColourMode::Motion;
-  std::vector<PointVertex> out;
+  FadingCloud cloud;
   for (auto _ : state) {
-    build_point_cloud(history, colours, InterferenceSettings{}, out, &motion);
-    benchmark::DoNotOptimize(out.data());
+    cloud.clear();
+    append_point_cloud(history, colours, InterferenceSettings{}, cloud, &motion);
+    benchmark::DoNotOptimize(cloud.vertices.data());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
@@ -128,8 +146,10 @@ void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
   }
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
-  std::vector<PointVertex> cloud;
-  build_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+  FadingCloud faded;
+  append_point_cloud(history, ColourParams{}, InterferenceSettings{}, faded);
+  fade_cloud(faded, ColourParams{}, 0.0f);
+  std::vector<PointVertex> cloud = std::move(faded.vertices);
   const ViewTransform view = make_view();
   const GridLayout grid = layout_grid(view);
   PolarStyle style;

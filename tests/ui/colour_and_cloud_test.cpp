@@ -2,6 +2,7 @@
 
 #include "ui/view/scene/colour_map.h"
 #include "ui/view/scene/lap_history.h"
+#include "tests/ui/faded_cloud.h"
 #include "ui/view/scene/point_cloud.h"
 
 namespace ydscope::ui {
@@ -75,17 +76,15 @@ TEST(PointCloud, FiltersInterferenceCountsRemovedAndDrawsGhosts) {
                             {4.0f, 1000.0f, PointFlag::None}}));
   ColourParams colours;
   InterferenceSettings filter;
-  std::vector<PointVertex> out;
-
-  PointCloudStats all = build_point_cloud(history, colours, filter, out);
+  const auto [all, every] = faded_cloud(history, colours, filter);
   EXPECT_EQ(all.drawn, 6u);  // everything but the no-return point
-  EXPECT_EQ(out.size(), 6u);
+  EXPECT_EQ(every.size(), 6u);
   EXPECT_EQ(all.newest_no_return, 1u);
 
   filter.drop_specular = true;
   filter.drop_ambient = true;
   filter.show_ghosts = true;
-  PointCloudStats filtered = build_point_cloud(history, colours, filter, out);
+  const auto [filtered, out] = faded_cloud(history, colours, filter);
   EXPECT_EQ(filtered.newest_specular_removed, 1u);
   EXPECT_EQ(filtered.newest_ambient_removed, 2u);
   EXPECT_EQ(filtered.drawn, 2u);   // one clean point per lap
@@ -96,8 +95,9 @@ TEST(PointCloud, FiltersInterferenceCountsRemovedAndDrawsGhosts) {
   EXPECT_NEAR(out.back().y, -1000.0f * std::cos(4.0f * 3.14159265f / 180.0f), 0.01f);
 
   filter.show_ghosts = false;
-  EXPECT_EQ(build_point_cloud(history, colours, filter, out).ghosts, 0u);
-  EXPECT_EQ(out.size(), 2u);
+  const FadedCloud without = faded_cloud(history, colours, filter);
+  EXPECT_EQ(without.stats.ghosts, 0u);
+  EXPECT_EQ(without.vertices.size(), 2u);
 }
 
 }  // namespace

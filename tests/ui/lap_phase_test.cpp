@@ -4,7 +4,9 @@
 #include "ui/view/window/frame_pacing.h"
 #include "ui/view/scene/lap_history.h"
 #include "ui/view/scene/lap_phase.h"
+#include "tests/ui/faded_cloud.h"
 #include "ui/view/scene/point_cloud.h"
+#include "ui/view/scene/source_cloud.h"
 
 namespace ydscope::ui {
 namespace {
@@ -78,10 +80,8 @@ LapHistory history_of(std::size_t depth, std::size_t laps) {
 std::vector<std::uint8_t> alphas(const LapHistory& history, float phase, bool fade = true) {
   ColourParams colours;
   colours.fade_old_laps = fade;
-  std::vector<PointVertex> out;
-  build_point_cloud(history, colours, InterferenceSettings{}, out, nullptr, phase);
   std::vector<std::uint8_t> a;
-  for (const PointVertex& v : out) a.push_back(v.colour.a);
+  for (const PointVertex& v : faded_cloud(history, colours, {}, nullptr, phase).vertices) a.push_back(v.colour.a);
   return a;  // oldest first
 }
 
@@ -117,6 +117,70 @@ TEST(PersistenceFade, TheLapAboutToLeaveAFullHistoryFadesToNothingSoItDoesNotPop
 TEST(PersistenceFade, WithoutFadingOrWithOneLapThePhaseChangesNothing) {
   EXPECT_EQ(alphas(history_of(4, 4), 0.7f, false), alphas(history_of(4, 4), 0.0f, false));
   EXPECT_EQ(alphas(history_of(1, 1), 0.7f), std::vector<std::uint8_t>{255});
+}
+
+// The view builds a cloud once a lap and fades it at every frame: faded at one phase after
+// another, it must be exactly the cloud built for the last phase, whatever the mode, with a
+// dimmed source and the newest lap's ghosts in it.
+TEST(PersistenceFade, ACloudFadedAgainIsTheOneBuiltForItsPhase) {
+  LapHistory near_side(4), far_side(4);
+  for (std::uint64_t i = 0; i < 4; ++i) {
+    Lap lap;
+    lap.index = i;
+    for (int a = 0; a < 90; ++a)
+      lap.points.push_back({static_cast<float>(a * 4), 800.0f + 30.0f * static_cast<float>(a),
+                            a % 7 == 0 ? PointFlag::Specular : PointFlag::None});
+    near_side.push(lap);
+    far_side.push(lap);
+  }
+  SourceLayer layers[2];
+  layers[0].history = &near_side;
+  layers[1].history = &far_side;
+  layers[1].pose.x_m = 1.5;
+  layers[1].dim = true;
+  InterferenceSettings filter;
+  filter.drop_specular = true;  // ghosts in the newest lap
+  for (const ColourMode mode : {ColourMode::Range, ColourMode::LapAge, ColourMode::Source}) {
+    ColourParams colours;
+    colours.mode = mode;
+    FadingCloud kept, fresh;
+    build_source_clouds(layers, colours, filter, kept);
+    fade_cloud(kept, colours, 0.3f);
+    const std::vector<PointVertex> at_start = kept.vertices;
+    fade_cloud(kept, colours, 0.8f);
+    build_source_clouds(layers, colours, filter, fresh);
+    fade_cloud(fresh, colours, 0.8f);
+    ASSERT_EQ(kept.vertices.size(), fresh.vertices.size());
+    std::size_t differ = 0, moved_on = 0;
+    for (std::size_t i = 0; i < fresh.vertices.size(); ++i) {
+      differ += kept.vertices[i].x != fresh.vertices[i].x || kept.vertices[i].y != fresh.vertices[i].y ||
+                !(kept.vertices[i].colour == fresh.vertices[i].colour);
+      moved_on += !(at_start[i].colour == fresh.vertices[i].colour);
+    }
+    EXPECT_EQ(differ, 0u) << colour_mode_name(mode);
+    EXPECT_GT(moved_on, fresh.vertices.size() / 2) << "the two phases look different, so the test sees the fade";
+  }
+}
+
+TEST(LapHistory, ItsGenerationChangesWithWhatItHolds) {
+  LapHistory history = history_of(4, 2);
+  std::uint64_t seen = history.generation();
+  const auto changed = [&] {
+    const bool did = history.generation() != seen;
+    seen = history.generation();
+    return did;
+  };
+  EXPECT_FALSE(changed());
+  Lap lap;
+  lap.points = {LapPoint{0.0f, 1000.0f, PointFlag::None}};
+  history.push(lap);
+  EXPECT_TRUE(changed()) << "a lap pushed";
+  history.set_depth(2);
+  EXPECT_TRUE(changed()) << "the depth set";
+  history.clear();
+  EXPECT_TRUE(changed()) << "cleared";
+  static_cast<void>(history.size());
+  EXPECT_FALSE(changed()) << "reading it changes nothing";
 }
 
 }  // namespace

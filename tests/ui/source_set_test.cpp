@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "tests/ui/faded_cloud.h"
 #include "ui/view/geometry/grid_layout.h"
 #include "ui/view/scene/motion_background.h"
 #include "ui/view/scene/source_cloud.h"
@@ -21,6 +22,16 @@ LapHistory history_of(std::initializer_list<LapPoint> points) {
   return history;
 }
 
+// The layers' cloud as the view draws it at `phase`: built, then faded.
+FadedCloud layered_cloud(std::span<const SourceLayer> layers, const ColourParams& colours, float phase = 0.0f) {
+  FadingCloud cloud;
+  FadedCloud faded;
+  faded.stats = build_source_clouds(layers, colours, {}, cloud);
+  fade_cloud(cloud, colours, phase);
+  faded.vertices = std::move(cloud.vertices);
+  return faded;
+}
+
 ColourParams solid(ColourMode mode) {
   ColourParams colours;
   colours.mode = mode;
@@ -36,8 +47,7 @@ TEST(SourceCloud, APointLandsWhereItsSourcesPosePutsIt) {
   layer.history = &history;
   layer.pose.x_m = 2.0;
   layer.pose.yaw_deg = 90.0;
-  std::vector<PointVertex> out, scratch;
-  const auto stats = build_source_clouds(std::span(&layer, 1), solid(ColourMode::Range), {}, out, scratch);
+  const auto [stats, out] = layered_cloud(std::span(&layer, 1), solid(ColourMode::Range));
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(stats.drawn, 1u);
   EXPECT_NEAR(out[0].x, 0.0f, 0.5f);
@@ -50,8 +60,7 @@ TEST(SourceCloud, AnUpsideDownSourceMirrorsItsCloud) {
   layer.history = &history;
   layer.pose.y_m = -1.0;
   layer.pose.upside_down = true;
-  std::vector<PointVertex> out, scratch;
-  build_source_clouds(std::span(&layer, 1), solid(ColourMode::Range), {}, out, scratch);
+  const std::vector<PointVertex> out = layered_cloud(std::span(&layer, 1), solid(ColourMode::Range)).vertices;
   ASSERT_EQ(out.size(), 1u);
   // The unit's 90 lands on its right, not its left: common (0, -2000), drawn 2 m right of centre.
   EXPECT_NEAR(out[0].x, 2000.0f, 0.5f);
@@ -67,8 +76,7 @@ TEST(SourceCloud, BySourceColoursEachCloudItsOwnAndDimsAStoppedOne) {
   layers[1].history = &b;
   layers[1].colour = source_colour(1);
   layers[1].dim = true;
-  std::vector<PointVertex> out, scratch;
-  const auto stats = build_source_clouds(layers, solid(ColourMode::Source), {}, out, scratch);
+  const auto [stats, out] = layered_cloud(layers, solid(ColourMode::Source));
   ASSERT_EQ(out.size(), 3u);  // the range-0 point is not drawn
   EXPECT_EQ(stats.drawn, 3u);
   EXPECT_EQ(stats.newest_no_return, 1u);
@@ -92,8 +100,7 @@ TEST(SourceCloud, ByRangeKeepsThePaletteButStillPoses) {
   layer.colour = source_colour(2);
   layer.pose.x_m = -3.0;
   const ColourParams colours = solid(ColourMode::Range);
-  std::vector<PointVertex> out, scratch;
-  build_source_clouds(std::span(&layer, 1), colours, {}, out, scratch);
+  const std::vector<PointVertex> out = layered_cloud(std::span(&layer, 1), colours).vertices;
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].colour, point_colour(colours, {0.0f, 1000.0f, PointFlag::None}, 0.0f));
   EXPECT_NEAR(out[0].y, -4000.0f, 0.5f);  // the unit's 0 points back: 1 m behind a lidar 3 m back
@@ -116,12 +123,11 @@ TEST(SourceCloud, ALoneLidarIsALayerAtTheIdentityPoseDrawnExactlyAsItsOwnCloud) 
   }
   ColourParams colours;
   colours.mode = ColourMode::Motion;
-  std::vector<PointVertex> single, layered, scratch;
-  const PointCloudStats alone = build_point_cloud(history, colours, {}, single, &motion, 0.4f);
+  const auto [alone, single] = faded_cloud(history, colours, {}, &motion, 0.4f);
   SourceLayer layer;
   layer.history = &history;
   layer.motion = &motion;
-  const PointCloudStats stats = build_source_clouds(std::span(&layer, 1), colours, {}, layered, scratch, 0.4f);
+  const auto [stats, layered] = layered_cloud(std::span(&layer, 1), colours, 0.4f);
   ASSERT_EQ(layered.size(), single.size());
   EXPECT_EQ(stats.drawn, alone.drawn);
   EXPECT_EQ(stats.newest_specular_removed, alone.newest_specular_removed);

@@ -126,7 +126,7 @@ ColourParams PolarView::colours_for(const ViewSettings& settings, float phase, b
     colours.near_mm = 0.0f;
     colours.far_mm = fit_.fitted_mm();
   }
-  if (!(colours == last_colours_) || !(settings.interference == last_settings_.interference)) dirty_ = true;
+  if (!(colours == last_colours_) || !(settings.interference == last_settings_.interference)) shape_dirty_ = true;
   if (phase != last_phase_ && several_laps) dirty_ = true;  // one lap alone does not fade
   last_settings_ = settings;
   last_colours_ = colours;
@@ -147,9 +147,22 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   const ColourParams colours = colours_for(settings, phase, several_laps);
   // Points are merged per pixel, so a zoom changes what is drawn.
   if (view_.px_per_mm() != merged_px_per_mm_) dirty_ = true;
+  // New laps, a source moved, recoloured or dimmed: build again.
+  layer_keys_.clear();
+  for (const SourceLayer& layer : layers) layer_keys_.emplace_back(layer);
+  if (layer_keys_ != built_from_) {
+    built_from_.swap(layer_keys_);
+    shape_dirty_ = true;
+  }
+  if (shape_dirty_) {
+    stats_ = build_source_clouds(layers, colours, settings.interference, cloud_);
+    points_shown_ = cloud_.vertices.size();
+    shape_dirty_ = false;
+    dirty_ = true;
+  }
   if (dirty_) {
-    stats_ = build_source_clouds(layers, colours, settings.interference, vertices_, scratch_, phase);
-    points_shown_ = vertices_.size();
+    fade_cloud(cloud_, colours, phase);
+    vertices_ = cloud_.vertices;  // the merge replaces what it is given; the cloud is kept for the next fade
     merged_px_per_mm_ = view_.px_per_mm();
     merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
     upload_if_dirty(phase);

@@ -47,16 +47,16 @@ class PolarView {
   // does not pan or sweep; its world point is taken once here (forward_click.h).
   void arm_forward_click(bool on) { forward_click_armed_ = on; }
   std::optional<Vec2> take_forward_click();
-  // Marks the cloud for a rebuild (a new lap, or a colour/filter change).
-  void invalidate() { dirty_ = true; }
+  // Marks the cloud for a rebuild (a new lap, a source moved or dimmed).
+  void invalidate() { shape_dirty_ = true; }
   // Fits the view to `extent_mm` from the origin when auto-range is on (the booth's framing).
   void auto_range_to(float extent_mm, const ViewSettings& settings);
   // Fits it to where the layers' returns lie, outliers left out (robust_extent_mm), with a margin.
   void auto_range(std::span<const SourceLayer> layers, const ViewSettings& settings);
   // Rebuilds the vertices if needed and uploads them; returns the cloud's statistics. Each source
   // is a layer posed into the common frame (source_cloud.h); one lidar is a layer at the identity
-  // pose. `phase` (LapPhase) fades the persistence between laps; a change of it rebuilds a cloud
-  // of several laps.
+  // pose. `phase` (LapPhase) fades the persistence between laps: a change of it fades the cloud
+  // again, without building it.
   const PointCloudStats& update_cloud(std::span<const SourceLayer> layers, const ViewSettings& settings, float phase);
   // Each source's position and heading, drawn in place of the lone lidar's mark (none: that mark).
   void set_source_marks(std::vector<SourceMark> marks) { marks_ = std::move(marks); }
@@ -89,7 +89,8 @@ class PolarView {
   // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height, band).
   float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
-  bool dirty_ = true;
+  bool shape_dirty_ = true;  // the cloud must be built again (positions, hues)
+  bool dirty_ = true;        // faded, merged and uploaded again (a new phase, a zoom)
   std::uint64_t gl_generation_ = 0;
   float last_phase_ = 0.0f;
   AutoRangeFit fit_;
@@ -105,7 +106,8 @@ class PolarView {
   float sweep_turned_deg_ = 0.0f;
   std::optional<std::pair<float, float>> swept_;
 
-  std::vector<PointVertex> scratch_;  // one source's cloud before it is posed
+  FadingCloud cloud_;  // built once a lap; vertices_ is it faded and merged for this frame
+  std::vector<SourceLayerKey> built_from_, layer_keys_;  // the layers cloud_ was built from; this frame's
   PixelMerger merger_;
   std::size_t points_shown_ = 0;
   float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at

@@ -79,8 +79,16 @@ Rgba8 flag_colour(PointFlag flag) {
 
 Rgba8 motion_colour(bool moving) { return moving ? Rgba8{255, 96, 48, 255} : Rgba8{88, 128, 170, 255}; }
 
-Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age, bool moving) {
+Rgba8 lap_look(const ColourParams& params, float age) {
   age = std::clamp(age, 0.0f, 1.0f);
+  Rgba8 c = params.mode == ColourMode::LapAge ? sample_palette(params.palette, 1.0f - age) : Rgba8{255, 255, 255, 255};
+  // The newest lap is opaque; the oldest kept one is barely there.
+  if (params.fade_old_laps) c.a = unit_to_byte(1.0f - 0.85f * age);
+  return c;
+}
+
+Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age, bool moving) {
+  const Rgba8 lap = lap_look(params, age);
   Rgba8 c;
   switch (params.mode) {
     case ColourMode::Range: {
@@ -89,17 +97,13 @@ Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age,
       break;
     }
     case ColourMode::Flag: c = flag_colour(point.flag); break;
-    case ColourMode::LapAge: c = sample_palette(params.palette, 1.0f - age); break;
+    case ColourMode::LapAge: c = lap; break;
     // Older laps' hot points, fading, are the trails of whoever walked past.
     case ColourMode::Motion: c = motion_colour(moving); break;
     // A lone lidar has no other to tell apart from: white; several get their colours in source_cloud.
     case ColourMode::Source: c = {235, 235, 235, 255}; break;
   }
-  if (params.fade_old_laps) {
-    // The newest lap is opaque; the oldest kept one is barely there.
-    const float alpha = 1.0f - 0.85f * age;
-    c.a = unit_to_byte(alpha);
-  }
+  c.a = lap.a;
   return c;
 }
 

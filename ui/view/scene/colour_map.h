@@ -38,7 +38,11 @@ struct ColourParams {
 // Motion mode's two colours: a hot one for what moves, a calm one for the room.
 Rgba8 motion_colour(bool moving);
 
-// `age` is 0 for the newest lap and 1 for the oldest kept lap. In Motion mode the point is the
+// What every point of a lap at `age` shares: its alpha (older laps fade) and, in lap-age mode, its
+// hue (white otherwise). `age` is 0 for the newest lap and 1 for the oldest kept lap.
+Rgba8 lap_look(const ColourParams& params, float age);
+
+// `age` as lap_look's. In Motion mode the point is the
 // room's unless `moving` says otherwise.
 Rgba8 point_colour(const ColourParams& params, const LapPoint& point, float age, bool moving = false);
 

@@ -10,6 +10,7 @@ LapHistory::LapHistory(std::size_t depth) : slots_(kMaxDepth), depth_(std::clamp
 void LapHistory::set_depth(std::size_t depth) {
   depth_ = std::clamp<std::size_t>(depth, 1, kMaxDepth);
   count_ = std::min(count_, depth_);
+  ++generation_;
 }
 
 void LapHistory::push(const Lap& lap) {
@@ -20,9 +21,13 @@ void LapHistory::push(const Lap& lap) {
   slot.points.assign(lap.points.begin(), lap.points.end());  // reuses the slot's capacity
   next_ = (next_ + 1) % slots_.size();
   count_ = std::min(count_ + 1, depth_);
+  ++generation_;
 }
 
-void LapHistory::clear() { count_ = 0; }
+void LapHistory::clear() {
+  count_ = 0;
+  ++generation_;
+}
 
 const HistoryLap& LapHistory::at_age(std::size_t age) const {
   if (age >= count_) throw std::out_of_range("LapHistory::at_age beyond the laps held");

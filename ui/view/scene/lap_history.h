@@ -35,12 +35,16 @@ class LapHistory {
   const HistoryLap& at_age(std::size_t age) const;
   const HistoryLap& newest() const { return at_age(0); }
   std::size_t total_points() const;
+  // Changes whenever what it holds changes (a lap pushed, cleared, the depth set), so a cloud built
+  // from it knows when to be built again.
+  std::uint64_t generation() const { return generation_; }
 
  private:
   std::vector<HistoryLap> slots_;  // kMaxDepth slots; only the newest depth_ are visible
   std::size_t depth_;
   std::size_t next_ = 0;   // slot the next push writes
   std::size_t count_ = 0;  // laps held, <= depth_
+  std::uint64_t generation_ = 0;
 };
 
 }  // namespace ydscope::ui

@@ -2,6 +2,7 @@
 // Turns the lap history into the vertex array the point shader draws in one call: positions in
 // world millimetres plus a colour, newest lap last so it is drawn on top.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/protocol/interference_filter.h"
@@ -37,13 +38,40 @@ struct PointCloudStats {
   std::size_t newest_no_return = 0;  // range 0: no echo, never drawn
 };
 
-// Clears `out` (keeping its capacity) and fills it. Points with range 0 are not drawn. `motion`
-// tells moving points from the room in Motion mode (without it every point is the room's).
-// `phase` (LapPhase, 0..1) is how far the view is towards the next lap: every lap ages by that
-// fraction of a lap, and when the history is full the oldest lap, which the next one will push
-// out, fades away with it, so nothing pops.
-PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
-                                  const InterferenceSettings& filter, std::vector<PointVertex>& out,
-                                  const MotionBackground* motion = nullptr, float phase = 0.0f);
+// Vertices of one lap of one source that fade alike. The newest lap's ghosts are runs of their
+// own, since they do not fade.
+struct FadeRun {
+  std::uint32_t begin = 0, end = 0;  // vertex indices
+  std::uint32_t age = 0;             // 0 for the newest lap
+  std::uint32_t laps = 1;            // laps its history holds
+  bool leaving = false;              // the oldest lap of a full history, which the next lap pushes out
+  bool ghost = false;                // a filtered point drawn faintly
+  float strength = 1.0f;             // what a dimmed source keeps of each channel (source_cloud.h)
+};
+
+// The cloud the point shader draws, kept between laps. A lap moves no point and changes no hue
+// until the next one comes, so positions and hues are built once a lap and between laps only
+// `fade_cloud` runs: sincos, the palette and the posing of 20 000 points at every frame had been
+// a tenth of the app's CPU.
+struct FadingCloud {
+  std::vector<PointVertex> vertices;
+  std::vector<FadeRun> runs;
+  void clear() {
+    vertices.clear();
+    runs.clear();
+  }
+};
+
+// Appends `history`'s laps to `cloud`, oldest first so the newest is drawn on top: each point's
+// position and hue, in runs not yet faded (fade_cloud). Points with range 0 are not drawn.
+// `motion` tells moving points from the room in Motion mode (without it every point is the room's).
+PointCloudStats append_point_cloud(const LapHistory& history, const ColourParams& colours,
+                                   const InterferenceSettings& filter, FadingCloud& cloud,
+                                   const MotionBackground* motion = nullptr);
+
+// Sets each run's alpha (and in lap-age mode its hue) for `phase` (LapPhase, 0..1), how far the view
+// is towards the next lap: every lap ages by that fraction of a lap, and when the history is full
+// the oldest lap, which the next one will push out, fades away with it, so nothing pops.
+void fade_cloud(FadingCloud& cloud, const ColourParams& colours, float phase);
 
 }  // namespace ydscope::ui

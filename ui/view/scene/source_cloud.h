@@ -3,6 +3,7 @@
 // as a single lidar's is (point_cloud.h), then posed into the common frame and, in the by-source
 // colour mode, painted its source's colour. A source whose data stopped is dimmed, not dropped,
 // so its last picture stays in sight while the others draw normally.
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -19,14 +20,32 @@ struct SourceLayer {
   const MotionBackground* motion = nullptr;  // its own room, for ColourMode::Motion
 };
 
+// What a layer's cloud is built from besides the colours and the filter, to tell when it must be
+// built again: its laps (the history's generation), pose, colour and dimming.
+struct SourceLayerKey {
+  const LapHistory* history = nullptr;
+  std::uint64_t generation = 0;
+  Pose pose;
+  Rgba8 colour;
+  bool dim = false;
+  const MotionBackground* motion = nullptr;
+  explicit SourceLayerKey(const SourceLayer& layer)
+      : history(layer.history),
+        generation(layer.history ? layer.history->generation() : 0),
+        pose(layer.pose),
+        colour(layer.colour),
+        dim(layer.dim),
+        motion(layer.motion) {}
+  friend bool operator==(const SourceLayerKey&, const SourceLayerKey&) = default;
+};
+
 // How much of its strength (each colour channel and its opacity) a dimmed source keeps.
 inline constexpr float kDimmedSourceAlpha = 0.3f;
 
-// Clears `out` and fills it, layers in order (later ones on top). `scratch` holds one source's
-// cloud at a time (its capacity is reused). The statistics add up over the layers.
+// Clears `cloud` and fills it, layers in order (later ones on top), not yet faded (fade_cloud).
+// The statistics add up over the layers.
 PointCloudStats build_source_clouds(std::span<const SourceLayer> layers, const ColourParams& colours,
-                                    const InterferenceSettings& filter, std::vector<PointVertex>& out,
-                                    std::vector<PointVertex>& scratch, float phase = 0.0f);
+                                    const InterferenceSettings& filter, FadingCloud& cloud);
 
 // The farthest a robust share of each source's newest returns reaches from the common origin
 // (its distance from the origin plus its own robust range): what auto-range fits.
