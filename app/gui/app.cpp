@@ -12,6 +12,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "ui/panels/panels.h"
+#include "ui/render/gl.h"
 #include "ui/view/settings/remembered_sources.h"
 
 namespace ydscope::gui {
@@ -26,6 +27,7 @@ std::int64_t steady_ns() {
 
 App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
     : window_(window),
+      presenter_(window, reinterpret_cast<const char*>(glGetString(GL_RENDERER))),
       options_(options),
       store_(persist_settings),
       sources_([] { glfwPostEmptyEvent(); }),
@@ -120,7 +122,8 @@ void App::frame() {
                             return std::holds_alternative<ui::SaveScreenshot>(r);
                           });
   const bool damaged = events_.take_damage();
-  drew_ = stage_.render_if_changed(settings_, fb_scale, fb_w, fb_h, screenshot || damaged);
+  drawn_ =
+      stage_.render_if_changed(settings_, fb_scale, fb_w, fb_h, screenshot || damaged, presenter_.keeps_last_picture());
   carry_out_requests(fb_w, fb_h);
   outputs_.follow(sources_);
 }
@@ -161,6 +164,21 @@ void App::handle_keys() {
   }
 }
 
+void App::present() {
+  presenter_.present(drawn_);
+  after_present();
+}
+
+std::string App::frames_shown_line() const {
+  const double seconds =
+      first_present_ && last_present_ ? std::chrono::duration<double>(*last_present_ - *first_present_).count() : 0.0;
+  char line[128];
+  std::snprintf(line, sizeof line, "%llu frames shown in %.1f s (%.1f a second)",
+                static_cast<unsigned long long>(frames_shown_), seconds,
+                seconds > 0.0 ? static_cast<double>(frames_shown_ - 1) / seconds : 0.0);
+  return line;
+}
+
 void App::after_present() {
   // Frame time = the work of a frame (draining, drawing, presenting), not the wait between frames.
   const auto now = std::chrono::steady_clock::now();
@@ -168,6 +186,8 @@ void App::after_present() {
   if (last_present_)
     model().frame_interval_ms.add(std::chrono::duration<double, std::milli>(now - *last_present_).count());
   last_present_ = now;
+  if (!first_present_) first_present_ = now;
+  ++frames_shown_;
   if (sel().pending_latency_rx_ns != 0) {
     const double latency_ms = static_cast<double>(steady_ns() - sel().pending_latency_rx_ns) * 1e-6;
     model().latency_ms.add(latency_ms);

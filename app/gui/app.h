@@ -17,6 +17,7 @@
 #include "app/gui/unit_follow.h"
 #include "app/gui/settings_store.h"
 #include "app/gui/view_stage.h"
+#include "app/gui/window_present.h"
 #include "app/gui/watched_sectors.h"
 #include "app/gui/window_events.h"
 #include "ui/panels/ui_model.h"
@@ -36,13 +37,15 @@ class App {
 
   // Starts the source the command line named (or the automatic choice). Empty, or one sentence.
   std::string start_source();
-  // One frame: input, drain, draw (ImGui frame included). Does not swap buffers.
+  // One frame: input, drain, draw (ImGui frame included). Does not show it.
   void frame();
   // Whether the frame rendered: one that would look exactly like the last is not drawn, and
-  // then there is nothing to swap.
-  bool drew() const { return drew_; }
-  // After the swap: latency of the laps this frame showed.
-  void after_present();
+  // then there is nothing to show.
+  bool drew() const { return drawn_.drew(); }
+  // Shows what the frame drew (window_present.h), then takes the latency of the laps it showed.
+  void present();
+  // How many frames were shown, and over how long since the first: the app's frame rate.
+  std::string frames_shown_line() const;
 
   std::uint64_t laps_shown() const { return model().laps_shown; }
   // Laps are arriving (the link is scanning).
@@ -101,7 +104,10 @@ class App {
   // After the selected source's sectors or the source list changed (watched_sectors.h).
   void sync_sectors() { follow_watched_sectors(sources_, settings_, stage_.view()); }
 
+  void after_present();
+
   GLFWwindow* window_;
+  WindowPresenter presenter_;
   BoothWindow booth_{window_};    // F11: the full-screen booth view
   WindowEvents events_{window_};  // keys and repaints since the last frame
   AppOptions options_;
@@ -121,8 +127,9 @@ class App {
   std::string shown_banner_;  // the banner whose age model() holds
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_frame_;  // start of the current frame
-  std::optional<std::chrono::steady_clock::time_point> last_present_;
-  bool drew_ = false;
+  std::optional<std::chrono::steady_clock::time_point> first_present_, last_present_;
+  std::uint64_t frames_shown_ = 0;
+  ui::DrawnFrame drawn_;  // what this frame drew
   bool quit_ = false;
 };
 

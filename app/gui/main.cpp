@@ -194,10 +194,10 @@ int run(const ydscope::gui::AppOptions& options) {
           }
         }
         if (!app->drew()) continue;  // the picture on screen is still right
-        glfwSwapBuffers(window);
-        app->after_present();
+        app->present();
       }
       for (const std::string& line : app->summary()) std::printf("ydscope: %s\n", line.c_str());
+      if (!screenshot_mode) std::printf("ydscope: %s\n", app->frames_shown_line().c_str());
     }
   }
   ydscope::pin_loaded_libraries_for_leak_reports();

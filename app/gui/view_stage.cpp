@@ -8,7 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "ui/panels/panels.h"
-#include "ui/render/draw_signature.h"
+#include "ui/render/imgui_within.h"
 #include "ui/render/gl.h"
 #include "ui/render/theme.h"
 #include "ui/view/geometry/forward_click.h"
@@ -114,35 +114,70 @@ std::uint64_t ViewStage::gl_generation() const {
   return generation;
 }
 
-bool ViewStage::render_if_changed(const ui::ViewSettings& settings, float fb_scale, int fb_w, int fb_h,
-                                  bool must_draw) {
-  std::uint64_t signature = ui::draw_signature(*ImGui::GetDrawData());
-  for (const std::uint64_t part :
-       {gl_generation(), static_cast<std::uint64_t>(fb_w), static_cast<std::uint64_t>(fb_h),
-        static_cast<std::uint64_t>(settings.show_grid), static_cast<std::uint64_t>(settings.point_size_px * 1000.0f)})
-    signature = ui::mix_signature(signature, part);
-  if (signature == drawn_signature_ && !must_draw) return false;
-  drawn_signature_ = signature;
-  glViewport(0, 0, fb_w, fb_h);
+ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, float fb_scale, int fb_w, int fb_h,
+                                            bool must_draw, bool partial) {
+  ImDrawData& data = *ImGui::GetDrawData();
+  const std::optional<std::vector<ui::DisplayBox>> imgui_changed = damage_.update(data);
+  const DrawnLayout layout{fb_w, fb_h, fb_scale, sidebar_px_};
+  const DrawnGl gl{gl_generation(), settings.show_grid, settings.point_size_px};
+  const bool relaid = !(layout == drawn_layout_);
+  const bool gl_changed = !(gl == drawn_gl_);
+  drawn_layout_ = layout;
+  drawn_gl_ = gl;
+  const ui::DisplayBox window{0.0f, 0.0f, static_cast<float>(fb_w) / fb_scale, static_cast<float>(fb_h) / fb_scale};
+  const ui::DisplayBox view{std::floor(sidebar_px_), 0.0f, window.x1, window.y1};
+  // The whole window when it cannot be drawn in parts: a swap, a new layout, a frame that cannot
+  // be compared with the last, a scale whose pixels the backend's scissors would round past.
+  std::vector<ui::DisplayBox> boxes;
+  if (must_draw || relaid || !imgui_changed || !partial || fb_scale != 1.0f) {
+    if (must_draw || relaid || !imgui_changed || gl_changed || !imgui_changed->empty()) boxes.push_back(window);
+  } else {
+    if (gl_changed) boxes.push_back(view);
+    for (const ui::DisplayBox& box : *imgui_changed) boxes.push_back(box.intersected(window));
+    boxes = ui::merged_boxes(std::move(boxes));
+    float area = 0.0f;
+    for (const ui::DisplayBox& box : boxes) area += box.area();
+    // Several passes each take every vertex of ImGui's draw data through the pipeline; when they
+    // would clear nearly all of the window anyway, one pass of all of it is no dearer.
+    if (area > 0.9f * window.area()) boxes.assign(1, window);
+  }
+  ui::DrawnFrame drawn;
+  drawn.whole = boxes.size() == 1 && boxes.front() == window;
+  for (const ui::DisplayBox& box : boxes) {
+    const ui::PixelBox pixels = draw_within(box, view, settings, fb_scale, fb_h);
+    if (!drawn.whole) drawn.boxes.push_back(pixels);
+  }
+  return drawn;
+}
+
+ui::PixelBox ViewStage::draw_within(const ui::DisplayBox& box, const ui::DisplayBox& view,
+                                    const ui::ViewSettings& settings, float fb_scale, int fb_h) {
+  const auto scissor = [](const ui::PixelBox& p) { glScissor(p.x, p.y, p.width, p.height); };
+  const ui::PixelBox pixels = ui::to_pixels(box, fb_scale, fb_h);
+  glEnable(GL_SCISSOR_TEST);
+  scissor(pixels);
   glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
   glClear(GL_COLOR_BUFFER_BIT);
-  if (const auto sidebar = static_cast<GLsizei>(std::lround(sidebar_px_ * fb_scale)); sidebar > 0) {
-    // The sidebar's background, cleared rather than blended by ImGui: far cheaper in software.
+  // The sidebar's background, cleared rather than blended by ImGui: far cheaper in software.
+  if (const ui::PixelBox sidebar = ui::to_pixels(box.intersected({0.0f, 0.0f, view.x0, view.y1}), fb_scale, fb_h);
+      !sidebar.empty()) {
     const std::array<float, 4> fill = ui::sidebar_background();
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, sidebar, fb_h);
+    scissor(sidebar);
     glClearColor(fill[0], fill[1], fill[2], fill[3]);
     glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
   }
-  if (split_) {
-    for (const auto& tile : tiles_) tile->draw_gl(settings, fb_scale, fb_h);
-  } else {
-    view_->draw_gl(settings, fb_scale, fb_h);
+  // The GL layer stays in the view: a point at its edge does not spill onto the panels.
+  if (const ui::PixelBox in_view = ui::to_pixels(box.intersected(view), fb_scale, fb_h); !in_view.empty()) {
+    scissor(in_view);
+    if (split_) {
+      for (const auto& tile : tiles_) tile->draw_gl(settings, fb_scale, fb_h);
+    } else {
+      view_->draw_gl(settings, fb_scale, fb_h);
+    }
   }
-  glViewport(0, 0, fb_w, fb_h);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  return true;
+  glDisable(GL_SCISSOR_TEST);
+  ui::render_imgui_within(*ImGui::GetDrawData(), box);
+  return pixels;
 }
 
 }  // namespace ydscope::gui

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "app/gui/source_list.h"
+#include "ui/render/draw_damage.h"
+#include "ui/render/screen_boxes.h"
 #include "ui/render/polar_view.h"
 #include "ui/view/settings/settings.h"
 
@@ -38,10 +40,13 @@ class ViewStage {
   // Lays out the frame's view and fills the selected source's model with what it shows. Alt/Ctrl+
   // drag and Shift+drag on the common view become requests in the selected source's model.
   void lay_out(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
-  // Renders the GL layer and ImGui's draw data, unless the frame would look exactly like the last
-  // and nothing asks for it (`must_draw`: a screenshot, or a window the system lost). True if drawn.
-  bool render_if_changed(const ui::ViewSettings& settings, float framebuffer_scale, int framebuffer_width,
-                         int framebuffer_height, bool must_draw);
+  // Renders the GL layer and ImGui's draw data where the frame differs from the last one drawn:
+  // with `partial` (the window keeps its last picture: window_present.h) only in the boxes that
+  // changed, otherwise the whole window once anything did. Nothing is drawn when the frame would
+  // look exactly like the last and nothing asks for it (`must_draw`: a screenshot, or a window the
+  // system lost, which are drawn whole).
+  ui::DrawnFrame render_if_changed(const ui::ViewSettings& settings, float framebuffer_scale, int framebuffer_width,
+                                   int framebuffer_height, bool must_draw, bool partial);
 
  private:
   void lay_out_common(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame);
@@ -50,6 +55,9 @@ class ViewStage {
   std::span<const ui::SourceLayer> layers_of(const SourceList& sources);
   // Changes whenever the GL layer of the view (or of the split view's tiles) would draw otherwise.
   std::uint64_t gl_generation() const;
+  // Clears `box` and draws in it the GL layer (inside `view`) and ImGui's draw data; its pixels.
+  ui::PixelBox draw_within(const ui::DisplayBox& box, const ui::DisplayBox& view, const ui::ViewSettings& settings,
+                           float framebuffer_scale, int framebuffer_height);
 
   bool interactive_;
   std::unique_ptr<ui::PolarView> view_;
@@ -58,7 +66,21 @@ class ViewStage {
   float sidebar_px_ = 0.0f;                            // the sidebar's width (window pixels), 0: none
   std::vector<ui::SourceLayer> layers_;                // this frame's, reused
   std::vector<ui::SourceMark> marks_;
-  std::uint64_t drawn_signature_ = 0;  // draw_signature of the last frame rendered
+  // What the last frame drawn was drawn with: a new layout is drawn whole, a new GL layer in the view.
+  struct DrawnLayout {
+    int width = 0, height = 0;
+    float scale = 0.0f, sidebar_px = 0.0f;
+    friend bool operator==(const DrawnLayout&, const DrawnLayout&) = default;
+  };
+  struct DrawnGl {
+    std::uint64_t generation = 0;
+    bool grid = false;
+    float point_size_px = 0.0f;
+    friend bool operator==(const DrawnGl&, const DrawnGl&) = default;
+  };
+  DrawnLayout drawn_layout_;
+  DrawnGl drawn_gl_;
+  ui::DrawDamage damage_;  // where ImGui's picture changed since the last frame
 };
 
 }  // namespace ydscope::gui

@@ -1,6 +1,6 @@
 # Debian packages ydscope needs, installed only when missing. Sourced by scripts/test, scripts/run
 # and scripts/package.
-ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libgl-dev zlib1g-dev libzstd-dev liblz4-dev)
+ydscope_packages_build=(cmake ninja-build g++ pkg-config libboost-dev libimgui-dev libstb-dev libglfw3-dev libxrandr-dev libgl-dev zlib1g-dev libzstd-dev liblz4-dev)
 ydscope_packages_test=(libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core nodejs npm)
 ydscope_packages_run=(libgl1-mesa-dri fonts-dejavu-core zlib1g libzstd1 liblz4-1)
 ydscope_packages_package=(help2man dpkg-dev fakeroot file lintian appstream)

@@ -4,14 +4,15 @@
 //              pseudo-terminal, so the virtual lidar's own CPU is not counted; with the View tab's
 //              "smooth" on (drawing at the display's rate), then off (a frame per lap).
 // For each case the app runs under the current DISPLAY (use xvfb-run) for a warm-up, then its
-// utime+stime from /proc/<pid>/stat over a measured window gives the share of one core. On Mesa
-// the frames it presented are counted too (the Gallium HUD, kept hidden, writes frames/s once a
-// second to a file), and CPU per frame: on a loaded machine the app gets fewer frames than it asks
-// for, so its share of a core alone under-states a frame's cost.
+// utime+stime from /proc/<pid>/stat over a measured window gives the share of one core. The frames
+// it showed are counted too (the app says how many a second, over its run, when it stops), and CPU
+// per frame: on a loaded machine the app gets fewer frames than it asks for, so its share of a core
+// alone under-states a frame's cost.
 //   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_frame_cpu [--seconds 20] [--scene demo]
 // The scene is the virtual lidar's: demo (a turning flower: every lap lands elsewhere), room
 // (walls that stay put, as on a bench or a robot: laps land on the same pixels) or booth.
 // Not a Google Benchmark: it measures another process, so it has its own main.
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -30,27 +31,18 @@ using namespace ydscope::bench;
 
 namespace {
 
-// Asks Mesa's Gallium HUD of the next app started to write its frames/s, once a second, under `dir`.
-void count_frames_into(const fs::path& dir) {
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  setenv("GALLIUM_HUD", "fps", 1);
-  setenv("GALLIUM_HUD_VISIBLE", "false", 1);
-  setenv("GALLIUM_HUD_PERIOD", "1", 1);
-  setenv("GALLIUM_HUD_DUMP_DIR", dir.c_str(), 1);
-}
-
-// The mean frames/s after the first `warmup_s` seconds' lines; 0 when the driver wrote none.
-double frames_per_second(const fs::path& dir, int warmup_s) {
-  std::ifstream in(dir / "fps");
-  double value = 0.0, sum = 0.0;
-  int line = 0, counted = 0;
-  while (in >> value)
-    if (++line > warmup_s) {
-      sum += value;
-      ++counted;
-    }
-  return counted > 0 ? sum / counted : 0.0;
+// The frames/s the app said it showed when it stopped ("N frames shown in T s (F a second)"),
+// counted by the app itself whatever the driver and however it presents; 0 if it said nothing.
+double frames_per_second(const fs::path& app_stdout) {
+  std::ifstream in(app_stdout);
+  std::string line;
+  double rate = 0.0;
+  while (std::getline(in, line)) {
+    const auto open = line.rfind(" (");
+    if (line.find("frames shown in") != std::string::npos && open != std::string::npos)
+      rate = std::strtod(line.c_str() + open + 2, nullptr);
+  }
+  return rate;
 }
 
 void print_frames(double cpu_percent, double fps) {
@@ -78,7 +70,7 @@ int main(int argc, char** argv) {
   setenv("XDG_CONFIG_HOME", home.c_str(), 1);
 
   std::printf("app CPU, share of one core over %d s after 5 s warm-up\n", seconds);
-  const fs::path frames = home / "hud";
+  const fs::path app_stdout = home / "app-stdout";
   {
     const pid_t pid = spawn({app, "--port", (home / "no-such-port").string()}, true);
     const double idle = measure_cpu(pid, 5, seconds);
@@ -92,15 +84,16 @@ int main(int argc, char** argv) {
     const std::string link = (home / "g6").string();
     const pid_t sim = spawn({cli, "sim", "--model", "G6", "--scene", scene, "--pty", link}, true);
     for (int i = 0; i < 50 && !fs::exists(link); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    count_frames_into(frames);
-    const pid_t pid = spawn({app, "--port", link, "--model", "G6"}, true);
+    const int out = open(app_stdout.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const pid_t pid = spawn({app, "--port", link, "--model", "G6"}, true, out);
+    close(out);
     const double streaming = measure_cpu(pid, 5, seconds);
     const double sim_cpu = measure_cpu(sim, 0, 2);
     stop(pid);
     stop(sim);
     std::printf("streaming (G6 %s, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)",
                 scene.c_str(), smooth ? "on" : "off", streaming, sim_cpu);
-    print_frames(streaming, frames_per_second(frames, 5));
+    print_frames(streaming, frames_per_second(app_stdout));
   }
   fs::remove_all(home);
   return 0;

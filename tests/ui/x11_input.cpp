@@ -68,6 +68,23 @@ void X11Hands::move_pointer(int x, int y) {
   XFlush(display_);
 }
 
+std::vector<unsigned char> X11Hands::look_at_screen(int width, int height) {
+  XImage* image = XGetImage(display_, DefaultRootWindow(display_), 0, 0, static_cast<unsigned>(width),
+                            static_cast<unsigned>(height), AllPlanes, ZPixmap);
+  if (image == nullptr) return {};
+  std::vector<unsigned char> rgb;
+  rgb.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const unsigned long pixel = XGetPixel(image, x, y);
+      rgb.push_back(static_cast<unsigned char>((pixel & image->red_mask) >> __builtin_ctzl(image->red_mask)));
+      rgb.push_back(static_cast<unsigned char>((pixel & image->green_mask) >> __builtin_ctzl(image->green_mask)));
+      rgb.push_back(static_cast<unsigned char>((pixel & image->blue_mask) >> __builtin_ctzl(image->blue_mask)));
+    }
+  XDestroyImage(image);
+  return rgb;
+}
+
 unsigned long X11Hands::search(unsigned long parent, const std::string& title) {
   char* name = nullptr;
   if (XFetchName(display_, parent, &name) && name) {

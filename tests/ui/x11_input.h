@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <string>
+#include <vector>
 
 struct _XDisplay;
 
@@ -41,6 +42,10 @@ class X11Hands {
   // Screen coordinates (without a window manager the app's window sits at 0,0); works with no
   // window open too, to park the pointer before the app starts.
   void move_pointer(int x, int y);
+
+  // What the screen shows, as a person sees it (not what the app holds in its back buffer): the
+  // top-left `width` x `height` pixels, RGB, top row first; empty if the server would not say.
+  std::vector<unsigned char> look_at_screen(int width, int height);
 
  private:
   unsigned long search(unsigned long parent, const std::string& title);

@@ -92,7 +92,7 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDisable(GL_DEPTH_TEST);
-  glDisable(GL_SCISSOR_TEST);
+  // The scissor is the caller's: a frame drawn in parts keeps the layer to the part being drawn.
   const NdcTransform ndc = view.ndc_transform();
 
   if (style.show_grid && lines_.count > 0) {

@@ -22,13 +22,17 @@ double frame_wait_s(const FrameNeeds& needs, double since_frame_s, double refres
   return needs.streaming ? 0.25 : 1.0;
 }
 
-double animation_hz(double monitor_hz, const char* gl_renderer) {
+bool is_software_renderer(const char* gl_renderer) {
   const std::string_view renderer = gl_renderer != nullptr ? gl_renderer : "";
   bool software = false;
   for (const std::string_view name : {"llvmpipe", "softpipe", "swrast", "SwiftShader", "Software Rasterizer"})
     software = software || renderer.find(name) != std::string_view::npos;
+  return software;
+}
+
+double animation_hz(double monitor_hz, const char* gl_renderer) {
   const double hz = sane_hz(monitor_hz);
-  return software ? std::min(hz, kSoftwareRendererHz) : hz;
+  return is_software_renderer(gl_renderer) ? std::min(hz, kSoftwareRendererHz) : hz;
 }
 
 }  // namespace ydscope::ui

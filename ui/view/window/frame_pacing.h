@@ -20,4 +20,7 @@ double frame_wait_s(const FrameNeeds& needs, double since_frame_s, double refres
 inline constexpr double kSoftwareRendererHz = 30.0;
 double animation_hz(double monitor_hz, const char* gl_renderer);
 
+// Whether GL_RENDERER names a software renderer, where every pixel drawn costs the CPU.
+bool is_software_renderer(const char* gl_renderer);
+
 }  // namespace ydscope::ui
