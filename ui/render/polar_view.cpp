@@ -109,8 +109,18 @@ std::optional<std::pair<float, float>> PolarView::take_swept_sector() {
   return swept;
 }
 
+bool PolarView::layers_changed(std::span<const SourceLayer> layers, std::vector<SourceLayerKey>& last) {
+  layer_keys_.clear();
+  for (const SourceLayer& layer : layers) layer_keys_.emplace_back(layer);
+  if (layer_keys_ == last) return false;
+  last.swap(layer_keys_);
+  return true;
+}
+
 void PolarView::auto_range(std::span<const SourceLayer> layers, const ViewSettings& settings) {
-  auto_range_to(robust_extent_mm(layers, 0.93f) * 1.1f, settings);
+  // A partial sort of the newest lap's ranges: once a lap, not at every frame.
+  if (layers_changed(layers, extent_from_)) extent_mm_ = robust_extent_mm(layers, 0.93f) * 1.1f;
+  auto_range_to(extent_mm_, settings);
 }
 
 void PolarView::auto_range_to(float extent_mm, const ViewSettings& settings) {
@@ -148,12 +158,7 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   // Points are merged per pixel, so a zoom changes what is drawn.
   if (view_.px_per_mm() != merged_px_per_mm_) dirty_ = true;
   // New laps, a source moved, recoloured or dimmed: build again.
-  layer_keys_.clear();
-  for (const SourceLayer& layer : layers) layer_keys_.emplace_back(layer);
-  if (layer_keys_ != built_from_) {
-    built_from_.swap(layer_keys_);
-    shape_dirty_ = true;
-  }
+  if (layers_changed(layers, built_from_)) shape_dirty_ = true;
   if (shape_dirty_) {
     stats_ = build_source_clouds(layers, colours, settings.interference, cloud_);
     points_shown_ = cloud_.vertices.size();

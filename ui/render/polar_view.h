@@ -106,8 +106,11 @@ class PolarView {
   float sweep_turned_deg_ = 0.0f;
   std::optional<std::pair<float, float>> swept_;
 
-  FadingCloud cloud_;  // built once a lap; vertices_ is it faded and merged for this frame
-  std::vector<SourceLayerKey> built_from_, layer_keys_;  // the layers cloud_ was built from; this frame's
+  FadingCloud cloud_;                        // built once a lap; vertices_ is it faded and merged for this frame
+  std::vector<SourceLayerKey> built_from_;   // the layers cloud_ was built from
+  std::vector<SourceLayerKey> extent_from_;  // the layers extent_mm_ was measured on
+  std::vector<SourceLayerKey> layer_keys_;   // this frame's, reused
+  float extent_mm_ = 0.0f;                   // what auto-range fits: robust_extent_mm with a margin
   PixelMerger merger_;
   std::size_t points_shown_ = 0;
   float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at
@@ -120,6 +123,8 @@ class PolarView {
   std::optional<Vec2> forward_click_;
 
   std::optional<SectorShape> sweep_shape() const;
+  // Whether `layers` differ from those `last` was taken from; `last` then holds these.
+  bool layers_changed(std::span<const SourceLayer> layers, std::vector<SourceLayerKey>& last);
   // The colours to build with this frame; marks the cloud dirty when they or the filter changed.
   ColourParams colours_for(const ViewSettings& settings, float phase, bool several_laps);
   void upload_if_dirty(float phase);
