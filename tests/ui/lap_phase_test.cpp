@@ -6,7 +6,7 @@
 #include "ui/view/scene/lap_phase.h"
 #include "tests/ui/faded_cloud.h"
 #include "ui/view/scene/point_cloud.h"
-#include "ui/view/scene/source_cloud.h"
+#include "ui/view/scene/source_clouds.h"
 
 namespace ydscope::ui {
 namespace {
@@ -143,12 +143,14 @@ TEST(PersistenceFade, ACloudFadedAgainIsTheOneBuiltForItsPhase) {
   for (const ColourMode mode : {ColourMode::Range, ColourMode::LapAge, ColourMode::Source}) {
     ColourParams colours;
     colours.mode = mode;
-    FadingCloud kept, fresh;
-    build_source_clouds(layers, colours, filter, kept);
+    SourceClouds kept_clouds, fresh_clouds;
+    kept_clouds.update(layers, colours, filter, true);
+    FadingCloud& kept = kept_clouds.cloud();
     fade_cloud(kept, colours, 0.3f);
     const std::vector<PointVertex> at_start = kept.vertices;
     fade_cloud(kept, colours, 0.8f);
-    build_source_clouds(layers, colours, filter, fresh);
+    fresh_clouds.update(layers, colours, filter, true);
+    FadingCloud& fresh = fresh_clouds.cloud();
     fade_cloud(fresh, colours, 0.8f);
     ASSERT_EQ(kept.vertices.size(), fresh.vertices.size());
     std::size_t differ = 0, moved_on = 0;

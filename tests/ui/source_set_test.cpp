@@ -8,6 +8,7 @@
 #include "ui/view/geometry/grid_layout.h"
 #include "ui/view/scene/motion_background.h"
 #include "ui/view/scene/source_cloud.h"
+#include "ui/view/scene/source_clouds.h"
 #include "ui/view/settings/settings.h"
 #include "ui/view/scene/source_set.h"
 
@@ -24,12 +25,10 @@ LapHistory history_of(std::initializer_list<LapPoint> points) {
 
 // The layers' cloud as the view draws it at `phase`: built, then faded.
 FadedCloud layered_cloud(std::span<const SourceLayer> layers, const ColourParams& colours, float phase = 0.0f) {
-  FadingCloud cloud;
-  FadedCloud faded;
-  faded.stats = build_source_clouds(layers, colours, {}, cloud);
-  fade_cloud(cloud, colours, phase);
-  faded.vertices = std::move(cloud.vertices);
-  return faded;
+  SourceClouds clouds;
+  clouds.update(layers, colours, {}, true);
+  fade_cloud(clouds.cloud(), colours, phase);
+  return {clouds.stats(), clouds.cloud().vertices};
 }
 
 ColourParams solid(ColourMode mode) {
@@ -136,6 +135,52 @@ TEST(SourceCloud, ALoneLidarIsALayerAtTheIdentityPoseDrawnExactlyAsItsOwnCloud) 
     differ += layered[i].x != single[i].x || layered[i].y != single[i].y || !(layered[i].colour == single[i].colour);
   EXPECT_EQ(differ, 0u);
   EXPECT_NE(single.front().colour, single.back().colour) << "the laps fade, so the test sees colours";
+}
+
+// Kept between frames, the layers' cloud is built again only where something changed, and is then
+// exactly the cloud built from nothing: a lap of one source, a source gone, nothing at all.
+TEST(SourceCloud, KeptCloudsRebuildWhatChangedAndMatchOnesBuiltFromNothing) {
+  LapHistory front(3), rear(3);
+  const auto lap_of = [](float range_mm) {
+    Lap lap;
+    for (int a = 0; a < 36; ++a)
+      lap.points.push_back({static_cast<float>(a * 10), range_mm + static_cast<float>(a), PointFlag::None});
+    return lap;
+  };
+  front.push(lap_of(1000.0f));
+  rear.push(lap_of(2000.0f));
+  SourceLayer layers[2];
+  layers[0].history = &front;
+  layers[1].history = &rear;
+  layers[1].pose.x_m = -1.0;
+  layers[1].dim = true;
+  ColourParams colours;
+  SourceClouds kept;
+  const auto matches_fresh = [&](std::span<const SourceLayer> shown) {
+    SourceClouds fresh;
+    fresh.update(shown, colours, {}, true);
+    fade_cloud(fresh.cloud(), colours, 0.5f);
+    fade_cloud(kept.cloud(), colours, 0.5f);
+    const FadingCloud& a = kept.cloud();
+    const FadingCloud& b = fresh.cloud();
+    bool same = a.vertices.size() == b.vertices.size() && a.runs.size() == b.runs.size() &&
+                kept.stats().drawn == fresh.stats().drawn;
+    for (std::size_t i = 0; same && i < a.vertices.size(); ++i)
+      same = a.vertices[i].x == b.vertices[i].x && a.vertices[i].y == b.vertices[i].y &&
+             a.vertices[i].colour == b.vertices[i].colour;
+    for (std::size_t i = 0; same && i < a.runs.size(); ++i)
+      same = a.runs[i].begin == b.runs[i].begin && a.runs[i].end == b.runs[i].end && a.runs[i].age == b.runs[i].age;
+    return same;
+  };
+  EXPECT_TRUE(kept.update(layers, colours, {}, false)) << "the first update builds";
+  EXPECT_FALSE(kept.update(layers, colours, {}, false)) << "nothing changed";
+  rear.push(lap_of(2500.0f));
+  EXPECT_TRUE(kept.update(layers, colours, {}, false)) << "a lap of the rear lidar";
+  EXPECT_TRUE(matches_fresh(layers));
+  EXPECT_EQ(kept.stats().drawn, 36u * 3u);
+  EXPECT_TRUE(kept.update(std::span(layers, 1), colours, {}, false)) << "the rear lidar hidden";
+  EXPECT_TRUE(matches_fresh(std::span(layers, 1)));
+  EXPECT_EQ(kept.stats().drawn, 36u);
 }
 
 TEST(SourceCloud, AutoRangeReachesTheFarthestSourcesReturns) {

@@ -157,17 +157,17 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   const ColourParams colours = colours_for(settings, phase, several_laps);
   // Points are merged per pixel, so a zoom changes what is drawn.
   if (view_.px_per_mm() != merged_px_per_mm_) dirty_ = true;
-  // New laps, a source moved, recoloured or dimmed: build again.
-  if (layers_changed(layers, built_from_)) shape_dirty_ = true;
-  if (shape_dirty_) {
-    stats_ = build_source_clouds(layers, colours, settings.interference, cloud_);
-    points_shown_ = cloud_.vertices.size();
-    shape_dirty_ = false;
+  // New laps, a source moved, recoloured or dimmed: those layers are built again.
+  if (clouds_.update(layers, colours, settings.interference, shape_dirty_)) {
+    stats_ = clouds_.stats();
+    points_shown_ = clouds_.cloud().vertices.size();
     dirty_ = true;
   }
+  shape_dirty_ = false;
   if (dirty_) {
-    fade_cloud(cloud_, colours, phase);
-    vertices_ = cloud_.vertices;  // the merge replaces what it is given; the cloud is kept for the next fade
+    fade_cloud(clouds_.cloud(), colours, phase);
+    // The merge replaces what it is given; the cloud is kept for the next fade.
+    vertices_ = clouds_.cloud().vertices;
     merged_px_per_mm_ = view_.px_per_mm();
     merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
     upload_if_dirty(phase);

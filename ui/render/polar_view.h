@@ -18,6 +18,7 @@
 #include "ui/view/geometry/pose_drag.h"
 #include "ui/view/settings/settings.h"
 #include "ui/view/scene/source_cloud.h"
+#include "ui/view/scene/source_clouds.h"
 
 namespace ydscope::ui {
 
@@ -89,7 +90,7 @@ class PolarView {
   // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height, band).
   float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   PointCloudStats stats_;
-  bool shape_dirty_ = true;  // the cloud must be built again (positions, hues)
+  bool shape_dirty_ = true;  // every layer's cloud must be built again (the colours, the filter, asked)
   bool dirty_ = true;        // faded, merged and uploaded again (a new phase, a zoom)
   std::uint64_t gl_generation_ = 0;
   float last_phase_ = 0.0f;
@@ -106,8 +107,7 @@ class PolarView {
   float sweep_turned_deg_ = 0.0f;
   std::optional<std::pair<float, float>> swept_;
 
-  FadingCloud cloud_;                        // built once a lap; vertices_ is it faded and merged for this frame
-  std::vector<SourceLayerKey> built_from_;   // the layers cloud_ was built from
+  SourceClouds clouds_;  // built once a lap; vertices_ is their cloud faded and merged for this frame
   std::vector<SourceLayerKey> extent_from_;  // the layers extent_mm_ was measured on
   std::vector<SourceLayerKey> layer_keys_;   // this frame's, reused
   float extent_mm_ = 0.0f;                   // what auto-range fits: robust_extent_mm with a margin

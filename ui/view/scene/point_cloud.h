@@ -36,6 +36,14 @@ struct PointCloudStats {
   std::size_t newest_specular_removed = 0;  // in the newest lap
   std::size_t newest_ambient_removed = 0;
   std::size_t newest_no_return = 0;  // range 0: no echo, never drawn
+  // Several sources' statistics add up.
+  void add(const PointCloudStats& other) {
+    drawn += other.drawn;
+    ghosts += other.ghosts;
+    newest_specular_removed += other.newest_specular_removed;
+    newest_ambient_removed += other.newest_ambient_removed;
+    newest_no_return += other.newest_no_return;
+  }
 };
 
 // Vertices of one lap of one source that fade alike. The newest lap's ghosts are runs of their

@@ -8,41 +8,32 @@
 
 namespace ydscope::ui {
 
-PointCloudStats build_source_clouds(std::span<const SourceLayer> layers, const ColourParams& colours,
-                                    const InterferenceSettings& filter, FadingCloud& cloud) {
+PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& colours,
+                                  const InterferenceSettings& filter, FadingCloud& cloud) {
   cloud.clear();
-  PointCloudStats total;
+  if (!layer.history) return {};
+  const PointCloudStats stats = append_point_cloud(*layer.history, colours, filter, cloud, layer.motion);
   const bool by_source = colours.mode == ColourMode::Source;
-  for (const SourceLayer& layer : layers) {
-    if (!layer.history) continue;
-    const std::size_t first_run = cloud.runs.size();
-    const PointCloudStats stats = append_point_cloud(*layer.history, colours, filter, cloud, layer.motion);
-    total.drawn += stats.drawn;
-    total.ghosts += stats.ghosts;
-    total.newest_specular_removed += stats.newest_specular_removed;
-    total.newest_ambient_removed += stats.newest_ambient_removed;
-    total.newest_no_return += stats.newest_no_return;
-    // Darkened as well as made transparent: alpha alone let a dead lidar's overlapping laps
-    // add back up to nearly full brightness (255 fell only to 221). The fade dims the alpha.
-    const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
-    const auto dimmed = [strength](std::uint8_t channel) {
-      return static_cast<std::uint8_t>(static_cast<float>(channel) * strength + 0.5f);
-    };
-    for (auto run = cloud.runs.begin() + static_cast<std::ptrdiff_t>(first_run); run != cloud.runs.end(); ++run) {
-      run->strength = strength;
-      for (std::uint32_t i = run->begin; i < run->end; ++i) {
-        PointVertex& v = cloud.vertices[i];
-        const Vec2 posed = posed_in_view(layer.pose, {v.x, v.y});
-        v.x = posed.x;
-        v.y = posed.y;
-        // The lap's fade stays in the alpha; the hue says whose point it is.
-        if (by_source) v.colour = {layer.colour.r, layer.colour.g, layer.colour.b, v.colour.a};
-        v.colour = {dimmed(v.colour.r), dimmed(v.colour.g), dimmed(v.colour.b),
-                    run->ghost ? dimmed(v.colour.a) : v.colour.a};  // a ghost does not fade
-      }
+  // Darkened as well as made transparent: alpha alone let a dead lidar's overlapping laps
+  // add back up to nearly full brightness (255 fell only to 221). The fade dims the alpha.
+  const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
+  const auto dimmed = [strength](std::uint8_t channel) {
+    return static_cast<std::uint8_t>(static_cast<float>(channel) * strength + 0.5f);
+  };
+  for (FadeRun& run : cloud.runs) {
+    run.strength = strength;
+    for (std::uint32_t i = run.begin; i < run.end; ++i) {
+      PointVertex& v = cloud.vertices[i];
+      const Vec2 posed = posed_in_view(layer.pose, {v.x, v.y});
+      v.x = posed.x;
+      v.y = posed.y;
+      // The lap's fade stays in the alpha; the hue says whose point it is.
+      if (by_source) v.colour = {layer.colour.r, layer.colour.g, layer.colour.b, v.colour.a};
+      v.colour = {dimmed(v.colour.r), dimmed(v.colour.g), dimmed(v.colour.b),
+                  run.ghost ? dimmed(v.colour.a) : v.colour.a};  // a ghost does not fade
     }
   }
-  return total;
+  return stats;
 }
 
 float robust_extent_mm(std::span<const SourceLayer> layers, float share) {

@@ -42,10 +42,10 @@ struct SourceLayerKey {
 // How much of its strength (each colour channel and its opacity) a dimmed source keeps.
 inline constexpr float kDimmedSourceAlpha = 0.3f;
 
-// Clears `cloud` and fills it, layers in order (later ones on top), not yet faded (fade_cloud).
-// The statistics add up over the layers.
-PointCloudStats build_source_clouds(std::span<const SourceLayer> layers, const ColourParams& colours,
-                                    const InterferenceSettings& filter, FadingCloud& cloud);
+// Clears `cloud` and fills it with one layer's laps, posed and dimmed, not yet faded (fade_cloud).
+// A layer without a history has none.
+PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& colours,
+                                  const InterferenceSettings& filter, FadingCloud& cloud);
 
 // The farthest a robust share of each source's newest returns reaches from the common origin
 // (its distance from the origin plus its own robust range): what auto-range fits.
