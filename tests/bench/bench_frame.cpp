@@ -86,8 +86,7 @@ void BM_BuildCloud(benchmark::State& state) {
   fill_history(history, static_cast<std::size_t>(state.range(0)));
   FadingCloud cloud;
   for (auto _ : state) {
-    cloud.clear();
-    append_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+    build_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
     benchmark::DoNotOptimize(cloud.vertices.data());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
@@ -99,7 +98,7 @@ void BM_FadeCloud(benchmark::State& state) {
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
   FadingCloud cloud;
-  append_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+  build_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
   float phase = 0.0f;
   for (auto _ : state) {
     phase = phase >= 1.0f ? 0.0f : phase + 0.03f;
@@ -122,8 +121,7 @@ void BM_BuildCloudWithMotion(benchmark::State& state) {
   colours.mode = ColourMode::Motion;
   FadingCloud cloud;
   for (auto _ : state) {
-    cloud.clear();
-    append_point_cloud(history, colours, InterferenceSettings{}, cloud, &motion);
+    build_point_cloud(history, colours, InterferenceSettings{}, cloud, &motion);
     benchmark::DoNotOptimize(cloud.vertices.data());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
@@ -147,7 +145,7 @@ void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
   FadingCloud faded;
-  append_point_cloud(history, ColourParams{}, InterferenceSettings{}, faded);
+  build_point_cloud(history, ColourParams{}, InterferenceSettings{}, faded);
   fade_cloud(faded, ColourParams{}, 0.0f);
   std::vector<PointVertex> cloud = std::move(faded.vertices);
   const ViewTransform view = make_view();

@@ -16,7 +16,7 @@ inline FadedCloud faded_cloud(const LapHistory& history, const ColourParams& col
                               float phase = 0.0f) {
   FadingCloud cloud;
   FadedCloud faded;
-  faded.stats = append_point_cloud(history, colours, filter, cloud, motion);
+  faded.stats = build_point_cloud(history, colours, filter, cloud, motion);
   fade_cloud(cloud, colours, phase);
   faded.vertices = std::move(cloud.vertices);
   return faded;

@@ -41,6 +41,10 @@ std::uint8_t unit_to_byte(float v) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
 }
 
+std::uint8_t scale_byte(std::uint8_t channel, float by) {
+  return static_cast<std::uint8_t>(static_cast<float>(channel) * by + 0.5f);
+}
+
 std::string_view colour_mode_name(ColourMode mode) {
   switch (mode) {
     case ColourMode::Range: return "range";

@@ -23,6 +23,9 @@ Rgba8 sample_palette(Palette palette, float t);
 // A 0..1 channel as a byte, rounded, out-of-range values clamped.
 std::uint8_t unit_to_byte(float v);
 
+// A byte channel times `by` (0..1), rounded: a fade or a dimming.
+std::uint8_t scale_byte(std::uint8_t channel, float by);
+
 // Colours of the interference flags, also used by the legend in the panels.
 Rgba8 flag_colour(PointFlag flag);
 

@@ -70,12 +70,13 @@ struct FadingCloud {
   }
 };
 
-// Appends `history`'s laps to `cloud`, oldest first so the newest is drawn on top: each point's
-// position and hue, in runs not yet faded (fade_cloud). Points with range 0 are not drawn.
-// `motion` tells moving points from the room in Motion mode (without it every point is the room's).
-PointCloudStats append_point_cloud(const LapHistory& history, const ColourParams& colours,
-                                   const InterferenceSettings& filter, FadingCloud& cloud,
-                                   const MotionBackground* motion = nullptr);
+// Clears `cloud` (keeping its capacity) and fills it with `history`'s laps, oldest first so the
+// newest is drawn on top: each point's position and hue, in runs not yet faded (fade_cloud).
+// Points with range 0 are not drawn. `motion` tells moving points from the room in Motion mode
+// (without it every point is the room's).
+PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
+                                  const InterferenceSettings& filter, FadingCloud& cloud,
+                                  const MotionBackground* motion = nullptr);
 
 // Sets each run's alpha (and in lap-age mode its hue) for `phase` (LapPhase, 0..1), how far the view
 // is towards the next lap: every lap ages by that fraction of a lap, and when the history is full

@@ -10,16 +10,16 @@ namespace ydscope::ui {
 
 PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& colours,
                                   const InterferenceSettings& filter, FadingCloud& cloud) {
-  cloud.clear();
-  if (!layer.history) return {};
-  const PointCloudStats stats = append_point_cloud(*layer.history, colours, filter, cloud, layer.motion);
+  if (!layer.history) {
+    cloud.clear();
+    return {};
+  }
+  const PointCloudStats stats = build_point_cloud(*layer.history, colours, filter, cloud, layer.motion);
   const bool by_source = colours.mode == ColourMode::Source;
   // Darkened as well as made transparent: alpha alone let a dead lidar's overlapping laps
   // add back up to nearly full brightness (255 fell only to 221). The fade dims the alpha.
   const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
-  const auto dimmed = [strength](std::uint8_t channel) {
-    return static_cast<std::uint8_t>(static_cast<float>(channel) * strength + 0.5f);
-  };
+  const auto dimmed = [strength](std::uint8_t channel) { return scale_byte(channel, strength); };
   for (FadeRun& run : cloud.runs) {
     run.strength = strength;
     for (std::uint32_t i = run.begin; i < run.end; ++i) {
