@@ -2,8 +2,6 @@
 // backend into an offscreen picture; a figure changes; only the box DrawDamage names is cleared
 // and drawn again (render_imgui_within), over the last frame's picture. Every pixel must then be
 // the one a whole redraw gives. Needs the display CTest gives the suite (xvfb-run); skips without.
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
 #include <backends/imgui_impl_opengl3.h>
@@ -16,6 +14,7 @@
 #include "tests/ui/headless_imgui.h"
 #include "ui/panels/panels.h"
 #include "ui/render/draw_damage.h"
+#include "tests/ui/offscreen_gl.h"
 #include "ui/render/gl.h"
 #include "ui/render/imgui_within.h"
 
@@ -29,32 +28,16 @@ class PartialFrame : public testing::Test {
  protected:
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (the suite runs under xvfb-run)";
-    ASSERT_TRUE(glfwInit()) << "GLFW could not start on this display";
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    window_ = glfwCreateWindow(64, 64, "partial frame", nullptr, nullptr);
-    ASSERT_NE(window_, nullptr) << "no GL 3.3 core context on this display";
-    glfwMakeContextCurrent(window_);
-    glGenFramebuffers(1, &framebuffer_);
-    glGenRenderbuffers(1, &colour_);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
-    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+    gl_.emplace(kWidth, kHeight);
+    ASSERT_TRUE(*gl_) << "no GL 3.3 core context with an offscreen picture on this display";
     imgui_.emplace(static_cast<float>(kWidth), static_cast<float>(kHeight));
     ASSERT_TRUE(ImGui_ImplOpenGL3_Init("#version 330 core"));
+    backend_ = true;
   }
   void TearDown() override {
-    if (!window_) return;
-    if (imgui_) ImGui_ImplOpenGL3_Shutdown();
+    if (backend_) ImGui_ImplOpenGL3_Shutdown();
     imgui_.reset();
-    glDeleteRenderbuffers(1, &colour_);
-    glDeleteFramebuffers(1, &framebuffer_);
-    glfwDestroyWindow(window_);
-    glfwTerminate();
+    gl_.reset();
   }
 
   // Lays out the sidebar for `m`; its draw data is ImGui's until the next frame.
@@ -76,11 +59,7 @@ class PartialFrame : public testing::Test {
     glDisable(GL_SCISSOR_TEST);
     render_imgui_within(*ImGui::GetDrawData(), box);
   }
-  static std::vector<unsigned char> picture() {
-    std::vector<unsigned char> pixels(static_cast<std::size_t>(kWidth * kHeight * 4));
-    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-    return pixels;
-  }
+  std::vector<unsigned char> picture() const { return gl_->picture(); }
   static std::size_t pixels_differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
     std::size_t differ = 0;
     for (std::size_t i = 0; i < a.size(); i += 4)
@@ -91,10 +70,9 @@ class PartialFrame : public testing::Test {
   ViewSettings settings_;
 
  private:
-  GLFWwindow* window_ = nullptr;
-  GLuint framebuffer_ = 0;
-  GLuint colour_ = 0;
+  std::optional<OffscreenGl> gl_;  // before the ImGui context: it goes after it
   std::optional<HeadlessImGui> imgui_;
+  bool backend_ = false;
 };
 
 TEST_F(PartialFrame, ThePanelsRedrawnInTheBoxThatChangedAreThePanelsRedrawnWhole) {

@@ -2,16 +2,15 @@
 // did: drawn with the app's own renderer and point shader into an offscreen picture, the merged
 // sprite and the points it replaced give the same pixels, antialiased rim included. Needs the
 // display CTest gives the suite (xvfb-run); skips without one.
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <vector>
 
-#include "ui/render/gl.h"
+#include "tests/ui/offscreen_gl.h"
 #include "ui/render/polar_renderer.h"
 #include "ui/view/scene/pixel_merge.h"
 
@@ -20,35 +19,15 @@ namespace {
 
 constexpr int kSide = 32;
 
-// A hidden window's GL 3.3 core context and a framebuffer of kSide x kSide to draw into.
-class OffscreenGl : public testing::Test {
+// The app's renderer drawing into an offscreen picture of kSide x kSide.
+class PointStackPicture : public testing::Test {
  protected:
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (the suite runs under xvfb-run)";
-    ASSERT_TRUE(glfwInit()) << "GLFW could not start on this display";
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    window_ = glfwCreateWindow(kSide, kSide, "point stack", nullptr, nullptr);
-    ASSERT_NE(window_, nullptr) << "no GL 3.3 core context on this display";
-    glfwMakeContextCurrent(window_);
-    glGenFramebuffers(1, &framebuffer_);
-    glGenRenderbuffers(1, &colour_);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kSide, kSide);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
-    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+    gl_.emplace(kSide, kSide);
+    ASSERT_TRUE(*gl_) << "no GL 3.3 core context with an offscreen picture on this display";
     view_.set_viewport({0.0f, 0.0f}, {static_cast<float>(kSide), static_cast<float>(kSide)});
     view_.fit_range(1000.0f);
-  }
-  void TearDown() override {
-    if (!window_) return;
-    glDeleteRenderbuffers(1, &colour_);
-    glDeleteFramebuffers(1, &framebuffer_);
-    glfwDestroyWindow(window_);
-    glfwTerminate();
   }
 
   // The picture `renderer` draws of `points` over the view's background, bottom row first, RGBA.
@@ -60,9 +39,7 @@ class OffscreenGl : public testing::Test {
     style.point_size_px = size_px;
     style.show_grid = false;
     renderer.draw(view_, style, 1.0f, kSide);
-    std::vector<unsigned char> pixels(static_cast<std::size_t>(kSide * kSide * 4));
-    glReadPixels(0, 0, kSide, kSide, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-    return pixels;
+    return gl_->picture();
   }
 
   float cell_mm() const { return 1.0f / view_.px_per_mm(); }
@@ -70,9 +47,7 @@ class OffscreenGl : public testing::Test {
   ViewTransform view_;
 
  private:
-  GLFWwindow* window_ = nullptr;
-  GLuint framebuffer_ = 0;
-  GLuint colour_ = 0;
+  std::optional<OffscreenGl> gl_;
 };
 
 // The largest difference in a colour channel; alpha is left out, as the window shows none.
@@ -92,7 +67,7 @@ std::vector<PointVertex> faded_stack() {
   return stack;
 }
 
-TEST_F(OffscreenGl, AMergedStackDrawsTheSamePixelsAsItsPoints) {
+TEST_F(PointStackPicture, AMergedStackDrawsTheSamePixelsAsItsPoints) {
   PolarRenderer renderer;
   // The shader's rim is exact where a sprite covers a pixel wholly, half or not at all: a 3 px
   // point (the app's size) has only such pixels; a 7 px one has rings in between, where the
