@@ -341,5 +341,13 @@ TEST(SourceSet, HowEachSourceStartedAndTheLastRunsListRoundTrip) {
   EXPECT_EQ(format_settings(ViewSettings{}).find("last_sources"), std::string::npos);
 }
 
+// A hand-edited list with blank names and stray carriage returns or tabs (fuzz_settings found one
+// that lost a name at each save): each name is trimmed and blank ones dropped, so it saves stably.
+TEST(SourceSet, TheLastRunsListDropsBlankNamesAndReadsBackTheSameOnceSaved) {
+  const ViewSettings parsed = parse_settings("last_sources = front,,\r, back\t ,\t,\r\r,rear\r\n");
+  EXPECT_EQ(parsed.last_sources, (std::vector<std::string>{"front", "back", "rear"}));
+  EXPECT_EQ(parse_settings(format_settings(parsed)).last_sources, parsed.last_sources);
+}
+
 }  // namespace
 }  // namespace ydscope::ui

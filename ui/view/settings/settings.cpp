@@ -160,8 +160,8 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       std::size_t at = 0;
       while (at <= value.size()) {
         const std::size_t comma = std::min(value.find(',', at), value.size());
-        std::string name = value.substr(at, comma - at);
-        std::erase(name, ' ');
+        // Trimmed as a whole line's value is: written back as "a, b", the list then reads the same.
+        std::string name = trim(value.substr(at, comma - at));
         if (!name.empty()) s.last_sources.push_back(std::move(name));
         at = comma + 1;
       }
