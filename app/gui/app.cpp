@@ -41,6 +41,7 @@ App::App(GLFWwindow* window, const AppOptions& options, bool persist_settings)
   }
   sources_.add({}, static_cast<std::size_t>(settings_.persistence_laps));
   std::snprintf(sel().edits.replay_text, sizeof sel().edits.replay_text, "%s", settings_.last_replay_file.c_str());
+  model().show_sidebar_tab = static_cast<int>(settings_.sidebar_tab);  // the tab it was left on
   model().ports = discover_ports();
   restore_watched_sectors(model().sectors, settings_, options_.sector);
   zones_ = zones_to_watch(settings_.zones, options_.zones);

@@ -10,7 +10,8 @@
 // alone under-states a frame's cost.
 //   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_frame_cpu [--seconds 20] [--scene demo]
 // The scene is the virtual lidar's: demo (a turning flower: every lap lands elsewhere), room
-// (walls that stay put, as on a bench or a robot: laps land on the same pixels) or booth.
+// (walls that stay put, as on a bench or a robot: laps land on the same pixels) or booth. --tab
+// opens the sidebar on another tab (statistics: the plots, redrawn as their values move).
 // Not a Google Benchmark: it measures another process, so it has its own main.
 #include <fcntl.h>
 #include <unistd.h>
@@ -55,12 +56,16 @@ void print_frames(double cpu_percent, double fps) {
 int main(int argc, char** argv) {
   int seconds = 20;
   std::string scene = "demo";
+  std::string tab = "lidar";
   BenchOptions options("bench_frame_cpu", "the app's CPU: idle, then a G6 stream with smooth drawing on and off");
   options.add("--seconds", seconds, "how long to measure each case, after 5 s")
-      .add("--scene", scene, "the virtual lidar's scene: demo, room or booth");
+      .add("--scene", scene, "the virtual lidar's scene: demo, room or booth")
+      .add("--tab", tab, "the sidebar's tab: lidar, view, statistics or sources");
   options.parse(argc, argv);
   if (seconds < 1) options.fail("needs --seconds of 1 or more");
   if (scene != "demo" && scene != "room" && scene != "booth") options.fail("knows the scenes demo, room and booth");
+  if (tab != "lidar" && tab != "view" && tab != "statistics" && tab != "sources")
+    options.fail("knows the tabs lidar, view, statistics and sources");
   const auto binaries = find_app_binaries("bench_frame_cpu");
   if (!binaries) return 1;
   const std::string& app = binaries->app;
@@ -78,9 +83,10 @@ int main(int argc, char** argv) {
     std::printf("idle (no device, window open):   %6.2f %%\n", idle);
   }
   for (const bool smooth : {true, false}) {
-    // settings.ini is where the View tab's "smooth" is kept.
+    // settings.ini is where the View tab's "smooth" is kept, and the tab the sidebar opens on.
     fs::create_directories(home / "ydscope");
-    std::ofstream(home / "ydscope" / "settings.ini") << "smooth = " << (smooth ? "true" : "false") << "\n";
+    std::ofstream(home / "ydscope" / "settings.ini") << "smooth = " << (smooth ? "true" : "false") << "\n"
+                                                     << "sidebar_tab = " << tab << "\n";
     const std::string link = (home / "g6").string();
     const pid_t sim = spawn({cli, "sim", "--model", "G6", "--scene", scene, "--pty", link}, true);
     for (int i = 0; i < 50 && !fs::exists(link); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -91,8 +97,8 @@ int main(int argc, char** argv) {
     const double sim_cpu = measure_cpu(sim, 0, 2);
     stop(pid);
     stop(sim);
-    std::printf("streaming (G6 %s, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)",
-                scene.c_str(), smooth ? "on" : "off", streaming, sim_cpu);
+    std::printf("streaming (G6 %s, %s tab, sim apart), smooth %-3s:  %6.2f %%   (the sim process itself: %.2f %%)",
+                scene.c_str(), tab.c_str(), smooth ? "on" : "off", streaming, sim_cpu);
     print_frames(streaming, frames_per_second(app_stdout));
   }
   fs::remove_all(home);

@@ -32,9 +32,12 @@ float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
     draw_source_selector(m);
     if (ImGui::BeginTabBar("sidebar")) {
       const int wanted = m.show_sidebar_tab;
-      const auto tab = [&m](const char* name, SidebarTab which) {
-        return ImGui::BeginTabItem(name, nullptr,
-                                   m.show_sidebar_tab == static_cast<int>(which) ? ImGuiTabItemFlags_SetSelected : 0);
+      // The open tab is remembered (settings.ini), so the next run opens on it.
+      const auto tab = [&m, &v](const char* name, SidebarTab which) {
+        const bool open = ImGui::BeginTabItem(
+            name, nullptr, m.show_sidebar_tab == static_cast<int>(which) ? ImGuiTabItemFlags_SetSelected : 0);
+        if (open) v.sidebar_tab = which;
+        return open;
       };
       if (tab("Lidar", SidebarTab::Lidar)) {
         draw_connection_panel(m, e);
@@ -56,7 +59,7 @@ float draw_sidebar(UiModel& m, PanelEdits& e, ViewSettings& v) {
         draw_plots_panel(m, e);
         ImGui::EndTabItem();
       }
-      if (ImGui::BeginTabItem("Sources")) {
+      if (tab("Sources", SidebarTab::Sources)) {
         draw_sources_panel(m, e);
         ImGui::EndTabItem();
       }

@@ -22,6 +22,7 @@
 #include "ui/view/history/rate_meters.h"
 #include "ui/view/history/run_plots.h"
 #include "ui/view/history/sector_watch.h"
+#include "ui/view/settings/sidebar_tab.h"
 #include "ui/view/settings/settings.h"
 #include "ui/view/status/view_state.h"
 
@@ -47,7 +48,6 @@ struct ReplayControl {
 inline constexpr float kMinReplaySpeedShown = 0.25f;
 inline constexpr float kMaxReplaySpeedShown = 8.0f;
 
-enum class SidebarTab { Lidar, View, Statistics };
 // The Connection panel's tabs: the first three are ConnectRequest::Kind's.
 enum class SourceTab { Port, Virtual, Replay, Record, Share };
 

@@ -153,6 +153,8 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
         s.booth_figure = *kind;
       else if (notes)
         notes->push_back("booth_figure = " + value + " is left out: it takes none, visitors or nearest");
+    } else if (key == "sidebar_tab") {
+      if (const auto tab = sidebar_tab_from_word(value)) s.sidebar_tab = *tab;
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
     } else if (key == "last_sources") {
@@ -223,6 +225,7 @@ std::string format_settings(const ViewSettings& s) {
       << "zone_beep = " << yes(s.zone_beep) << "\n"
       << "booth_title = " << s.booth_title << "\n"
       << "booth_figure = " << booth_figure_word(s.booth_figure) << "\n"
+      << "sidebar_tab = " << sidebar_tab_word(s.sidebar_tab) << "\n"
       << "last_replay_file = " << s.last_replay_file << "\n"
       << kPoseConventionKey << " = " << kPoseConvention << "\n";
   for (const std::string& sector : s.sectors) out << "sector = " << sector << "\n";

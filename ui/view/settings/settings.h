@@ -10,6 +10,7 @@
 #include "ui/view/scene/colour_map.h"
 #include "ui/view/scene/point_cloud.h"
 #include "ui/view/scene/source_set.h"
+#include "ui/view/settings/sidebar_tab.h"
 
 namespace ydscope::ui {
 
@@ -39,6 +40,7 @@ struct ViewSettings {
   // The booth view's own line for visitors (empty: none) and its large live figure.
   std::string booth_title;
   BoothFigureKind booth_figure = BoothFigureKind::None;
+  SidebarTab sidebar_tab = SidebarTab::Lidar;  // the tab the sidebar was left on
   // Sources by name: a source of a remembered name gets its pose and colour back.
   std::vector<SourceLook> sources;
   // The last run's lidars, by name, when it had several: a run with no source named starts them
