@@ -54,6 +54,24 @@ TEST(DrawDamage, AFrameThatRepeatsTheLastHasNoneAndAChangedFigureOnlyItsOwnBox) 
   EXPECT_FALSE(new_state->front().overlaps(box)) << "the state is written elsewhere than the rate";
 }
 
+TEST(DrawDamage, TwoFiguresThatChangedApartAreTwoSmallBoxesNotOneRoundAllBetween) {
+  HeadlessImGui imgui(1280.0f, 800.0f);
+  UiModel m;
+  m.snap.state = LinkState::Scanning;
+  m.snap.link = "/dev/ttyUSB0 at 512000 baud";
+  m.snap.scan_hz = 8.0;
+  ViewSettings settings;
+  DrawDamage damage;
+  for (int frame = 0; frame < 3; ++frame) sidebar_frame(damage, m, settings);
+  m.snap.scan_hz = 8.1;                         // the Scan frequency panel, near the foot of the tab
+  m.snap.link = "/dev/ttyUSB1 at 512000 baud";  // the Connection panel, at its head
+  const auto both = sidebar_frame(damage, m, settings);
+  ASSERT_TRUE(both);
+  ASSERT_EQ(both->size(), 2u);
+  for (const DisplayBox& box : *both) EXPECT_LT(box.y1 - box.y0, 30.0f) << "one line of text each";
+  EXPECT_GT(std::abs((*both)[1].y0 - (*both)[0].y0), 100.0f) << "the two lines lie apart";
+}
+
 TEST(DrawDamage, ADrawListMoreOrLessCannotBeComparedSoAllOfItChanged) {
   HeadlessImGui imgui(1280.0f, 800.0f);
   UiModel m;
