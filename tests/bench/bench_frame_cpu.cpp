@@ -9,6 +9,7 @@
 // per frame: on a loaded machine the app gets fewer frames than it asks for, so its share of a core
 // alone under-states a frame's cost.
 //   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_frame_cpu [--seconds 20] [--scene demo]
+//     [--tab statistics --warm-up 125 --cases smooth]
 // The scene is the virtual lidar's: demo (a turning flower: every lap lands elsewhere), room
 // (walls that stay put, as on a bench or a robot: laps land on the same pixels) or booth. --tab
 // opens the sidebar on another tab (statistics: the plots, redrawn as their values move).
@@ -57,15 +58,21 @@ int main(int argc, char** argv) {
   int seconds = 20;
   std::string scene = "demo";
   std::string tab = "lidar";
+  int warm_up = 5;
+  std::string cases = "all";
   BenchOptions options("bench_frame_cpu", "the app's CPU: idle, then a G6 stream with smooth drawing on and off");
-  options.add("--seconds", seconds, "how long to measure each case, after 5 s")
+  options.add("--seconds", seconds, "how long to measure each case, after the warm-up")
       .add("--scene", scene, "the virtual lidar's scene: demo, room or booth")
-      .add("--tab", tab, "the sidebar's tab: lidar, view, statistics or sources");
+      .add("--tab", tab, "the sidebar's tab: lidar, view, statistics or sources")
+      .add("--warm-up", warm_up, "seconds before measuring (the plots span up to 120 s of the run)")
+      .add("--cases", cases, "all, or smooth: only the stream drawn smooth");
   options.parse(argc, argv);
   if (seconds < 1) options.fail("needs --seconds of 1 or more");
   if (scene != "demo" && scene != "room" && scene != "booth") options.fail("knows the scenes demo, room and booth");
   if (tab != "lidar" && tab != "view" && tab != "statistics" && tab != "sources")
     options.fail("knows the tabs lidar, view, statistics and sources");
+  if (warm_up < 0) options.fail("needs --warm-up of 0 or more");
+  if (cases != "all" && cases != "smooth") options.fail("knows the cases all and smooth");
   const auto binaries = find_app_binaries("bench_frame_cpu");
   if (!binaries) return 1;
   const std::string& app = binaries->app;
@@ -74,15 +81,16 @@ int main(int argc, char** argv) {
   fs::create_directories(home);
   setenv("XDG_CONFIG_HOME", home.c_str(), 1);
 
-  std::printf("app CPU, share of one core over %d s after 5 s warm-up\n", seconds);
+  std::printf("app CPU, share of one core over %d s after %d s warm-up\n", seconds, warm_up);
   const fs::path app_stdout = home / "app-stdout";
-  {
+  if (cases == "all") {
     const pid_t pid = spawn({app, "--port", (home / "no-such-port").string()}, true);
-    const double idle = measure_cpu(pid, 5, seconds);
+    const double idle = measure_cpu(pid, warm_up, seconds);
     stop(pid);
     std::printf("idle (no device, window open):   %6.2f %%\n", idle);
   }
   for (const bool smooth : {true, false}) {
+    if (!smooth && cases == "smooth") break;
     // settings.ini is where the View tab's "smooth" is kept, and the tab the sidebar opens on.
     fs::create_directories(home / "ydscope");
     std::ofstream(home / "ydscope" / "settings.ini") << "smooth = " << (smooth ? "true" : "false") << "\n"
@@ -93,7 +101,7 @@ int main(int argc, char** argv) {
     const int out = open(app_stdout.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const pid_t pid = spawn({app, "--port", link, "--model", "G6"}, true, out);
     close(out);
-    const double streaming = measure_cpu(pid, 5, seconds);
+    const double streaming = measure_cpu(pid, warm_up, seconds);
     const double sim_cpu = measure_cpu(sim, 0, 2);
     stop(pid);
     stop(sim);

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -70,6 +71,43 @@ TEST(DrawDamage, TwoFiguresThatChangedApartAreTwoSmallBoxesNotOneRoundAllBetween
   ASSERT_EQ(both->size(), 2u);
   for (const DisplayBox& box : *both) EXPECT_LT(box.y1 - box.y0, 30.0f) << "one line of text each";
   EXPECT_GT(std::abs((*both)[1].y0 - (*both)[0].y0), 100.0f) << "the two lines lie apart";
+}
+
+// Two minutes of a G6 at 8 Hz, up to `until_s`, as the Plots panel is fed.
+void fill_plots(RunPlots& plots, double until_s) {
+  for (double t = until_s - 130.0; t <= until_s; t += 0.125) {
+    plots.add_lap({t, 8.0 + 0.05 * std::sin(t), 8.0, static_cast<std::size_t>(2200 + 40 * std::sin(3 * t))});
+    plots.add_latency_ms(15.0 + 5.0 * std::sin(7 * t), t);
+    plots.sample_counters({t, 40000.0 + 500.0 * std::sin(t), 0, 0, 0});
+  }
+}
+
+TEST(DrawDamage, LivePlotsRepeatWithinAPixelColumnAndMoveAWholeColumnAtATime) {
+  HeadlessImGui imgui(1280.0f, 800.0f);
+  UiModel m;
+  m.snap.state = LinkState::Scanning;
+  fill_plots(m.plots, 1000.0);
+  m.now_s = 1000.0;
+  m.show_sidebar_tab = static_cast<int>(SidebarTab::Statistics);
+  ViewSettings settings;
+  DrawDamage damage;
+  for (int frame = 0; frame < 3; ++frame) sidebar_frame(damage, m, settings);
+  ASSERT_EQ(settings.sidebar_tab, SidebarTab::Statistics);
+  // Two minutes over some 330 columns: a column is about a third of a second, so of ten frames
+  // a hundredth of a second apart at most one crosses into the next column.
+  int moved = 0;
+  for (int frame = 0; frame < 10; ++frame) {
+    m.now_s += 0.01;
+    const auto boxes = sidebar_frame(damage, m, settings);
+    ASSERT_TRUE(boxes);
+    moved += boxes->empty() ? 0 : 1;
+  }
+  EXPECT_LE(moved, 1) << "the plots moved by less than a pixel, yet were drawn otherwise";
+  m.now_s += 1.0;  // three columns on: the lines move, under the still frame and ticks
+  const auto boxes = sidebar_frame(damage, m, settings);
+  ASSERT_TRUE(boxes);
+  ASSERT_FALSE(boxes->empty());
+  for (const DisplayBox& box : *boxes) EXPECT_GT(box.y0, 300.0f) << "only the plots, under the Statistics panel";
 }
 
 TEST(DrawDamage, ADrawListMoreOrLessCannotBeComparedSoAllOfItChanged) {

@@ -110,5 +110,34 @@ TEST(PlotWindow, LiveZoomKeepsNowAtTheRightEdge) {
   EXPECT_FLOAT_EQ(x_at_time(85.0, 0.0f, 300.0f, s), 150.0f);
 }
 
+TEST(PlotWindow, WhatIsHeldIsShownInRoundSpansThatGrowInSteps) {
+  EXPECT_EQ(round_span_s(0.4), 2.0);
+  EXPECT_EQ(round_span_s(2.0), 2.0);
+  EXPECT_EQ(round_span_s(2.1), 3.0);
+  EXPECT_EQ(round_span_s(7.0), 8.0);
+  EXPECT_EQ(round_span_s(13.0), 15.0);
+  EXPECT_EQ(round_span_s(100.0), 100.0);
+  EXPECT_EQ(round_span_s(101.0), 200.0);
+}
+
+TEST(PlotWindow, ALiveSpanStepsByWholePixelColumns) {
+  const double column = 120.0 / 300.0;
+  const auto at = [&](double now) { return on_whole_columns({now - 120.0, now}, 300.0f); };
+  const PlotWindow::Span s = at(1000.05);
+  EXPECT_DOUBLE_EQ(s.end_s - s.start_s, 120.0) << "as wide as asked";
+  EXPECT_LE(s.end_s, 1000.05);
+  EXPECT_GT(s.end_s, 1000.05 - column);
+  // Within one column the span is the same to the bit, so a sample sits on the same x.
+  const PlotWindow::Span later = at(s.end_s + 0.3 * column);
+  EXPECT_EQ(later.start_s, s.start_s);
+  EXPECT_EQ(later.end_s, s.end_s);
+  EXPECT_EQ(x_at_time(950.0, 0.0f, 300.0f, later), x_at_time(950.0, 0.0f, 300.0f, s));
+  // A column on, everything moves one pixel to the left.
+  const PlotWindow::Span next = at(s.end_s + 1.2 * column);
+  EXPECT_NEAR(next.end_s - s.end_s, column, 1e-9);
+  EXPECT_NEAR(x_at_time(950.0, 0.0f, 300.0f, s) - x_at_time(950.0, 0.0f, 300.0f, next), 1.0f, 1e-3f);
+  EXPECT_EQ(on_whole_columns({10.0, 5.0}, 300.0f).end_s, 5.0) << "an empty span is left as it is";
+}
+
 }  // namespace
 }  // namespace ydscope::ui

@@ -42,7 +42,8 @@ void draw_plots_panel(const UiModel& m, PanelEdits& e) {
                                       : "wheel zooms, double-click shows all");
   const RunPlots& p = window.paused() ? e.paused_plots : m.plots;
   const double end_s = window.end_s(m.now_s);
-  const double held_s = std::clamp(p.held_s(end_s), PlotWindow::kMinSpanS, static_cast<double>(RunPlots::kSeconds));
+  const double held_s =
+      std::clamp(round_span_s(p.held_s(end_s)), PlotWindow::kMinSpanS, static_cast<double>(RunPlots::kSeconds));
   const TimeAxis axis{window.shown(m.now_s, held_s), end_s, &p.events()};
   const float h = ImGui::GetFontSize() * 2.9f;
 

@@ -108,17 +108,19 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   const ImVec2 top = ImGui::GetCursorScreenPos();
   const float width = std::max(ImGui::GetContentRegionAvail().x, 8.0f * font);
 
+  // The data area's edges first, since the span steps by its whole pixel columns; the value
+  // labels' column is one width for every plot, so their time axes line up.
+  char text[96];
+  const float label_w = ImGui::CalcTextSize("0000").x;
   Frame f;
-  f.span = axis.span;
-  const AxisRange seen = shown_values(series, axis.span);
+  f.lo = {top.x + label_w + 6.0f, top.y + line_h};
+  f.hi = {top.x + width - 2.0f, f.lo.y + spec.height};
+  f.span = on_whole_columns(axis.span, std::floor(f.hi.x - f.lo.x));
+  const double now_s = axis.now_s - (axis.span.end_s - f.span.end_s);  // moved with the span
+  const AxisRange seen = shown_values(series, f.span);
   f.values = value_range(seen.lo, seen.hi, spec.from_zero, spec.min_pad);
   const AxisTicks value_ticks =
       choose_ticks(f.values.lo, f.values.hi, std::max(2, static_cast<int>(spec.height / (font * 0.95f))));
-  // The value labels' column, one width for every plot, so their time axes line up.
-  char text[96];
-  const float label_w = ImGui::CalcTextSize("0000").x;
-  f.lo = {top.x + label_w + 6.0f, top.y + line_h};
-  f.hi = {top.x + width - 2.0f, f.lo.y + spec.height};
   const float total_h = line_h + spec.height + (spec.time_labels ? line_h : 4.0f);
   ImGui::InvisibleButton(spec.id, {width, total_h});
   const bool hovered = ImGui::IsItemHovered();
@@ -136,11 +138,11 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
     draw->AddText({f.lo.x - 4.0f - size.x, ty}, plot_palette::kTickText, text);
   }
   // The time axis: ticks counted back from now, labelled under the last plot of a group.
-  const AxisTicks time_ticks = choose_ticks(axis.span.start_s - axis.now_s, axis.span.end_s - axis.now_s,
+  const AxisTicks time_ticks = choose_ticks(f.span.start_s - now_s, f.span.end_s - now_s,
                                             std::max(2, static_cast<int>((f.hi.x - f.lo.x) / (font * 4.0f))));
   for (int k = 0; k < time_ticks.count; ++k) {
     const double ago = time_ticks.at[static_cast<std::size_t>(k)];
-    const float x = f.x(axis.now_s + ago);
+    const float x = f.x(now_s + ago);
     draw->AddLine({x, f.lo.y}, {x, f.hi.y}, plot_palette::kGrid);
     if (!spec.time_labels) continue;
     if (ago == 0.0)
@@ -167,7 +169,7 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   if (axis.events) {
     for (std::size_t i = 0; i < axis.events->size(); ++i) {
       const PlotEvent& e = axis.events->at(i);
-      if (e.time_s < axis.span.start_s || e.time_s > axis.span.end_s) continue;
+      if (e.time_s < f.span.start_s || e.time_s > f.span.end_s) continue;
       const float x = f.x(e.time_s);
       draw->AddLine({x, f.lo.y}, {x, f.hi.y}, plot_event_colour(e.kind), 2.0f);
       draw->AddTriangleFilled({x - 4.0f, f.hi.y}, {x + 4.0f, f.hi.y}, {x, f.hi.y - 6.0f}, plot_event_colour(e.kind));
@@ -187,10 +189,10 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
   };
   std::optional<double> pointer_time;
   if (hovered && mouse.x >= f.lo.x && mouse.x <= f.hi.x) {
-    const double t = time_at_x(mouse.x, f.lo.x, f.hi.x, axis.span);
+    const double t = time_at_x(mouse.x, f.lo.x, f.hi.x, f.span);
     pointer_time = t;
     draw->AddLine({mouse.x, f.lo.y}, {mouse.x, f.hi.y}, plot_palette::kCursor);
-    const double gap = std::max((axis.span.end_s - axis.span.start_s) * 0.03, 0.6);
+    const double gap = std::max((f.span.end_s - f.span.start_s) * 0.03, 0.6);
     for (const PlotSeries& s : series) {
       const auto r = read_at(*s.times, *s.values, t, gap);
       if (!r) continue;
@@ -199,7 +201,7 @@ std::optional<double> draw_time_plot(const TimePlotSpec& spec, std::span<const P
       std::snprintf(value, sizeof value, spec.format, static_cast<double>(r->value));
       append(series.size() > 1 && s.name[0] ? "%s %s  " : "%s%s  ", s.name, value);
     }
-    append("at %.1f s", t - axis.now_s);
+    append("at %.1f s", t - now_s);
     if (event_under) append(", %s", plot_event_name(event_under->kind));
   } else {
     for (const PlotSeries& s : series) {

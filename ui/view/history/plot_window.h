@@ -35,6 +35,16 @@ class PlotWindow {
   double end_offset_s_ = 0.0;     // paused: the right edge this far before the pause
 };
 
+// The data held, shown in a span of round seconds (2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 25, 30, 40,
+// 50, 60, 80, 100, then whole hundreds): while a run starts the plots' scale grows in steps, not
+// at every frame.
+double round_span_s(double held_s);
+
+// `span` moved back to the last whole one of `columns` pixel columns, each (end - start) / columns
+// long: live, a plot then moves a whole column at a time, and between two steps it draws just as
+// in the frame before (on a software renderer a frame that repeats the last is not drawn again).
+PlotWindow::Span on_whole_columns(PlotWindow::Span span, float columns);
+
 // The pointer's x between the plot's left `x0` and right `x1` edges as a time in `span`, and back.
 double time_at_x(float x, float x0, float x1, PlotWindow::Span span);
 float x_at_time(double t_s, float x0, float x1, PlotWindow::Span span);
