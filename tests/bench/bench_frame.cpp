@@ -15,6 +15,7 @@
 #include "ui/view/geometry/grid_geometry.h"
 #include "ui/view/geometry/grid_layout.h"
 #include "ui/view/scene/lap_history.h"
+#include "ui/view/scene/pixel_merge.h"
 #include "ui/view/scene/point_cloud.h"
 
 namespace {
@@ -108,6 +109,31 @@ void BM_FadeCloud(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_FadeCloud)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
+
+// What a lap costs the pixel merge: every point put in its pixel's stack again (the grouping),
+// then the stacks laid. Two clouds of different laps alternate, so each iteration groups anew; the
+// copy of the cloud the merge replaces is counted too.
+void BM_PixelMergeGrouping(benchmark::State& state) {
+  const auto points = static_cast<std::size_t>(state.range(0));
+  FadingCloud clouds[2];
+  for (std::uint64_t k = 0; k < 2; ++k) {
+    LapHistory history;
+    history.set_depth(10);
+    for (std::uint64_t i = 0; i < 10; ++i) history.push(make_lap(points / 10, i + k * 10));
+    build_point_cloud(history, ColourParams{}, InterferenceSettings{}, clouds[k]);
+  }
+  const float cell_mm = 1.0f / make_view().px_per_mm();
+  PixelMerger merger;
+  std::vector<PointVertex> vertices;
+  std::size_t which = 0;
+  for (auto _ : state) {
+    vertices = clouds[which ^= 1].vertices;
+    merger.merge(vertices, cell_mm);
+    benchmark::DoNotOptimize(vertices.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_PixelMergeGrouping)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
 
 // Motion highlighting's share: the cloud built in motion colours against a learned room, and the
 // learning itself, once per lap.

@@ -32,7 +32,9 @@ bool PixelMerger::same_points(const std::vector<PointVertex>& points, float cell
 // The slot of `key`'s cell, made (at x, y) if this grouping has not seen the cell yet.
 std::uint32_t PixelMerger::slot_for(std::uint64_t key, float x, float y) {
   const std::size_t mask = table_.size() - 1;
-  std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+  // Fibonacci hashing: the product's top bits, where every bit of both coordinates has a say. (Its
+  // middle bits had left a row of cells along a wall to share a few buckets and probe on.)
+  std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> table_shift_);
   for (;; i = (i + 1) & mask) {
     Cell& cell = table_[i];
     if (cell.round != round_) {
@@ -49,6 +51,7 @@ void PixelMerger::group(const std::vector<PointVertex>& points, float cell_mm) {
   const std::size_t size = std::bit_ceil(points.size() * 2);  // at most half full: short probes
   if (table_.size() < size) {
     table_.assign(size, {});
+    table_shift_ = 64 - std::countr_zero(size);
     round_ = 0;
   }
   if (++round_ == 0) {  // wrapped: every old stamp could read as this grouping's

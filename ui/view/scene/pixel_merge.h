@@ -49,6 +49,7 @@ class PixelMerger {
   static PointVertex sprite_of(const Slot& slot);
 
   std::vector<Cell> table_;
+  int table_shift_ = 64;  // 64 - log2 of the table's size
   std::uint32_t round_ = 0;
   // The grouping of the points last merged: their positions, each one's slot, the cell size.
   std::vector<float> positions_;
