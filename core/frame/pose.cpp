@@ -37,23 +37,32 @@ CommonPoint laser_point(const LapPoint& point) {
 
 CommonPoint Pose::to_common(const LapPoint& point) const { return to_common(laser_point(point)); }
 
-CommonPoint Pose::to_common(CommonPoint laser) const {
+PosedFrame::PosedFrame(const Pose& pose)
+    : offset_cos_(std::cos(radians(pose.angle_offset_deg))),
+      offset_sin_(std::sin(radians(pose.angle_offset_deg))),
+      yaw_cos_(std::cos(radians(pose.yaw_deg))),
+      yaw_sin_(std::sin(radians(pose.yaw_deg))),
+      x_mm_(pose.x_m * 1000.0),
+      y_mm_(pose.y_m * 1000.0),
+      upside_down_(pose.upside_down) {}
+
+CommonPoint PosedFrame::to_common(CommonPoint laser) const {
   // The offset adds to the unit's clockwise angles: a turn by -offset in the laser frame.
-  const double oc = std::cos(radians(angle_offset_deg));
-  const double os = std::sin(radians(angle_offset_deg));
-  const double ox = laser.x_mm * oc + laser.y_mm * os;
-  const double oy = -laser.x_mm * os + laser.y_mm * oc;
+  const double ox = laser.x_mm * offset_cos_ + laser.y_mm * offset_sin_;
+  const double oy = -laser.x_mm * offset_sin_ + laser.y_mm * offset_cos_;
   // The upside-down mount rolls about the laser's x axis: y -> -y (a -> 360 - a).
   const double lx = ox;
-  const double ly = upside_down ? -oy : oy;
-  const double c = std::cos(radians(yaw_deg));
-  const double s = std::sin(radians(yaw_deg));
-  return {static_cast<float>(lx * c - ly * s + x_m * 1000.0), static_cast<float>(lx * s + ly * c + y_m * 1000.0)};
+  const double ly = upside_down_ ? -oy : oy;
+  return {static_cast<float>(lx * yaw_cos_ - ly * yaw_sin_ + x_mm_),
+          static_cast<float>(lx * yaw_sin_ + ly * yaw_cos_ + y_mm_)};
 }
 
+CommonPoint Pose::to_common(CommonPoint laser) const { return PosedFrame(*this).to_common(laser); }
+
 void Pose::to_common(const Lap& lap, std::vector<CommonPoint>& out) const {
+  const PosedFrame frame(*this);
   out.resize(lap.points.size());
-  for (std::size_t i = 0; i < lap.points.size(); ++i) out[i] = to_common(lap.points[i]);
+  for (std::size_t i = 0; i < lap.points.size(); ++i) out[i] = frame.to_common(laser_point(lap.points[i]));
 }
 
 CommonPoint Pose::to_laser(CommonPoint common) const {

@@ -59,6 +59,19 @@ struct Pose {
   friend bool operator==(const Pose&, const Pose&) = default;
 };
 
+// A pose with its turns worked out once, for placing many points: Pose::to_common works out the
+// sines and cosines of the yaw and the angle offset again at each point (with eight lidars,
+// posing their clouds was a fifth of the app's main thread). Gives what Pose::to_common gives.
+class PosedFrame {
+ public:
+  explicit PosedFrame(const Pose& pose);
+  CommonPoint to_common(CommonPoint laser) const;
+
+ private:
+  double offset_cos_, offset_sin_, yaw_cos_, yaw_sin_, x_mm_, y_mm_;
+  bool upside_down_;
+};
+
 // Parses the text form. Empty plus one sentence in `error` that says what was wrong.
 std::optional<Pose> parse_pose(std::string_view text, std::string& error);
 // The text form again; parse_pose(format_pose(p)) == p.

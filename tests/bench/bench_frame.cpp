@@ -16,6 +16,7 @@
 #include "ui/view/geometry/grid_layout.h"
 #include "ui/view/scene/lap_history.h"
 #include "ui/view/scene/pixel_merge.h"
+#include "ui/view/scene/source_cloud.h"
 #include "ui/view/scene/point_cloud.h"
 
 namespace {
@@ -93,6 +94,22 @@ void BM_BuildCloud(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_BuildCloud)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
+
+// A lidar of several: its layer's cloud built and posed (3 m out, turned), as each of its laps asks.
+void BM_BuildPosedLayer(benchmark::State& state) {
+  LapHistory history;
+  fill_history(history, static_cast<std::size_t>(state.range(0)));
+  SourceLayer layer;
+  layer.history = &history;
+  layer.pose = {3.0, -1.5, 120.0, false, 2.0};
+  FadingCloud cloud;
+  for (auto _ : state) {
+    build_layer_cloud(layer, ColourParams{}, InterferenceSettings{}, cloud);
+    benchmark::DoNotOptimize(cloud.vertices.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_BuildPosedLayer)->Arg(20000)->Unit(benchmark::kMillisecond);
 
 // What a frame between laps pays: the cloud built once, faded again for a new phase.
 void BM_FadeCloud(benchmark::State& state) {

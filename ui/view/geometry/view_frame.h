@@ -13,6 +13,7 @@ inline CommonPoint common_of(Vec2 world) { return {world.y, -world.x}; }
 
 // A point of a lone lidar's picture (its laser frame, drawn as polar_to_world draws it) where
 // `pose` puts it in the common frame's picture.
-inline Vec2 posed_in_view(const Pose& pose, Vec2 lone) { return view_of(pose.to_common(common_of(lone))); }
+inline Vec2 posed_in_view(const PosedFrame& frame, Vec2 lone) { return view_of(frame.to_common(common_of(lone))); }
+inline Vec2 posed_in_view(const Pose& pose, Vec2 lone) { return posed_in_view(PosedFrame(pose), lone); }
 
 }  // namespace ydscope::ui

@@ -20,11 +20,12 @@ PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& 
   // add back up to nearly full brightness (255 fell only to 221). The fade dims the alpha.
   const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
   const auto dimmed = [strength](std::uint8_t channel) { return scale_byte(channel, strength); };
+  const PosedFrame frame(layer.pose);
   for (FadeRun& run : cloud.runs) {
     run.strength = strength;
     for (std::uint32_t i = run.begin; i < run.end; ++i) {
       PointVertex& v = cloud.vertices[i];
-      const Vec2 posed = posed_in_view(layer.pose, {v.x, v.y});
+      const Vec2 posed = posed_in_view(frame, {v.x, v.y});
       v.x = posed.x;
       v.y = posed.y;
       // The lap's fade stays in the alpha; the hue says whose point it is.
