@@ -48,8 +48,9 @@ std::vector<LapPoint> steady_points(std::span<const Lap> laps, const SteadyCloud
 std::vector<Point2> to_common(std::span<const LapPoint> points, const Pose& pose) {
   std::vector<Point2> out;
   out.reserve(points.size());
+  const PosedFrame frame(pose);
   for (const LapPoint& p : points) {
-    const CommonPoint c = pose.to_common(p);
+    const CommonPoint c = frame.to_common(p);
     out.push_back({c.x_mm, c.y_mm});
   }
   return out;

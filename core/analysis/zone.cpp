@@ -82,7 +82,7 @@ std::optional<std::vector<CommonPoint>> parse_corners(std::string_view text, std
 
 const char* zone_rule_name(ZoneRule rule) { return rule == ZoneRule::Empty ? "empty" : "enter"; }
 
-bool Zone::contains(const LapPoint& point, const Pose& pose) const {
+bool Zone::contains(const LapPoint& point, const PosedFrame& pose) const {
   if (point.range_mm <= 0.0f) return false;
   if (sector) return sector->contains(point);
   return inside_polygon(polygon, pose.to_common(point));

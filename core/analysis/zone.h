@@ -30,7 +30,7 @@ struct Zone {
   ZoneRule rule = ZoneRule::Enter;
 
   // A return of the lidar posed at `pose` lies in the zone (points without a return never do).
-  bool contains(const LapPoint& point, const Pose& pose) const;
+  bool contains(const LapPoint& point, const PosedFrame& pose) const;
 };
 
 // Parses the text form above. Empty plus one sentence in `error` that says what was wrong.

@@ -25,10 +25,11 @@ const std::vector<ZoneEvent>& ZoneWatch::add_lap(const Lap& lap) {
   const std::int64_t t = lap.last_rx_ns;
   const bool first = newest_ns_ == 0;
   newest_ns_ = t;
+  const PosedFrame posed(pose_);  // its turns once a lap, not at each point of each zone
   for (std::size_t z = 0; z < zones_.size(); ++z) {
     ZoneState& s = states_[z];
     s.points = 0;
-    for (const LapPoint& p : lap.points) s.points += zones_[z].contains(p, pose_) ? 1 : 0;
+    for (const LapPoint& p : lap.points) s.points += zones_[z].contains(p, posed) ? 1 : 0;
     if (first) s.since_ns = t;
     if (s.points >= kZoneMinPoints) {
       quiet_laps_[z] = 0;

@@ -62,7 +62,7 @@ CommonPoint Pose::to_common(CommonPoint laser) const { return PosedFrame(*this).
 void Pose::to_common(const Lap& lap, std::vector<CommonPoint>& out) const {
   const PosedFrame frame(*this);
   out.resize(lap.points.size());
-  for (std::size_t i = 0; i < lap.points.size(); ++i) out[i] = frame.to_common(laser_point(lap.points[i]));
+  for (std::size_t i = 0; i < lap.points.size(); ++i) out[i] = frame.to_common(lap.points[i]);
 }
 
 CommonPoint Pose::to_laser(CommonPoint common) const {

@@ -60,11 +60,12 @@ struct Pose {
 };
 
 // A pose with its turns worked out once, for placing many points: Pose::to_common works out the
-// sines and cosines of the yaw and the angle offset again at each point (with eight lidars,
-// posing their clouds was a fifth of the app's main thread). Gives what Pose::to_common gives.
+// sines and cosines of the yaw and the angle offset again at each point (with eight lidars, sines
+// and cosines were about a tenth of the app's main thread). Gives what Pose::to_common gives.
 class PosedFrame {
  public:
   explicit PosedFrame(const Pose& pose);
+  CommonPoint to_common(const LapPoint& point) const { return to_common(laser_point(point)); }
   CommonPoint to_common(CommonPoint laser) const;
 
  private:
