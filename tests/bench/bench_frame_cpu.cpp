@@ -27,6 +27,7 @@
 
 #include "tests/bench/bench_options.h"
 #include "tests/bench/process_probe.h"
+#include "ui/view/settings/sidebar_tab.h"
 
 namespace fs = std::filesystem;
 using namespace ydscope::bench;
@@ -69,8 +70,7 @@ int main(int argc, char** argv) {
   options.parse(argc, argv);
   if (seconds < 1) options.fail("needs --seconds of 1 or more");
   if (scene != "demo" && scene != "room" && scene != "booth") options.fail("knows the scenes demo, room and booth");
-  if (tab != "lidar" && tab != "view" && tab != "statistics" && tab != "sources")
-    options.fail("knows the tabs lidar, view, statistics and sources");
+  if (!ydscope::ui::sidebar_tab_from_word(tab)) options.fail("knows the tabs lidar, view, statistics and sources");
   if (warm_up < 0) options.fail("needs --warm-up of 0 or more");
   if (cases != "all" && cases != "smooth") options.fail("knows the cases all and smooth");
   const auto binaries = find_app_binaries("bench_frame_cpu");

@@ -154,7 +154,10 @@ ViewSettings parse_settings(const std::string& text, std::vector<std::string>* n
       else if (notes)
         notes->push_back("booth_figure = " + value + " is left out: it takes none, visitors or nearest");
     } else if (key == "sidebar_tab") {
-      if (const auto tab = sidebar_tab_from_word(value)) s.sidebar_tab = *tab;
+      if (const auto tab = sidebar_tab_from_word(value))
+        s.sidebar_tab = *tab;
+      else if (notes)
+        notes->push_back("sidebar_tab = " + value + " is left out: it takes lidar, view, statistics or sources");
     } else if (key == "last_replay_file") {
       s.last_replay_file = value;
     } else if (key == "last_sources") {
