@@ -77,10 +77,11 @@ ViewTransform make_view() {
   return view;
 }
 
-// `points` in total spread over 10 laps of persistence, as the app shows them.
-void fill_history(LapHistory& history, std::size_t points) {
+// `points` in total spread over 10 laps of persistence, as the app shows them, the first of index
+// `first_lap` (laps of other indices land a little apart).
+void fill_history(LapHistory& history, std::size_t points, std::uint64_t first_lap = 0) {
   history.set_depth(10);
-  for (std::uint64_t i = 0; i < 10; ++i) history.push(make_lap(points / 10, i));
+  for (std::uint64_t i = 0; i < 10; ++i) history.push(make_lap(points / 10, first_lap + i));
 }
 
 void BM_BuildCloud(benchmark::State& state) {
@@ -131,12 +132,10 @@ BENCHMARK(BM_FadeCloud)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
 // then the stacks laid. Two clouds of different laps alternate, so each iteration groups anew; the
 // copy of the cloud the merge replaces is counted too.
 void BM_PixelMergeGrouping(benchmark::State& state) {
-  const auto points = static_cast<std::size_t>(state.range(0));
   FadingCloud clouds[2];
   for (std::uint64_t k = 0; k < 2; ++k) {
     LapHistory history;
-    history.set_depth(10);
-    for (std::uint64_t i = 0; i < 10; ++i) history.push(make_lap(points / 10, i + k * 10));
+    fill_history(history, static_cast<std::size_t>(state.range(0)), k * 10);
     build_point_cloud(history, ColourParams{}, InterferenceSettings{}, clouds[k]);
   }
   const float cell_mm = 1.0f / make_view().px_per_mm();
