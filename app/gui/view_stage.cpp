@@ -114,25 +114,50 @@ std::uint64_t ViewStage::gl_generation() const {
   return generation;
 }
 
+bool ViewStage::DrawnGl::points_only_changed_to(const DrawnGl& now) const {
+  return !split && !now.split && grid_generation == now.grid_generation && grid == now.grid &&
+         point_size_px == now.point_size_px;
+}
+
+std::vector<ui::DisplayBox> ViewStage::points_changed_in(const ui::DisplayBox& view) const {
+  // Past this many boxes the tiles are made coarser: each box is a clear and a scissor for every
+  // ImGui command reaching it, and the grid's picture is laid in all of them in one pass.
+  constexpr std::size_t kMaxBoxes = 32;
+  ui::TileCover both = view_->sprite_cover();
+  if (!both.unite(drawn_cover_)) return {view};
+  std::vector<ui::DisplayBox> boxes = ui::covering_boxes(both, kMaxBoxes);
+  for (ui::DisplayBox& box : boxes) box = box.intersected(view);
+  return boxes;
+}
+
 ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, float fb_scale, int fb_w, int fb_h,
                                             bool must_draw, bool partial) {
   ImDrawData& data = *ImGui::GetDrawData();
   const std::optional<std::vector<ui::DisplayBox>> imgui_changed = damage_.update(data);
   const DrawnLayout layout{fb_w, fb_h, fb_scale, sidebar_px_};
-  const DrawnGl gl{gl_generation(), settings.show_grid, settings.point_size_px};
+  const DrawnGl gl{gl_generation(), view_->grid_generation(), split_, settings.show_grid, settings.point_size_px};
   const bool relaid = !(layout == drawn_layout_);
   const bool gl_changed = !(gl == drawn_gl_);
+  const bool points_only = gl_changed && drawn_gl_.points_only_changed_to(gl);
   drawn_layout_ = layout;
   drawn_gl_ = gl;
   const ui::DisplayBox window{0.0f, 0.0f, static_cast<float>(fb_w) / fb_scale, static_cast<float>(fb_h) / fb_scale};
   const ui::DisplayBox view{std::floor(sidebar_px_), 0.0f, window.x1, window.y1};
+  // Where the view changed: where its points were and are when only they changed (their fade, a
+  // lap), else all of it. Either holds every point drawn now or last time.
+  std::vector<ui::DisplayBox> view_changed;
+  if (points_only)
+    view_changed = points_changed_in(view);
+  else if (gl_changed)
+    view_changed.push_back(view);
+  drawn_cover_ = view_->sprite_cover();
   // The whole window when it cannot be drawn in parts: a swap, a new layout, a frame that cannot
   // be compared with the last, a scale whose pixels the backend's scissors would round past.
   std::vector<ui::DisplayBox> boxes;
   if (must_draw || relaid || !imgui_changed || !partial || fb_scale != 1.0f) {
     if (must_draw || relaid || !imgui_changed || gl_changed || !imgui_changed->empty()) boxes.push_back(window);
   } else {
-    if (gl_changed) boxes.push_back(view);
+    boxes = std::move(view_changed);
     for (const ui::DisplayBox& box : *imgui_changed) boxes.push_back(box.intersected(window));
     boxes = ui::merged_boxes(std::move(boxes));
     float area = 0.0f;
@@ -143,40 +168,90 @@ ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, fl
   }
   ui::DrawnFrame drawn;
   drawn.whole = boxes.size() == 1 && boxes.front() == window;
-  for (const ui::DisplayBox& box : boxes) {
-    const ui::PixelBox pixels = draw_within(box, view, settings, fb_scale, fb_h);
-    if (!drawn.whole) drawn.boxes.push_back(pixels);
-  }
+  BoxPlan plan;
+  plan.points_once = drawn.whole || gl_changed;
+  // The grid's picture is drawn again only for a frame of points; a zoom draws its grid whole.
+  plan.backdrop =
+      !drawn.whole && !split_ && (points_only || backdrop_holds_ == backdrop_key(settings, view, fb_w, fb_h));
+  std::vector<ui::PixelBox> pixels = draw_boxes(boxes, view, plan, settings, fb_scale, fb_w, fb_h);
+  if (!drawn.whole) drawn.boxes = std::move(pixels);
   return drawn;
 }
 
-ui::PixelBox ViewStage::draw_within(const ui::DisplayBox& box, const ui::DisplayBox& view,
-                                    const ui::ViewSettings& settings, float fb_scale, int fb_h) {
+ViewStage::BackdropKey ViewStage::backdrop_key(const ui::ViewSettings& settings, const ui::DisplayBox& view, int fb_w,
+                                               int fb_h) const {
+  return {view_->grid_generation(), settings.show_grid, fb_w, fb_h, view};
+}
+
+std::vector<ui::PixelBox> ViewStage::draw_boxes(std::span<const ui::DisplayBox> boxes, const ui::DisplayBox& view,
+                                                const BoxPlan& plan, const ui::ViewSettings& settings, float fb_scale,
+                                                int fb_w, int fb_h) {
   const auto scissor = [](const ui::PixelBox& p) { glScissor(p.x, p.y, p.width, p.height); };
-  const ui::PixelBox pixels = ui::to_pixels(box, fb_scale, fb_h);
-  glEnable(GL_SCISSOR_TEST);
-  scissor(pixels);
-  glClearColor(ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]);
-  glClear(GL_COLOR_BUFFER_BIT);
-  // The sidebar's background, cleared rather than blended by ImGui: far cheaper in software.
-  if (const ui::PixelBox sidebar = ui::to_pixels(box.intersected({0.0f, 0.0f, view.x0, view.y1}), fb_scale, fb_h);
-      !sidebar.empty()) {
-    const std::array<float, 4> fill = ui::sidebar_background();
-    scissor(sidebar);
-    glClearColor(fill[0], fill[1], fill[2], fill[3]);
-    glClear(GL_COLOR_BUFFER_BIT);
-  }
-  // The GL layer stays in the view: a point at its edge does not spill onto the panels.
-  if (const ui::PixelBox in_view = ui::to_pixels(box.intersected(view), fb_scale, fb_h); !in_view.empty()) {
-    scissor(in_view);
+  const auto draw_gl = [&](ui::GlLayer layer) {
     if (split_) {
-      for (const auto& tile : tiles_) tile->draw_gl(settings, fb_scale, fb_h);
+      for (const auto& tile : tiles_) tile->draw_gl(settings, fb_scale, fb_h, layer);
     } else {
-      view_->draw_gl(settings, fb_scale, fb_h);
+      view_->draw_gl(settings, fb_scale, fb_h, layer);
+    }
+  };
+  const auto clear = [&](const ui::PixelBox& p, const std::array<float, 4>& colour) {
+    scissor(p);
+    glClearColor(colour[0], colour[1], colour[2], colour[3]);
+    glClear(GL_COLOR_BUFFER_BIT);
+  };
+  const std::array<float, 4> background{ui::kBackground[0], ui::kBackground[1], ui::kBackground[2], ui::kBackground[3]};
+  if (plan.backdrop) {
+    if (!backdrop_) backdrop_ = std::make_unique<ui::BackdropPicture>();
+    if (const BackdropKey key = backdrop_key(settings, view, fb_w, fb_h); !(backdrop_holds_ == key)) {
+      backdrop_->begin(fb_w, fb_h);
+      glEnable(GL_SCISSOR_TEST);
+      clear(ui::to_pixels(view, fb_scale, fb_h), background);
+      draw_gl(ui::GlLayer::grid);
+      glDisable(GL_SCISSOR_TEST);
+      backdrop_->end();
+      backdrop_holds_ = key;
     }
   }
+  std::vector<ui::PixelBox> pixels, in_view;
+  for (const ui::DisplayBox& box : boxes) {
+    pixels.push_back(ui::to_pixels(box, fb_scale, fb_h));
+    in_view.push_back(ui::to_pixels(box.intersected(view), fb_scale, fb_h));
+  }
+  glEnable(GL_SCISSOR_TEST);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    // The view's part of a box is the backdrop's, when it is laid.
+    if (!plan.backdrop || !(pixels[i] == in_view[i])) clear(pixels[i], background);
+    // The sidebar's background, cleared rather than blended by ImGui: far cheaper in software.
+    if (const ui::PixelBox sidebar =
+            ui::to_pixels(boxes[i].intersected({0.0f, 0.0f, view.x0, view.y1}), fb_scale, fb_h);
+        !sidebar.empty())
+      clear(sidebar, ui::sidebar_background());
+  }
+  // The GL layer stays in the view: a point at its edge does not spill onto the panels.
+  if (plan.backdrop) {
+    backdrop_->lay(in_view);
+    glEnable(GL_SCISSOR_TEST);
+  } else {
+    for (const ui::PixelBox& part : in_view)
+      if (!part.empty()) {
+        scissor(part);
+        draw_gl(ui::GlLayer::grid);
+      }
+  }
+  if (plan.points_once && !boxes.empty()) {
+    // Every point lies in the boxes, so one pass over the view draws each box's and nothing
+    // else: the points go through the pipeline once, not once a box.
+    scissor(ui::to_pixels(view, fb_scale, fb_h));
+    draw_gl(ui::GlLayer::points);
+  } else {
+    for (const ui::PixelBox& part : in_view)
+      if (!part.empty()) {
+        scissor(part);
+        draw_gl(ui::GlLayer::points);
+      }
+  }
   glDisable(GL_SCISSOR_TEST);
-  ui::render_imgui_within(*ImGui::GetDrawData(), box);
+  ui::render_imgui_within(*ImGui::GetDrawData(), boxes);
   return pixels;
 }
 

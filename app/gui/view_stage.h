@@ -4,14 +4,17 @@
 // a view of its own. Laid out every frame; drawn with GL only when the picture would change.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
 
 #include "app/gui/source_list.h"
+#include "ui/render/backdrop_picture.h"
 #include "ui/render/draw_damage.h"
 #include "ui/render/screen_boxes.h"
 #include "ui/render/polar_view.h"
+#include "ui/render/tile_cover.h"
 #include "ui/view/settings/settings.h"
 
 namespace ydscope::gui {
@@ -55,9 +58,15 @@ class ViewStage {
   std::span<const ui::SourceLayer> layers_of(const SourceList& sources);
   // Changes whenever the GL layer of the view (or of the split view's tiles) would draw otherwise.
   std::uint64_t gl_generation() const;
-  // Clears `box` and draws in it the GL layer (inside `view`) and ImGui's draw data; its pixels.
-  ui::PixelBox draw_within(const ui::DisplayBox& box, const ui::DisplayBox& view, const ui::ViewSettings& settings,
-                           float framebuffer_scale, int framebuffer_height);
+  // How a frame's boxes are drawn.
+  struct BoxPlan {
+    bool points_once = false;  // every point lies inside the boxes: drawn in one pass over the view
+    bool backdrop = false;     // the view's parts laid from the grid's picture, not cleared and drawn
+  };
+  // Clears each box and draws in it the GL layers (inside `view`) and ImGui's draw data; their pixels.
+  std::vector<ui::PixelBox> draw_boxes(std::span<const ui::DisplayBox> boxes, const ui::DisplayBox& view,
+                                       const BoxPlan& plan, const ui::ViewSettings& settings, float framebuffer_scale,
+                                       int framebuffer_width, int framebuffer_height);
 
   bool interactive_;
   std::unique_ptr<ui::PolarView> view_;
@@ -74,12 +83,31 @@ class ViewStage {
   };
   struct DrawnGl {
     std::uint64_t generation = 0;
+    std::uint64_t grid_generation = 0;  // the common view's; the split view's tiles are drawn whole
+    bool split = false;
     bool grid = false;
     float point_size_px = 0.0f;
     friend bool operator==(const DrawnGl&, const DrawnGl&) = default;
+    // `now` differs from this only in the common view's points: the rest of it is as drawn.
+    bool points_only_changed_to(const DrawnGl& now) const;
   };
+  // The parts of `view` a frame whose points alone changed draws again: where they were and are.
+  std::vector<ui::DisplayBox> points_changed_in(const ui::DisplayBox& view) const;
+  // What the grid's picture is drawn for: the view's framing, the grid shown, the window.
+  struct BackdropKey {
+    std::uint64_t grid_generation = 0;
+    bool grid = false;
+    int width = 0, height = 0;
+    ui::DisplayBox view;
+    friend bool operator==(const BackdropKey&, const BackdropKey&) = default;
+  };
+  BackdropKey backdrop_key(const ui::ViewSettings& settings, const ui::DisplayBox& view, int framebuffer_width,
+                           int framebuffer_height) const;
   DrawnLayout drawn_layout_;
   DrawnGl drawn_gl_;
+  ui::TileCover drawn_cover_;                      // where the common view's points were in the last frame drawn
+  std::unique_ptr<ui::BackdropPicture> backdrop_;  // made the first time a frame of points lays it
+  std::optional<BackdropKey> backdrop_holds_;
   ui::DrawDamage damage_;  // where ImGui's picture changed since the last frame
 };
 

@@ -203,7 +203,7 @@ void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
     glClearColor(0.03f, 0.04f, 0.06f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     g.renderer->upload_points(cloud);
-    g.renderer->draw(view, style, 1.0f, kHeight);
+    for (const GlLayer layer : {GlLayer::grid, GlLayer::points}) g.renderer->draw(view, style, 1.0f, kHeight, layer);
     glFinish();
   }
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);

@@ -5,6 +5,8 @@
 // are there and match the app's own picture of them, and the view on screen keeps moving.
 #include <gtest/gtest.h>
 
+#include <X11/keysym.h>
+
 #include <cstdlib>
 #include <thread>
 
@@ -75,6 +77,50 @@ TEST_F(AppOnScreen, ThePanelsDrawnOnceStayRightOnScreenWhileTheViewMoves) {
       points_on_screen += is_point_pixel(&screen[(static_cast<std::size_t>(y) * width + x) * 3]);
   EXPECT_GT(points_on_screen, 300) << "the scan is not on screen";
   EXPECT_GT(pixels_apart(screen.data(), later.data(), width, view), 300) << "the view on screen stood still";
+
+  EXPECT_EQ(stop_process(app, SIGTERM), 0);
+  if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);
+}
+
+// Between two laps only the boxes round the points are drawn again (where they were and where they
+// are), over the last picture, with the grid laid from a picture of its own. A point left behind,
+// a box of grid missing or a box drawn twice would stay on screen. After seconds of the demo
+// scene (every lap's points land elsewhere) drawn in parts, the view is paused: what the X server
+// then shows must be what the app draws whole.
+TEST_F(AppOnScreen, AViewDrawnInPartsIsTheViewDrawnWhole) {
+  X11Hands& hands = this->hands();
+  const std::filesystem::path dir = fresh_temp_dir("ydscope-in-parts");
+  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6"});
+  ASSERT_TRUE(hands.find_window("ydscope", std::chrono::seconds(30))) << "no ydscope window appeared";
+  std::set<std::string> seen;
+  const int points = screenshot_until(
+      app, dir, seen,
+      [](const Image& image) {
+        return count_pixels(image, {kViewLeft, 0, image.width, image.height}, is_point_pixel);
+      },
+      [](int n) { return n > 300; }, std::chrono::seconds(30));
+  ASSERT_GT(points, 300) << "the view never showed the virtual lidar's scan";
+  const Image first = screenshot_of(app, dir, seen);
+  ASSERT_TRUE(first);
+  const int width = first.width, height = first.height;
+  // Three seconds of laps and fades drawn in parts, then P: the laps stop and the fade settles.
+  std::this_thread::sleep_for(std::chrono::seconds(3));
+  hands.tap(XK_p, 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  const std::vector<unsigned char> screen = hands.look_at_screen(width, height);
+  const Image whole = screenshot_of(app, dir, seen);
+  ASSERT_EQ(screen.size(), static_cast<std::size_t>(width) * height * 3) << "the X server gave no picture";
+  ASSERT_TRUE(whole);
+
+  // The status line at the view's foot reads the clock ("last lap ... ago"); the rest must agree.
+  const Rect view{kViewLeft, 0, width, height - 60};
+  int points_on_screen = 0;
+  for (int y = view.y0; y < view.y1; ++y)
+    for (int x = view.x0; x < view.x1; ++x)
+      points_on_screen += is_point_pixel(&screen[(static_cast<std::size_t>(y) * width + x) * 3]);
+  EXPECT_GT(points_on_screen, 300) << "the scan is not on screen";
+  EXPECT_LT(pixels_apart(screen.data(), whole.pixels.get(), width, view), 20)
+      << "the view drawn in parts is not the view drawn whole";
 
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
   if (!HasFailure() && !std::getenv("YDSCOPE_KEEP_TEST_PNGS")) std::filesystem::remove_all(dir);

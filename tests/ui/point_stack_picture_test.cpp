@@ -38,7 +38,7 @@ class PointStackPicture : public testing::Test {
     PolarStyle style;
     style.point_size_px = size_px;
     style.show_grid = false;
-    renderer.draw(view_, style, 1.0f, kSide);
+    renderer.draw(view_, style, 1.0f, kSide, GlLayer::points);
     return gl_->picture();
   }
 

@@ -1,14 +1,19 @@
 #pragma once
-// Renders ImGui's draw data inside one box of the window only. Every command's clip rectangle is
-// cut to the box for the call (then put back), so the backend's scissor never reaches a pixel the
-// caller did not clear, and commands wholly outside are skipped. With a box of whole pixels at a
-// framebuffer scale of 1 the scissors stay inside it exactly.
+// Renders ImGui's draw data inside some boxes of the window only. For the call each command is
+// repeated once a box, its clip rectangle cut to that box (then the lists are put back), so the
+// backend's scissor never reaches a pixel the caller did not clear, parts outside every box are
+// skipped, and the draw data is uploaded once however many boxes there are. With boxes of whole
+// pixels at a framebuffer scale of 1 the scissors stay inside them exactly. The boxes must not
+// overlap: a pixel in two would be drawn twice.
+#include <span>
+
 #include <imgui.h>
 
 #include "ui/render/screen_boxes.h"
 
 namespace ydscope::ui {
 
-void render_imgui_within(ImDrawData& data, const DisplayBox& box);
+void render_imgui_within(ImDrawData& data, std::span<const DisplayBox> boxes);
+inline void render_imgui_within(ImDrawData& data, const DisplayBox& box) { render_imgui_within(data, {&box, 1}); }
 
 }  // namespace ydscope::ui

@@ -81,7 +81,7 @@ void PolarRenderer::upload_grid(std::span<const LineVertex> lines) {
 }
 
 void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
-                         int framebuffer_height) const {
+                         int framebuffer_height, GlLayer layer) const {
   const Vec2 origin = view.viewport_origin() * framebuffer_scale;
   const Vec2 size = view.viewport_size() * framebuffer_scale;
   const auto x = static_cast<GLint>(std::lround(origin.x));
@@ -95,7 +95,7 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
   // The scissor is the caller's: a frame drawn in parts keeps the layer to the part being drawn.
   const NdcTransform ndc = view.ndc_transform();
 
-  if (style.show_grid && lines_.count > 0) {
+  if (layer == GlLayer::grid && style.show_grid && lines_.count > 0) {
     line_program_.use();
     glUniform4f(line_program_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);
     glUniform1f(line_program_.uniform("u_half_width_px"),
@@ -104,7 +104,7 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines_.count));
   }
 
-  if (points_.count > 0) {
+  if (layer == GlLayer::points && points_.count > 0) {
     glEnable(GL_PROGRAM_POINT_SIZE);
     point_program_.use();
     glUniform4f(point_program_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);

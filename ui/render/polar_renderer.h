@@ -12,6 +12,9 @@
 
 namespace ydscope::ui {
 
+// The two things the view draws with GL, in the order a pixel must get them.
+enum class GlLayer { grid, points };
+
 struct PolarStyle {
   float point_size_px = 3.0f;
   bool show_grid = true;
@@ -31,8 +34,10 @@ class PolarRenderer {
   std::size_t uploaded_points() const { return points_.count; }
 
   // `framebuffer_scale` = framebuffer pixels per window pixel (HiDPI); `framebuffer_height` for
-  // GL's bottom-up viewport.
-  void draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale, int framebuffer_height) const;
+  // GL's bottom-up viewport. The grid goes under the points: a pixel's grid is drawn before its
+  // points, though a frame drawn in parts may draw every part's grid and then the points once.
+  void draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale, int framebuffer_height,
+            GlLayer layer) const;
 
  private:
   struct Buffer {

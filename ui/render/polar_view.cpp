@@ -11,6 +11,13 @@
 #include "ui/view/geometry/grid_layout.h"
 
 namespace ydscope::ui {
+namespace {
+
+// Small enough that a wall's tiles leave most of the view out, large enough that a cover is a
+// few boxes (covering_boxes makes them larger where it is not).
+constexpr float kCoverTilePx = 16.0f;
+
+}  // namespace
 
 void PolarView::set_viewport(Vec2 origin, Vec2 size) {
   const Vec2 old_size = view_.viewport_size();
@@ -162,17 +169,35 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
     stats_ = clouds_.stats();
     points_shown_ = clouds_.cloud().vertices.size();
     dirty_ = true;
+    ++sprites_moved_;
   }
   shape_dirty_ = false;
   if (dirty_) {
     fade_cloud(clouds_.cloud(), colours, phase);
     // The merge replaces what it is given; the cloud is kept for the next fade.
     vertices_ = clouds_.cloud().vertices;
+    if (merged_px_per_mm_ != view_.px_per_mm()) ++sprites_moved_;
     merged_px_per_mm_ = view_.px_per_mm();
     merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
     upload_if_dirty(phase);
   }
+  update_cover(settings.point_size_px);
   return stats_;
+}
+
+void PolarView::update_cover(float point_size_px) {
+  const CoverKey key{sprites_moved_,       view_.viewport_origin(), view_.viewport_size(),
+                     view_.centre_world(), view_.px_per_mm(),       point_size_px};
+  if (key == cover_key_) return;
+  cover_key_ = key;
+  const Vec2 origin = view_.viewport_origin(), size = view_.viewport_size();
+  cover_ = TileCover({origin.x, origin.y, origin.x + size.x, origin.y + size.y}, kCoverTilePx);
+  // Half the sprite, its antialiased rim and a pixel for where GL rounds its centre.
+  const float reach = 0.5f * point_size_px + 1.5f;
+  for (const PointVertex& v : vertices_) {
+    const Vec2 at = view_.world_to_screen({v.x, v.y});
+    cover_.mark({at.x - reach, at.y - reach, at.x + reach, at.y + reach});
+  }
 }
 
 void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings) {
@@ -184,6 +209,7 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
     build_grid_geometry(view_, grid_, PolarStyle{}.grid, grid_lines_);
     renderer_.upload_grid(grid_lines_);
     ++gl_generation_;
+    ++grid_generation_;
   }
   const GridLayout& grid = grid_;
 
@@ -203,11 +229,12 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
 }
 
-void PolarView::draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height) const {
+void PolarView::draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height,
+                        GlLayer layer) const {
   PolarStyle style;
   style.point_size_px = settings.point_size_px;
   style.show_grid = settings.show_grid;
-  renderer_.draw(view_, style, framebuffer_scale, framebuffer_height);
+  renderer_.draw(view_, style, framebuffer_scale, framebuffer_height, layer);
 }
 
 }  // namespace ydscope::ui

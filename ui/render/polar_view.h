@@ -10,6 +10,7 @@
 
 #include "ui/render/polar_overlay.h"
 #include "ui/render/polar_renderer.h"
+#include "ui/render/tile_cover.h"
 #include "ui/view/geometry/auto_range_fit.h"
 #include "ui/view/geometry/hit_test.h"
 #include "ui/view/status/hover_gate.h"
@@ -68,10 +69,16 @@ class PolarView {
   // The grid for the current view, and the labels, ruler, sectors and hover box into ImGui's
   // background draw list (under the panels). Before ImGui::Render.
   void lay_out(const LapHistory& history, const ViewSettings& settings);
-  // The GL layer: grid lines and points. After ImGui::Render, before ImGui's own draw data.
-  void draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height) const;
+  // One of the GL layers: the grid lines or the points. After ImGui::Render, before ImGui's own
+  // draw data; the grid first.
+  void draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height, GlLayer layer) const;
   // Changes whenever the GL layer would draw something else (a new cloud or grid uploaded).
   std::uint64_t gl_generation() const { return gl_generation_; }
+  // Changes whenever the grid is built again: the view moved, zoomed or was resized.
+  std::uint64_t grid_generation() const { return grid_generation_; }
+  // The view's tiles that the points uploaded last reach (their sprites at `point_size_px`, with
+  // their rims); a frame whose grid is the last one's changes nothing outside these and the last's.
+  const TileCover& sprite_cover() const { return cover_; }
 
   const ViewTransform& transform() const { return view_; }
   // The colours the cloud was last built with (range near/far following auto-range).
@@ -93,6 +100,17 @@ class PolarView {
   bool shape_dirty_ = true;  // every layer's cloud must be built again (the colours, the filter, asked)
   bool dirty_ = true;        // faded, merged and uploaded again (a new phase, a zoom)
   std::uint64_t gl_generation_ = 0;
+  std::uint64_t grid_generation_ = 0;
+  TileCover cover_;
+  // What cover_ was worked out for: sprites moved (a new cloud, a zoom), the view moved, their size.
+  std::uint64_t sprites_moved_ = 0;
+  struct CoverKey {
+    std::uint64_t sprites_moved = ~std::uint64_t{0};
+    Vec2 origin, size, centre;
+    float px_per_mm = 0.0f, point_size_px = 0.0f;
+    friend bool operator==(const CoverKey&, const CoverKey&) = default;
+  };
+  CoverKey cover_key_;
   float last_phase_ = 0.0f;
   AutoRangeFit fit_;
   ViewSettings last_settings_;
@@ -128,6 +146,7 @@ class PolarView {
   // The colours to build with this frame; marks the cloud dirty when they or the filter changed.
   ColourParams colours_for(const ViewSettings& settings, float phase, bool several_laps);
   void upload_if_dirty(float phase);
+  void update_cover(float point_size_px);
 };
 
 }  // namespace ydscope::ui

@@ -8,6 +8,7 @@ namespace ydscope::ui {
 struct Vec2 {
   float x = 0.0f;
   float y = 0.0f;
+  friend bool operator==(const Vec2&, const Vec2&) = default;
 };
 
 inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
