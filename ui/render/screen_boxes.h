@@ -2,6 +2,7 @@
 // Rectangles of the window in its two coordinate systems: ImGui's display coordinates (top-left
 // origin, as a draw command's clip rectangle) and the framebuffer's pixels (bottom-left origin,
 // as glScissor and glXCopySubBufferMESA take them).
+#include <cstddef>
 #include <vector>
 
 namespace ydscope::ui {
@@ -32,6 +33,11 @@ struct DrawnFrame {
 
 // The same area or more in boxes none of which overlap another: overlapping ones become their union.
 std::vector<DisplayBox> merged_boxes(std::vector<DisplayBox> boxes);
+
+// At most `at_most` boxes holding all of `boxes`: the two whose union adds the fewest pixels are
+// joined, again and again. For a copy of pixels that are right everywhere, where each copy costs
+// more than the pixels it could leave out.
+std::vector<PixelBox> joined_boxes(std::vector<PixelBox> boxes, std::size_t at_most);
 
 // The framebuffer pixels `box` touches, at `scale` framebuffer pixels a display unit, in a
 // framebuffer `framebuffer_height` pixels high.
