@@ -65,7 +65,7 @@ void WindowPresenter::present(const ui::DrawnFrame& drawn) const {
   // buffer is right everywhere, so a copy may take in pixels this frame did not draw).
   constexpr std::size_t kMaxCopies = 4;
   for (const ui::PixelBox& box : ui::joined_boxes(drawn.boxes, kMaxCopies))
-      copy_sub_buffer_(glfwGetX11Display(), glfwGetGLXWindow(window_), box.x, box.y, box.width, box.height);
+    copy_sub_buffer_(glfwGetX11Display(), glfwGetGLXWindow(window_), box.x, box.y, box.width, box.height);
 }
 
 }  // namespace ydscope::gui

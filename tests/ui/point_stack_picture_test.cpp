@@ -42,6 +42,7 @@ class PointStackPicture : public testing::Test {
     return gl_->picture();
   }
 
+  std::vector<unsigned char> picture_as_drawn() const { return gl_->picture(); }
   float cell_mm() const { return 1.0f / view_.px_per_mm(); }
 
   ViewTransform view_;
@@ -91,6 +92,31 @@ TEST_F(PointStackPicture, AMergedStackDrawsTheSamePixelsAsItsPoints) {
     plain.half_clear = -1.0f;
     EXPECT_GT(largest_difference(stacked, picture(renderer, {plain}, size_px)), 10) << size_px << " px points";
   }
+}
+
+// A point just outside the view's edge still shows the part of its sprite inside it, as the view
+// moves past it, rather than vanishing whole because its centre left: the points are drawn in a
+// viewport wider than the view by a sprite's reach, with the scissor on the view.
+TEST_F(PointStackPicture, ASpriteAcrossTheViewsEdgeShowsItsPartInside) {
+  PolarRenderer renderer;
+  view_.set_viewport({8.0f, 8.0f}, {16.0f, 16.0f});  // a view inside the picture, as beside the sidebar
+  view_.fit_range(1000.0f);
+  const Vec2 outside = view_.screen_to_world({6.5f, 16.0f});  // 1.5 px left of the view's edge
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(8, 8, 16, 16);
+  renderer.upload_points(std::vector<PointVertex>{{outside.x, outside.y, {255, 255, 255, 255}}});
+  PolarStyle style;
+  style.point_size_px = 7.0f;
+  style.show_grid = false;
+  renderer.draw(view_, style, 1.0f, kSide, GlLayer::points);
+  glDisable(GL_SCISSOR_TEST);
+  const std::vector<unsigned char> pixels = picture_as_drawn();
+  // Screen rows run down, the picture's up.
+  const auto red = [&](int x, int y) { return pixels[(static_cast<std::size_t>(kSide - 1 - y) * kSide + x) * 4]; };
+  EXPECT_GT(red(8, 16), 100) << "the sprite's part inside the view is missing";
+  EXPECT_EQ(red(7, 16), 0) << "the sprite spilled out of the view";
 }
 
 }  // namespace

@@ -105,9 +105,15 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
   }
 
   if (layer == GlLayer::points && points_.count > 0) {
+    // The viewport grows by a sprite's reach on each side, and the transform shrinks to match.
+    const auto margin = static_cast<GLint>(std::ceil(sprite_reach_px(style.point_size_px) * framebuffer_scale)) + 1;
+    glViewport(x - margin, y - margin, w + 2 * margin, h + 2 * margin);
+    const float kx = static_cast<float>(w) / static_cast<float>(w + 2 * margin);
+    const float ky = static_cast<float>(h) / static_cast<float>(h + 2 * margin);
     glEnable(GL_PROGRAM_POINT_SIZE);
     point_program_.use();
-    glUniform4f(point_program_.uniform("u_ndc"), ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y);
+    glUniform4f(point_program_.uniform("u_ndc"), ndc.scale_x * kx, ndc.scale_y * ky, ndc.offset_x * kx,
+                ndc.offset_y * ky);
     glUniform1f(point_program_.uniform("u_point_size"), style.point_size_px * framebuffer_scale);
     glBindVertexArray(points_.vao);
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_.count));

@@ -32,6 +32,12 @@ class PolarRenderer {
   void upload_points(std::span<const PointVertex> points);
   void upload_grid(std::span<const LineVertex> lines);
   std::size_t uploaded_points() const { return points_.count; }
+  // How far outside the view (window pixels) a sprite `point_size_px` across may have its centre
+  // and still reach into it: the points are drawn in a viewport this much larger than the view
+  // (the scissor keeps them to it), so none that shows needs clipping, and a caller may leave out
+  // those further out. llvmpipe sends a draw with a point to clip down a slower path that walks
+  // all its vertices again.
+  static float sprite_reach_px(float point_size_px) { return 0.5f * point_size_px + 1.0f; }
 
   // `framebuffer_scale` = framebuffer pixels per window pixel (HiDPI); `framebuffer_height` for
   // GL's bottom-up viewport. The grid goes under the points: a pixel's grid is drawn before its

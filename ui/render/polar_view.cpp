@@ -162,8 +162,11 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   const bool several_laps = std::any_of(layers.begin(), layers.end(),
                                         [](const SourceLayer& l) { return l.history && l.history->size() > 1; });
   const ColourParams colours = colours_for(settings, phase, several_laps);
-  // Points are merged per pixel, so a zoom changes what is drawn.
-  if (view_.px_per_mm() != merged_px_per_mm_) dirty_ = true;
+  // Points are merged per pixel, so a zoom changes what is drawn; those outside the view are left
+  // out, so a pan does too.
+  if (view_.px_per_mm() != merged_px_per_mm_ || !(view_.centre_world() == merged_centre_) ||
+      !(view_.viewport_size() == merged_size_) || !(view_.viewport_origin() == merged_origin_))
+    dirty_ = true;
   // New laps, a source moved, recoloured or dimmed: those layers are built again.
   if (clouds_.update(layers, colours, settings.interference, shape_dirty_)) {
     stats_ = clouds_.stats();
@@ -179,10 +182,24 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
     if (merged_px_per_mm_ != view_.px_per_mm()) ++sprites_moved_;
     merged_px_per_mm_ = view_.px_per_mm();
     merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
+    merged_centre_ = view_.centre_world();
+    merged_size_ = view_.viewport_size();
+    merged_origin_ = view_.viewport_origin();
+    leave_out_unseen(settings.point_size_px);
     upload_if_dirty(phase);
   }
   update_cover(settings.point_size_px);
   return stats_;
+}
+
+void PolarView::leave_out_unseen(float point_size_px) {
+  const float reach = PolarRenderer::sprite_reach_px(point_size_px);
+  const Vec2 origin = view_.viewport_origin(), size = view_.viewport_size();
+  std::erase_if(vertices_, [&](const PointVertex& v) {
+    const Vec2 at = view_.world_to_screen({v.x, v.y});
+    return at.x < origin.x - reach || at.y < origin.y - reach || at.x > origin.x + size.x + reach ||
+           at.y > origin.y + size.y + reach;
+  });
 }
 
 void PolarView::update_cover(float point_size_px) {

@@ -131,7 +131,8 @@ class PolarView {
   float extent_mm_ = 0.0f;                   // what auto-range fits: robust_extent_mm with a margin
   PixelMerger merger_;
   std::size_t points_shown_ = 0;
-  float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at
+  float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at, and where the view was
+  Vec2 merged_centre_, merged_size_, merged_origin_;
   std::vector<SourceMark> marks_;
   std::optional<DropoutRingShape> dropouts_;
   std::optional<ZoneShapes> zones_;
@@ -147,6 +148,8 @@ class PolarView {
   ColourParams colours_for(const ViewSettings& settings, float phase, bool several_laps);
   void upload_if_dirty(float phase);
   void update_cover(float point_size_px);
+  // Takes out of vertices_ the sprites that cannot reach into the view (PolarRenderer::sprite_reach_px).
+  void leave_out_unseen(float point_size_px);
 };
 
 }  // namespace ydscope::ui
