@@ -19,6 +19,7 @@ namespace ydscope::gui {
 
 void ViewStage::lay_out(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame) {
   split_ = settings.split_view && sources.several();
+  several_ = sources.several();
   sidebar_px_ = frame.left;
   if (split_)
     lay_out_split(sources, settings, frame);
@@ -115,15 +116,15 @@ std::uint64_t ViewStage::gl_generation() const {
 }
 
 bool ViewStage::DrawnGl::points_only_changed_to(const DrawnGl& now) const {
-  return !split && !now.split && grid_generation == now.grid_generation && grid == now.grid &&
-         point_size_px == now.point_size_px;
+  return !split && !now.split && !several && !now.several && grid_generation == now.grid_generation &&
+         grid == now.grid && point_size_px == now.point_size_px;
 }
 
-std::vector<ui::DisplayBox> ViewStage::points_changed_in(const ui::DisplayBox& view) const {
+std::vector<ui::DisplayBox> ViewStage::points_changed_in(const ui::DisplayBox& view, float point_size_px) {
   // Past this many boxes the tiles are made coarser: each box is a clear and a scissor for every
   // ImGui command reaching it, and the grid's picture is laid in all of them in one pass.
   constexpr std::size_t kMaxBoxes = 32;
-  ui::TileCover both = view_->sprite_cover();
+  ui::TileCover both = view_->sprite_cover(point_size_px);
   if (!both.unite(drawn_cover_)) return {view};
   std::vector<ui::DisplayBox> boxes = ui::covering_boxes(both, kMaxBoxes);
   for (ui::DisplayBox& box : boxes) box = box.intersected(view);
@@ -135,7 +136,8 @@ ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, fl
   ImDrawData& data = *ImGui::GetDrawData();
   const std::optional<std::vector<ui::DisplayBox>> imgui_changed = damage_.update(data);
   const DrawnLayout layout{fb_w, fb_h, fb_scale, sidebar_px_};
-  const DrawnGl gl{gl_generation(), view_->grid_generation(), split_, settings.show_grid, settings.point_size_px};
+  const DrawnGl gl{gl_generation(), view_->grid_generation(), split_,
+                   several_,        settings.show_grid,       settings.point_size_px};
   const bool relaid = !(layout == drawn_layout_);
   const bool gl_changed = !(gl == drawn_gl_);
   const bool points_only = gl_changed && drawn_gl_.points_only_changed_to(gl);
@@ -147,10 +149,12 @@ ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, fl
   // lap), else all of it. Either holds every point drawn now or last time.
   std::vector<ui::DisplayBox> view_changed;
   if (points_only)
-    view_changed = points_changed_in(view);
+    view_changed = points_changed_in(view, settings.point_size_px);
   else if (gl_changed)
     view_changed.push_back(view);
-  drawn_cover_ = view_->sprite_cover();
+  // Several lidars' laps arrive in nearly every frame and their points fill much of the view:
+  // four virtual G6 cost the main thread more in boxes than llvmpipe saved (docs/performance.md).
+  drawn_cover_ = split_ || several_ ? ui::TileCover{} : view_->sprite_cover(settings.point_size_px);
   // The whole window when it cannot be drawn in parts: a swap, a new layout, a frame that cannot
   // be compared with the last, a scale whose pixels the backend's scissors would round past.
   std::vector<ui::DisplayBox> boxes;

@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <vector>
@@ -105,6 +106,41 @@ TEST_F(PartialFrame, ThePanelsRedrawnInTheBoxThatChangedAreThePanelsRedrawnWhole
   EXPECT_EQ(pixels_differing(in_parts, whole), 0u) << "a pixel left stale, or drawn twice";
   EXPECT_GT(pixels_differing(before, whole), 20u) << "the figure's change shows, so the test sees something";
   EXPECT_LT(area, 0.01f * window.area()) << "only the figure's box was drawn again";
+}
+
+// Several boxes in one call: each is given only the triangles of ImGui's commands that reach it
+// (render_imgui_within). Over a picture cleared to another colour, the sidebar drawn in a grid of
+// boxes that cut through its words and frames must be the sidebar drawn whole, to the pixel.
+TEST_F(PartialFrame, ThePanelsDrawnInManyBoxesAtOnceAreThePanelsDrawnWhole) {
+  const DisplayBox window{0.0f, 0.0f, static_cast<float>(kWidth), static_cast<float>(kHeight)};
+  UiModel m;
+  m.snap.state = LinkState::Scanning;
+  m.snap.scan_hz = 8.0;
+  lay_out(m);
+  draw(window);
+  const std::vector<unsigned char> whole = picture();
+
+  glClearColor(1.0f, 0.0f, 0.0f, 1.0f);  // nothing of this may be left
+  glClear(GL_COLOR_BUFFER_BIT);
+  std::vector<DisplayBox> boxes;
+  for (float y = 0.0f; y < kHeight; y += 37.0f)
+    for (float x = 0.0f; x < kWidth; x += 61.0f)
+      boxes.push_back(
+          {x, y, std::min(x + 61.0f, static_cast<float>(kWidth)), std::min(y + 37.0f, static_cast<float>(kHeight))});
+  glEnable(GL_SCISSOR_TEST);
+  for (const DisplayBox& box : boxes) {
+    const PixelBox pixels = to_pixels(box, 1.0f, kHeight);
+    glScissor(pixels.x, pixels.y, pixels.width, pixels.height);
+    glClearColor(17 / 255.0f, 20 / 255.0f, 26 / 255.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  render_imgui_within(*ImGui::GetDrawData(), boxes);
+  EXPECT_EQ(pixels_differing(picture(), whole), 0u) << "a triangle a box needed was left out, or one drawn twice";
+
+  // The draw data is as ImGui made it: drawn whole once more, the same picture.
+  draw(window);
+  EXPECT_EQ(pixels_differing(picture(), whole), 0u);
 }
 
 }  // namespace

@@ -188,7 +188,6 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
     leave_out_unseen(settings.point_size_px);
     upload_if_dirty(phase);
   }
-  update_cover(settings.point_size_px);
   return stats_;
 }
 
@@ -202,10 +201,10 @@ void PolarView::leave_out_unseen(float point_size_px) {
   });
 }
 
-void PolarView::update_cover(float point_size_px) {
+const TileCover& PolarView::sprite_cover(float point_size_px) {
   const CoverKey key{sprites_moved_,       view_.viewport_origin(), view_.viewport_size(),
                      view_.centre_world(), view_.px_per_mm(),       point_size_px};
-  if (key == cover_key_) return;
+  if (key == cover_key_) return cover_;
   cover_key_ = key;
   const Vec2 origin = view_.viewport_origin(), size = view_.viewport_size();
   cover_ = TileCover({origin.x, origin.y, origin.x + size.x, origin.y + size.y}, kCoverTilePx);
@@ -215,6 +214,7 @@ void PolarView::update_cover(float point_size_px) {
     const Vec2 at = view_.world_to_screen({v.x, v.y});
     cover_.mark({at.x - reach, at.y - reach, at.x + reach, at.y + reach});
   }
+  return cover_;
 }
 
 void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings) {

@@ -78,7 +78,8 @@ class PolarView {
   std::uint64_t grid_generation() const { return grid_generation_; }
   // The view's tiles that the points uploaded last reach (their sprites at `point_size_px`, with
   // their rims); a frame whose grid is the last one's changes nothing outside these and the last's.
-  const TileCover& sprite_cover() const { return cover_; }
+  // Worked out when asked, once for each new cloud or view.
+  const TileCover& sprite_cover(float point_size_px);
 
   const ViewTransform& transform() const { return view_; }
   // The colours the cloud was last built with (range near/far following auto-range).
@@ -147,7 +148,6 @@ class PolarView {
   // The colours to build with this frame; marks the cloud dirty when they or the filter changed.
   ColourParams colours_for(const ViewSettings& settings, float phase, bool several_laps);
   void upload_if_dirty(float phase);
-  void update_cover(float point_size_px);
   // Takes out of vertices_ the sprites that cannot reach into the view (PolarRenderer::sprite_reach_px).
   void leave_out_unseen(float point_size_px);
 };
