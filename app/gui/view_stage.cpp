@@ -19,7 +19,6 @@ namespace ydscope::gui {
 
 void ViewStage::lay_out(SourceList& sources, ui::ViewSettings& settings, const ViewFrame& frame) {
   split_ = settings.split_view && sources.several();
-  several_ = sources.several();
   sidebar_px_ = frame.left;
   if (split_)
     lay_out_split(sources, settings, frame);
@@ -116,8 +115,8 @@ std::uint64_t ViewStage::gl_generation() const {
 }
 
 bool ViewStage::DrawnGl::points_only_changed_to(const DrawnGl& now) const {
-  return !split && !now.split && !several && !now.several && grid_generation == now.grid_generation &&
-         grid == now.grid && point_size_px == now.point_size_px;
+  return !split && !now.split && grid_generation == now.grid_generation && grid == now.grid &&
+         point_size_px == now.point_size_px;
 }
 
 std::vector<ui::DisplayBox> ViewStage::points_changed_in(const ui::DisplayBox& view, float point_size_px) {
@@ -136,8 +135,7 @@ ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, fl
   ImDrawData& data = *ImGui::GetDrawData();
   const std::optional<std::vector<ui::DisplayBox>> imgui_changed = damage_.update(data);
   const DrawnLayout layout{fb_w, fb_h, fb_scale, sidebar_px_};
-  const DrawnGl gl{gl_generation(), view_->grid_generation(), split_,
-                   several_,        settings.show_grid,       settings.point_size_px};
+  const DrawnGl gl{gl_generation(), view_->grid_generation(), split_, settings.show_grid, settings.point_size_px};
   const bool relaid = !(layout == drawn_layout_);
   const bool gl_changed = !(gl == drawn_gl_);
   const bool points_only = gl_changed && drawn_gl_.points_only_changed_to(gl);
@@ -152,9 +150,8 @@ ui::DrawnFrame ViewStage::render_if_changed(const ui::ViewSettings& settings, fl
     view_changed = points_changed_in(view, settings.point_size_px);
   else if (gl_changed)
     view_changed.push_back(view);
-  // Several lidars' laps arrive in nearly every frame and their points fill much of the view:
-  // four virtual G6 cost the main thread more in boxes than llvmpipe saved (docs/performance.md).
-  drawn_cover_ = split_ || several_ ? ui::TileCover{} : view_->sprite_cover(settings.point_size_px);
+  // The split view's tiles are drawn whole; the common view's cover is what the next frame joins.
+  drawn_cover_ = split_ ? ui::TileCover{} : view_->sprite_cover(settings.point_size_px);
   // The whole window when it cannot be drawn in parts: a swap, a new layout, a frame that cannot
   // be compared with the last, a scale whose pixels the backend's scissors would round past.
   std::vector<ui::DisplayBox> boxes;

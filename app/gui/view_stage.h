@@ -72,7 +72,6 @@ class ViewStage {
   std::unique_ptr<ui::PolarView> view_;
   std::vector<std::unique_ptr<ui::PolarView>> tiles_;  // the split view's, one per source shown
   bool split_ = false;                                 // this frame is laid out as the split view
-  bool several_ = false;                               // this frame shows several sources
   float sidebar_px_ = 0.0f;                            // the sidebar's width (window pixels), 0: none
   std::vector<ui::SourceLayer> layers_;                // this frame's, reused
   std::vector<ui::SourceMark> marks_;
@@ -86,7 +85,6 @@ class ViewStage {
     std::uint64_t generation = 0;
     std::uint64_t grid_generation = 0;  // the common view's; the split view's tiles are drawn whole
     bool split = false;
-    bool several = false;  // several lidars' points: the view is drawn whole (see render_if_changed)
     bool grid = false;
     float point_size_px = 0.0f;
     friend bool operator==(const DrawnGl&, const DrawnGl&) = default;

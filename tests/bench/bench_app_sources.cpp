@@ -1,11 +1,12 @@
-// Several lidars into the desktop app, measured from outside: N virtual G6 (demo scene, 8 Hz),
+// Several lidars into the desktop app, measured from outside: N virtual G6 (demo scene unless
+// --scene says another, 8 Hz),
 // each from its own `ydscope-cli sim` process on a pseudo-terminal (so their CPU is not counted),
 // and `ydscope --port ... --port ...` showing them all in one view. Over a measured window after a
 // warm-up it reads /proc: the app's CPU, the sessions' I/O threads together ("ydscope-io"), the
 // main thread (input, the view model, the vertex build) and llvmpipe's threads (the software GL);
 // then it stops the app, which prints each source's laps (from the device, drawn, lost) and the
 // frame work. Smooth on (30 frames/s on llvmpipe) and off (a frame per lap).
-//   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_app_sources [--seconds 20] [--lidars 4]
+//   xvfb-run -a -s "-screen 0 1280x800x24" build/release/tests/bench/bench_app_sources [--seconds 20] [--lidars 4] [--scene room]
 // Not a Google Benchmark: it measures other processes, so it has its own main.
 #include <unistd.h>
 
@@ -36,10 +37,13 @@ double share(long ticks, double seconds) {
 int main(int argc, char** argv) {
   int seconds = 20;
   int lidars = 4;
+  std::string scene = "demo";
   BenchOptions options("bench_app_sources", "several virtual G6 into one app: CPU by thread and lost laps");
   options.add("--seconds", seconds, "how long to measure, after 5 s").add("--lidars", lidars, "virtual G6 lidars");
+  options.add("--scene", scene, "the virtual lidars' scene: demo, room or booth");
   options.parse(argc, argv);
   if (seconds < 1 || lidars < 1) options.fail("needs --seconds and --lidars of 1 or more");
+  if (!is_sim_scene(scene)) options.fail("knows the scenes demo, room and booth");
   const auto binaries = find_app_binaries("bench_app_sources");
   if (!binaries) return 1;
   const fs::path home = fs::temp_directory_path() / ("ydscope-sources-" + std::to_string(getpid()));
@@ -50,15 +54,15 @@ int main(int argc, char** argv) {
   std::vector<std::string> app_argv{binaries->app};
   for (int i = 0; i < lidars; ++i) {
     const std::string link = (home / ("g6_" + std::to_string(i))).string();
-    sims.push_back(spawn({binaries->cli, "sim", "--model", "G6", "--scene", "demo", "--pty", link}, true));
+    sims.push_back(spawn({binaries->cli, "sim", "--model", "G6", "--scene", scene, "--pty", link}, true));
     for (int wait = 0; wait < 50 && !fs::exists(link); ++wait)
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     app_argv.insert(app_argv.end(), {"--port", link});
   }
   app_argv.insert(app_argv.end(), {"--model", "G6"});
 
-  std::printf("%d virtual G6 (demo scene) in other processes into one app; share of one core over %d s after 5 s\n",
-              lidars, seconds);
+  std::printf("%d virtual G6 (%s scene) in other processes into one app; share of one core over %d s after 5 s\n",
+              lidars, scene.c_str(), seconds);
   for (const bool smooth : {true, false}) {
     std::ofstream(home / "ydscope" / "settings.ini") << "smooth = " << (smooth ? "true" : "false") << "\n";
     std::printf("-- smooth %s\n", smooth ? "on (30 frames/s on llvmpipe)" : "off (a frame per lap)");

@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
       .add("--cases", cases, "all, or smooth: only the stream drawn smooth");
   options.parse(argc, argv);
   if (seconds < 1) options.fail("needs --seconds of 1 or more");
-  if (scene != "demo" && scene != "room" && scene != "booth") options.fail("knows the scenes demo, room and booth");
+  if (!is_sim_scene(scene)) options.fail("knows the scenes demo, room and booth");
   if (!ydscope::ui::sidebar_tab_from_word(tab)) options.fail("knows the tabs lidar, view, statistics and sources");
   if (warm_up < 0) options.fail("needs --warm-up of 0 or more");
   if (cases != "all" && cases != "smooth") options.fail("knows the cases all and smooth");

@@ -93,4 +93,7 @@ class BenchOptions {
   std::vector<Key> keys_;
 };
 
+// The scenes `ydscope-cli sim --scene` knows, as the app benches take them.
+inline bool is_sim_scene(const std::string& scene) { return scene == "demo" || scene == "room" || scene == "booth"; }
+
 }  // namespace ydscope::bench
