@@ -8,14 +8,19 @@
 namespace ydscope::ui {
 namespace {
 
-// Whether the triangle at `first` of `list`'s indices (from `base` in its vertices) reaches `box`.
-bool reaches(const ImDrawList& list, unsigned first, unsigned base, const DisplayBox& box) {
-  float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+// The box round the triangle at `first` of `list`'s indices (from `base` in its vertices).
+DisplayBox triangle_bounds(const ImDrawList& list, unsigned first, unsigned base) {
+  DisplayBox bounds{1e30f, 1e30f, -1e30f, -1e30f};
   for (unsigned corner = 0; corner < 3; ++corner) {
     const ImVec2 p = list.VtxBuffer[static_cast<int>(base + list.IdxBuffer[static_cast<int>(first + corner)])].pos;
-    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    bounds = {std::min(bounds.x0, p.x), std::min(bounds.y0, p.y), std::max(bounds.x1, p.x), std::max(bounds.y1, p.y)};
   }
-  return x1 > box.x0 && x0 < box.x1 && y1 > box.y0 && y0 < box.y1;
+  return bounds;
+}
+
+// Whether a triangle within `bounds` reaches `box` (a line of no width still does).
+bool reaches(const DisplayBox& bounds, const DisplayBox& box) {
+  return bounds.x1 > box.x0 && bounds.x0 < box.x1 && bounds.y1 > box.y0 && bounds.y0 < box.y1;
 }
 
 }  // namespace
@@ -24,6 +29,8 @@ void render_imgui_within(ImDrawData& data, std::span<const DisplayBox> boxes) {
   std::vector<ImVector<ImDrawCmd>> kept(static_cast<std::size_t>(data.CmdListsCount));
   std::vector<int> index_counts(static_cast<std::size_t>(data.CmdListsCount));
   std::vector<ImDrawIdx> extra;
+  std::vector<DisplayBox> cuts;                // a command's clip rectangle cut to each box it reaches
+  std::vector<std::vector<ImDrawIdx>> chosen;  // for each cut, the command's triangles that reach it
   for (int n = 0; n < data.CmdListsCount; ++n) {
     ImDrawList& list = *data.CmdLists[n];
     const auto first_extra = static_cast<unsigned>(list.IdxBuffer.Size);
@@ -36,28 +43,38 @@ void render_imgui_within(ImDrawData& data, std::span<const DisplayBox> boxes) {
         cut.push_back(cmd);
         continue;
       }
-      for (const DisplayBox& box : boxes) {
-        const DisplayBox inside =
-            DisplayBox{cmd.ClipRect.x, cmd.ClipRect.y, cmd.ClipRect.z, cmd.ClipRect.w}.intersected(box);
-        if (inside.empty()) continue;
+      cuts.clear();
+      for (const DisplayBox& box : boxes)
+        if (const DisplayBox inside =
+                DisplayBox{cmd.ClipRect.x, cmd.ClipRect.y, cmd.ClipRect.z, cmd.ClipRect.w}.intersected(box);
+            !inside.empty())
+          cuts.push_back(inside);
+      if (cuts.size() == 1 && boxes.size() == 1) {
+        cut.push_back(cmd);
+        cut.back().ClipRect = ImVec4{cuts[0].x0, cuts[0].y0, cuts[0].x1, cuts[0].y1};
+        continue;
+      }
+      // Of several boxes each takes only the triangles that reach it: every vertex of a command
+      // repeated in every box went through the pipeline again, and a command drawing over the
+      // whole view (its labels and marks) reached nearly all of them. One walk over the
+      // triangles hands each to the boxes it reaches.
+      if (chosen.size() < cuts.size()) chosen.resize(cuts.size());
+      for (std::size_t k = 0; k < cuts.size(); ++k) chosen[k].clear();
+      for (unsigned i = cmd.IdxOffset; i < cmd.IdxOffset + cmd.ElemCount; i += 3) {
+        const DisplayBox bounds = triangle_bounds(list, i, cmd.VtxOffset);
+        for (std::size_t k = 0; k < cuts.size(); ++k)
+          if (reaches(bounds, cuts[k]))
+            chosen[k].insert(chosen[k].end(), &list.IdxBuffer[static_cast<int>(i)],
+                             &list.IdxBuffer[static_cast<int>(i)] + 3);
+      }
+      for (std::size_t k = 0; k < cuts.size(); ++k) {
+        if (chosen[k].empty()) continue;
         ImDrawCmd part = cmd;
-        part.ClipRect = ImVec4{inside.x0, inside.y0, inside.x1, inside.y1};
-        if (boxes.size() > 1) {
-          // Of several boxes each takes only the triangles that reach it: every vertex of a command
-          // repeated in every box went through the pipeline again, and a command drawing over the
-          // whole view (its labels and marks) reached nearly all of them.
-          const std::size_t from = extra.size();
-          for (unsigned i = cmd.IdxOffset; i < cmd.IdxOffset + cmd.ElemCount; i += 3)
-            if (reaches(list, i, cmd.VtxOffset, inside))
-              extra.insert(extra.end(), &list.IdxBuffer[static_cast<int>(i)], &list.IdxBuffer[static_cast<int>(i)] + 3);
-          const std::size_t count = extra.size() - from;
-          if (count == 0) continue;
-          if (count < cmd.ElemCount) {
-            part.IdxOffset = first_extra + static_cast<unsigned>(from);
-            part.ElemCount = static_cast<unsigned>(count);
-          } else {
-            extra.resize(from);  // all of it: the command's own indices will do
-          }
+        part.ClipRect = ImVec4{cuts[k].x0, cuts[k].y0, cuts[k].x1, cuts[k].y1};
+        if (chosen[k].size() < cmd.ElemCount) {  // else all of it: the command's own indices will do
+          part.IdxOffset = first_extra + static_cast<unsigned>(extra.size());
+          part.ElemCount = static_cast<unsigned>(chosen[k].size());
+          extra.insert(extra.end(), chosen[k].begin(), chosen[k].end());
         }
         cut.push_back(part);
       }
