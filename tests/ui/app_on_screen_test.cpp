@@ -30,23 +30,45 @@ int pixels_apart(const unsigned char* a, const unsigned char* b, int width, Rect
   return apart;
 }
 
-class AppOnScreen : public HandsOnApp {};
+// Pixels of `rect` in an RGB picture of `width` pixels a row that `is_kind` picks out.
+int pixels_of(const std::vector<unsigned char>& screen, int width, Rect rect, bool (*is_kind)(const unsigned char*)) {
+  int count = 0;
+  for (int y = rect.y0; y < rect.y1; ++y)
+    for (int x = rect.x0; x < rect.x1; ++x) count += is_kind(&screen[(static_cast<std::size_t>(y) * width + x) * 3]);
+  return count;
+}
+
+class AppOnScreen : public HandsOnApp {
+ protected:
+  // Starts the app on the virtual G6 in `dir` and waits until its own picture shows the scan;
+  // then a whole screenshot of it, or an empty one (with a failure said) if that never came.
+  Image start_streaming(const std::filesystem::path& dir, pid_t& app, std::set<std::string>& seen) {
+    app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6"});
+    if (!hands().find_window("ydscope", std::chrono::seconds(30))) {
+      ADD_FAILURE() << "no ydscope window appeared";
+      return {};
+    }
+    const int points = screenshot_until(
+        app, dir, seen,
+        [](const Image& image) {
+          return count_pixels(image, {kViewLeft, 0, image.width, image.height}, is_point_pixel);
+        },
+        [](int n) { return n > 300; }, std::chrono::seconds(30));
+    if (points <= 300) {
+      ADD_FAILURE() << "the view never showed the virtual lidar's scan";
+      return {};
+    }
+    return screenshot_of(app, dir, seen);
+  }
+};
 
 TEST_F(AppOnScreen, ThePanelsDrawnOnceStayRightOnScreenWhileTheViewMoves) {
   X11Hands& hands = this->hands();
   const std::filesystem::path dir = fresh_temp_dir("ydscope-on-screen");
-  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6"});
-  ASSERT_TRUE(hands.find_window("ydscope", std::chrono::seconds(30))) << "no ydscope window appeared";
+  pid_t app = -1;
   std::set<std::string> seen;
   // Streaming: the app's own picture has the virtual lidar's points.
-  const int points = screenshot_until(
-      app, dir, seen,
-      [](const Image& image) {
-        return count_pixels(image, {kViewLeft, 0, image.width, image.height}, is_point_pixel);
-      },
-      [](int n) { return n > 300; }, std::chrono::seconds(30));
-  ASSERT_GT(points, 300) << "the view never showed the virtual lidar's scan";
-  const Image reference = screenshot_of(app, dir, seen);
+  const Image reference = start_streaming(dir, app, seen);
   ASSERT_TRUE(reference);
   const int width = reference.width, height = reference.height;
 
@@ -63,19 +85,11 @@ TEST_F(AppOnScreen, ThePanelsDrawnOnceStayRightOnScreenWhileTheViewMoves) {
   const Rect panels{0, 0, kViewLeft - 24, height};
   const Rect view{kViewLeft, 0, width, height};
   const int panel_pixels = (panels.x1 - panels.x0) * (panels.y1 - panels.y0);
-  int text_on_screen = 0;
-  for (int y = panels.y0; y < panels.y1; ++y)
-    for (int x = panels.x0; x < panels.x1; ++x)
-      text_on_screen += is_text_pixel(&screen[(static_cast<std::size_t>(y) * width + x) * 3]);
-  EXPECT_GT(text_on_screen, 2000) << "the panels' words are not on screen";
+  EXPECT_GT(pixels_of(screen, width, panels, is_text_pixel), 2000) << "the panels' words are not on screen";
   // A figure or two may have changed between the look and the app's picture; nothing more.
   EXPECT_LT(pixels_apart(screen.data(), now.pixels.get(), width, panels), panel_pixels / 100)
       << "the panels on screen are not the app's";
-  int points_on_screen = 0;
-  for (int y = view.y0; y < view.y1; ++y)
-    for (int x = view.x0; x < view.x1; ++x)
-      points_on_screen += is_point_pixel(&screen[(static_cast<std::size_t>(y) * width + x) * 3]);
-  EXPECT_GT(points_on_screen, 300) << "the scan is not on screen";
+  EXPECT_GT(pixels_of(screen, width, view, is_point_pixel), 300) << "the scan is not on screen";
   EXPECT_GT(pixels_apart(screen.data(), later.data(), width, view), 300) << "the view on screen stood still";
 
   EXPECT_EQ(stop_process(app, SIGTERM), 0);
@@ -90,17 +104,9 @@ TEST_F(AppOnScreen, ThePanelsDrawnOnceStayRightOnScreenWhileTheViewMoves) {
 TEST_F(AppOnScreen, AViewDrawnInPartsIsTheViewDrawnWhole) {
   X11Hands& hands = this->hands();
   const std::filesystem::path dir = fresh_temp_dir("ydscope-in-parts");
-  const pid_t app = spawn_in(dir, {YDSCOPE_APP_PATH, "--sim", "G6"});
-  ASSERT_TRUE(hands.find_window("ydscope", std::chrono::seconds(30))) << "no ydscope window appeared";
+  pid_t app = -1;
   std::set<std::string> seen;
-  const int points = screenshot_until(
-      app, dir, seen,
-      [](const Image& image) {
-        return count_pixels(image, {kViewLeft, 0, image.width, image.height}, is_point_pixel);
-      },
-      [](int n) { return n > 300; }, std::chrono::seconds(30));
-  ASSERT_GT(points, 300) << "the view never showed the virtual lidar's scan";
-  const Image first = screenshot_of(app, dir, seen);
+  const Image first = start_streaming(dir, app, seen);
   ASSERT_TRUE(first);
   const int width = first.width, height = first.height;
   // Three seconds of laps and fades drawn in parts, then P: the laps stop and the fade settles.
@@ -114,11 +120,7 @@ TEST_F(AppOnScreen, AViewDrawnInPartsIsTheViewDrawnWhole) {
 
   // The status line at the view's foot reads the clock ("last lap ... ago"); the rest must agree.
   const Rect view{kViewLeft, 0, width, height - 60};
-  int points_on_screen = 0;
-  for (int y = view.y0; y < view.y1; ++y)
-    for (int x = view.x0; x < view.x1; ++x)
-      points_on_screen += is_point_pixel(&screen[(static_cast<std::size_t>(y) * width + x) * 3]);
-  EXPECT_GT(points_on_screen, 300) << "the scan is not on screen";
+  EXPECT_GT(pixels_of(screen, width, view, is_point_pixel), 300) << "the scan is not on screen";
   EXPECT_LT(pixels_apart(screen.data(), whole.pixels.get(), width, view), 20)
       << "the view drawn in parts is not the view drawn whole";
 
