@@ -178,26 +178,28 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   if (dirty_) {
     fade_cloud(clouds_.cloud(), colours, phase);
     // The merge replaces what it is given; the cloud is kept for the next fade.
-    vertices_ = clouds_.cloud().vertices;
+    copy_seen(clouds_.cloud().vertices, settings.point_size_px);
     if (merged_px_per_mm_ != view_.px_per_mm()) ++sprites_moved_;
     merged_px_per_mm_ = view_.px_per_mm();
     merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
     merged_centre_ = view_.centre_world();
     merged_size_ = view_.viewport_size();
     merged_origin_ = view_.viewport_origin();
-    leave_out_unseen(settings.point_size_px);
     upload_if_dirty(phase);
   }
   return stats_;
 }
 
-void PolarView::leave_out_unseen(float point_size_px) {
-  const float reach = PolarRenderer::sprite_reach_px(point_size_px);
+void PolarView::copy_seen(const std::vector<PointVertex>& cloud, float point_size_px) {
+  // In world millimetres, so a point is one comparison away from being left out.
+  const float reach_mm = PolarRenderer::sprite_reach_px(point_size_px) / view_.px_per_mm();
   const Vec2 origin = view_.viewport_origin(), size = view_.viewport_size();
-  std::erase_if(vertices_, [&](const PointVertex& v) {
-    const Vec2 at = view_.world_to_screen({v.x, v.y});
-    return at.x < origin.x - reach || at.y < origin.y - reach || at.x > origin.x + size.x + reach ||
-           at.y > origin.y + size.y + reach;
+  const Vec2 corner = view_.screen_to_world(origin), far_corner = view_.screen_to_world(origin + size);
+  const float left = std::min(corner.x, far_corner.x) - reach_mm, right = std::max(corner.x, far_corner.x) + reach_mm;
+  const float bottom = std::min(corner.y, far_corner.y) - reach_mm, top = std::max(corner.y, far_corner.y) + reach_mm;
+  vertices_.clear();
+  std::copy_if(cloud.begin(), cloud.end(), std::back_inserter(vertices_), [&](const PointVertex& v) {
+    return v.x >= left && v.x <= right && v.y >= bottom && v.y <= top;
   });
 }
 

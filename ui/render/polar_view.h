@@ -148,8 +148,9 @@ class PolarView {
   // The colours to build with this frame; marks the cloud dirty when they or the filter changed.
   ColourParams colours_for(const ViewSettings& settings, float phase, bool several_laps);
   void upload_if_dirty(float phase);
-  // Takes out of vertices_ the sprites that cannot reach into the view (PolarRenderer::sprite_reach_px).
-  void leave_out_unseen(float point_size_px);
+  // Copies into vertices_ the points of `cloud` whose sprites can reach into the view
+  // (PolarRenderer::sprite_reach_px): before the merge, which then groups only what is seen.
+  void copy_seen(const std::vector<PointVertex>& cloud, float point_size_px);
 };
 
 }  // namespace ydscope::ui

@@ -38,7 +38,9 @@ constexpr std::array<Stop, 9> kViridis{{{0.194f, 0.398f, 0.553f},
 }  // namespace
 
 std::uint8_t unit_to_byte(float v) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  // Rounded by adding a half (the value is not negative): lround was a call a channel, and the
+  // pixel merge makes four a sprite at every frame.
+  return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
 }
 
 std::uint8_t scale_byte(std::uint8_t channel, float by) {

@@ -4,6 +4,7 @@
 // robots' boards, VMs and CI draw with) pays for every one of them at every frame, because the
 // fade moves. Merging them on the CPU, with the same "over" rule the GPU's blend applies, gives
 // the picture the stack would have given for a fraction of the raster work.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -16,7 +17,8 @@ namespace ydscope::ui {
 // colour and alpha and, in `half_clear`, what shows through the stack at half coverage, from which
 // the point shader draws the rim the stack's rims would have built up. Where the cells would leave
 // more than three quarters of the points (a scene that moves), the cloud is left as it was, and
-// the next kCloudsBetweenLooks clouds are not looked at.
+// the next kCloudsBetweenLooks clouds are not looked at; so it is where the points spread over more
+// than kMaxCells cells (the caller keeps to what the view shows, so this is a zoom far out of it).
 //
 // Kept between frames: which points share a pixel is worked out again only when the points moved
 // (a new lap, a zoom), since between laps only their fade changes; nothing is allocated once
@@ -26,31 +28,31 @@ class PixelMerger {
   // Clouds drawn as they are after one whose merge would not have paid: about a second at the
   // display's rate, four at a frame a lap.
   static constexpr int kCloudsBetweenLooks = 30;
+  // A 4K screen's pixels twice over: the grid of cells is 4 bytes a cell.
+  static constexpr std::size_t kMaxCells = std::size_t{1} << 24;
 
   void merge(std::vector<PointVertex>& points, float cell_mm);
 
  private:
-  struct Cell {
-    std::uint64_t key = 0;
-    std::uint32_t slot = 0;
-    std::uint32_t round = 0;  // the grouping that filled it; older ones read as empty, so no clearing
-  };
   struct Slot {
     float x = 0, y = 0;         // the topmost member's position: it is what shows
-    float r = 0, g = 0, b = 0;  // premultiplied colour of the stack so far, 0..1
+    float r = 0, g = 0, b = 0;  // premultiplied colour of the stack so far, 0..255
     float a = 0;                // the stack's alpha so far, 0..1
     float half_clear = 1;       // what shows through the stack where each member covers half
   };
+  static constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
 
   bool same_points(const std::vector<PointVertex>& points, float cell_mm) const;
-  void group(const std::vector<PointVertex>& points, float cell_mm);
-  std::uint32_t slot_for(std::uint64_t key, float x, float y);
+  // False when the points spread over more than kMaxCells cells.
+  bool group(const std::vector<PointVertex>& points, float cell_mm);
   static void lay_under(Slot& slot, const PointVertex& p);
   static PointVertex sprite_of(const Slot& slot);
 
-  std::vector<Cell> table_;
-  int table_shift_ = 64;  // 64 - log2 of the table's size
-  std::uint32_t round_ = 0;
+  // The cells over the points' bounds, row by row, each the slot of its stack or kNoSlot. A grid,
+  // not a hash table: a lap's points come round in order, so neighbours in the cloud are
+  // neighbours here and stay in the cache (hashed, every point was a miss).
+  std::vector<std::uint32_t> cells_;
+  std::vector<std::uint32_t> cell_of_slot_;  // to empty the grid again after a grouping
   // The grouping of the points last merged: their positions, each one's slot, the cell size.
   std::vector<float> positions_;
   std::vector<std::uint32_t> slot_of_;
