@@ -198,9 +198,8 @@ void PolarView::copy_seen(const std::vector<PointVertex>& cloud, float point_siz
   const float left = std::min(corner.x, far_corner.x) - reach_mm, right = std::max(corner.x, far_corner.x) + reach_mm;
   const float bottom = std::min(corner.y, far_corner.y) - reach_mm, top = std::max(corner.y, far_corner.y) + reach_mm;
   vertices_.clear();
-  std::copy_if(cloud.begin(), cloud.end(), std::back_inserter(vertices_), [&](const PointVertex& v) {
-    return v.x >= left && v.x <= right && v.y >= bottom && v.y <= top;
-  });
+  std::copy_if(cloud.begin(), cloud.end(), std::back_inserter(vertices_),
+               [&](const PointVertex& v) { return v.x >= left && v.x <= right && v.y >= bottom && v.y <= top; });
 }
 
 const TileCover& PolarView::sprite_cover(float point_size_px) {
