@@ -7,6 +7,7 @@
 // one pass, which replaces both the box's clear and its grid.
 #include <span>
 
+#include "ui/render/box_quads.h"
 #include "ui/render/gl_program.h"
 #include "ui/render/screen_boxes.h"
 
@@ -24,11 +25,12 @@ class BackdropPicture {
   void end();
   // Copies the picture's pixels in `boxes` (framebuffer pixels) to the framebuffer bound, as they
   // are: no blend, no scissor.
-  void lay(std::span<const PixelBox> boxes) const;
+  void lay(std::span<const PixelBox> boxes);
 
  private:
   GlProgram program_;
-  GLuint texture_ = 0, framebuffer_ = 0, vao_ = 0, vbo_ = 0;
+  BoxQuads quads_;
+  GLuint texture_ = 0, framebuffer_ = 0;
   int width_ = 0, height_ = 0;
   GLint drawing_to_ = 0;  // the framebuffer that was bound at begin
 };
