@@ -12,6 +12,7 @@
 #include <GLFW/glfw3.h>
 
 #include "ui/render/polar_renderer.h"
+#include "ui/render/sprite_splat.h"
 #include "ui/view/geometry/grid_geometry.h"
 #include "ui/view/geometry/grid_layout.h"
 #include "ui/view/scene/lap_history.h"
@@ -30,7 +31,8 @@ constexpr int kHeight = 800;
 // One hidden 1280x800 GL 3.3 core window for the whole run.
 struct GlWindow {
   GLFWwindow* window = nullptr;
-  std::unique_ptr<PolarRenderer> renderer;
+  std::unique_ptr<PolarRenderer> renderer;  // sprites drawn as GL points
+  std::unique_ptr<PolarRenderer> on_cpu;    // sprites drawn on the CPU and laid as a picture
   GlWindow() {
     if (!std::getenv("DISPLAY") || !glfwInit()) return;
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
@@ -42,10 +44,12 @@ struct GlWindow {
     if (!window) return;
     glfwMakeContextCurrent(window);
     glfwSwapInterval(0);
-    renderer = std::make_unique<PolarRenderer>();
+    renderer = std::make_unique<PolarRenderer>(PointDrawing::gl);
+    on_cpu = std::make_unique<PolarRenderer>(PointDrawing::cpu);
   }
   ~GlWindow() {
     renderer.reset();
+    on_cpu.reset();
     if (window) glfwDestroyWindow(window);
     glfwTerminate();
   }
@@ -151,6 +155,35 @@ void BM_PixelMergeGrouping(benchmark::State& state) {
 }
 BENCHMARK(BM_PixelMergeGrouping)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
 
+// The sprites drawn on the CPU (a software renderer's path): a cloud of the persistence, merged as
+// the app merges it, painted into the view's picture as a frame paints it.
+void BM_SpriteSplat(benchmark::State& state) {
+  LapHistory history;
+  fill_history(history, static_cast<std::size_t>(state.range(0)));
+  FadingCloud cloud;
+  build_point_cloud(history, ColourParams{}, InterferenceSettings{}, cloud);
+  const ViewTransform view = make_view();
+  std::vector<PointVertex> vertices = cloud.vertices;
+  PixelMerger merger;
+  merger.merge(vertices, 1.0f / view.px_per_mm());
+  const NdcTransform ndc = view.ndc_transform();
+  const SplatFrame frame{ndc.scale_x,
+                         ndc.scale_y,
+                         ndc.offset_x,
+                         ndc.offset_y,
+                         static_cast<int>(view.viewport_size().x),
+                         static_cast<int>(view.viewport_size().y),
+                         3.0f};
+  SpriteSplat splat;
+  for (auto _ : state) {
+    splat.paint(vertices, frame);
+    benchmark::DoNotOptimize(splat.pixels());
+  }
+  state.counters["sprites"] = static_cast<double>(vertices.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(vertices.size()));
+}
+BENCHMARK(BM_SpriteSplat)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
+
 // Motion highlighting's share: the cloud built in motion colours against a learned room, and the
 // learning itself, once per lap.
 void BM_BuildCloudWithMotion(benchmark::State& state) {
@@ -178,12 +211,15 @@ void BM_MotionLearnsALap(benchmark::State& state) {
 BENCHMARK(BM_MotionLearnsALap)->Arg(2000)->Unit(benchmark::kMillisecond);
 
 // draw_grid: 0 points only, 1 grid + points. Uploads a fresh cloud every frame, as with a new lap.
+// The second argument: 0 the sprites drawn as GL points, 1 on the CPU (the software renderer's
+// path). Timed as the process's CPU, so llvmpipe's raster threads count.
 void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
   GlWindow& g = gl();
   if (!g.renderer) {
     state.SkipWithError("no OpenGL 3.3 window (no DISPLAY?); run under xvfb-run");
     return;
   }
+  PolarRenderer& renderer = state.range(1) == 0 ? *g.renderer : *g.on_cpu;
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
   FadingCloud faded;
@@ -196,14 +232,14 @@ void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
   style.show_grid = draw_grid;
   std::vector<LineVertex> lines;
   build_grid_geometry(view, grid, style.grid, lines);
-  g.renderer->upload_grid(lines);
+  renderer.upload_grid(lines);
   if (!draw_points) cloud.clear();
   for (auto _ : state) {
     glViewport(0, 0, kWidth, kHeight);
     glClearColor(0.03f, 0.04f, 0.06f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    g.renderer->upload_points(cloud);
-    for (const GlLayer layer : {GlLayer::grid, GlLayer::points}) g.renderer->draw(view, style, 1.0f, kHeight, layer);
+    renderer.upload_points(cloud);
+    for (const GlLayer layer : {GlLayer::grid, GlLayer::points}) renderer.draw(view, style, 1.0f, kHeight, layer);
     glFinish();
   }
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
@@ -212,9 +248,15 @@ void frame_bench(benchmark::State& state, bool draw_grid, bool draw_points) {
 void BM_GridOnly(benchmark::State& state) { frame_bench(state, true, false); }
 void BM_PointsOnly(benchmark::State& state) { frame_bench(state, false, true); }
 void BM_GridAndPoints(benchmark::State& state) { frame_bench(state, true, true); }
-BENCHMARK(BM_GridOnly)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_PointsOnly)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_GridAndPoints)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GridOnly)->Args({0, 0})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_PointsOnly)
+    ->ArgsProduct({{2000, 20000, 200000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_GridAndPoints)
+    ->ArgsProduct({{2000, 20000, 200000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 
 }  // namespace
 

@@ -1,13 +1,16 @@
 // A sprite that stands for a stack of points (ui/view/scene/pixel_merge.h) must look like the stack
 // did: drawn with the app's own renderer and point shader into an offscreen picture, the merged
-// sprite and the points it replaced give the same pixels, antialiased rim included. Needs the
-// display CTest gives the suite (xvfb-run); skips without one.
+// sprite and the points it replaced give the same pixels, antialiased rim included. And the
+// sprites drawn on the CPU (ui/render/sprite_splat.h) must be the sprites GL draws. Each test runs
+// with the sprites drawn both ways. Needs the display CTest gives the suite (xvfb-run); skips
+// without one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "tests/ui/offscreen_gl.h"
@@ -19,8 +22,9 @@ namespace {
 
 constexpr int kSide = 32;
 
-// The app's renderer drawing into an offscreen picture of kSide x kSide.
-class PointStackPicture : public testing::Test {
+// The app's renderer drawing into an offscreen picture of kSide x kSide, its sprites drawn as the
+// test's parameter says.
+class PointStackPicture : public testing::TestWithParam<PointDrawing> {
  protected:
   void SetUp() override {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (the suite runs under xvfb-run)";
@@ -68,8 +72,8 @@ std::vector<PointVertex> faded_stack() {
   return stack;
 }
 
-TEST_F(PointStackPicture, AMergedStackDrawsTheSamePixelsAsItsPoints) {
-  PolarRenderer renderer;
+TEST_P(PointStackPicture, AMergedStackDrawsTheSamePixelsAsItsPoints) {
+  PolarRenderer renderer(GetParam());
   // The shader's rim is exact where a sprite covers a pixel wholly, half or not at all: a 3 px
   // point (the app's size) has only such pixels; a 7 px one has rings in between, where the
   // stack's rim is matched within a couple of levels more.
@@ -97,8 +101,8 @@ TEST_F(PointStackPicture, AMergedStackDrawsTheSamePixelsAsItsPoints) {
 // A point just outside the view's edge still shows the part of its sprite inside it, as the view
 // moves past it, rather than vanishing whole because its centre left: the points are drawn in a
 // viewport wider than the view by a sprite's reach, with the scissor on the view.
-TEST_F(PointStackPicture, ASpriteAcrossTheViewsEdgeShowsItsPartInside) {
-  PolarRenderer renderer;
+TEST_P(PointStackPicture, ASpriteAcrossTheViewsEdgeShowsItsPartInside) {
+  PolarRenderer renderer(GetParam());
   view_.set_viewport({8.0f, 8.0f}, {16.0f, 16.0f});  // a view inside the picture, as beside the sidebar
   view_.fit_range(1000.0f);
   const Vec2 outside = view_.screen_to_world({6.5f, 16.0f});  // 1.5 px left of the view's edge
@@ -118,6 +122,48 @@ TEST_F(PointStackPicture, ASpriteAcrossTheViewsEdgeShowsItsPartInside) {
   EXPECT_GT(red(8, 16), 100) << "the sprite's part inside the view is missing";
   EXPECT_EQ(red(7, 16), 0) << "the sprite spilled out of the view";
 }
+
+// A cloud of sprites of every colour, alpha and rim, overlapping, at any fraction of a pixel: the
+// picture the CPU draws of it is the one GL draws, within the rounding of a blend or two.
+class SpritesOnTheCpu : public PointStackPicture {};  // draws both ways itself
+
+TEST_F(SpritesOnTheCpu, AreTheSpritesGlDraws) {
+  PolarRenderer on_gl(PointDrawing::gl), on_cpu(PointDrawing::cpu);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> across(-1100.0f, 1100.0f);  // a little past the view's edges
+  std::uniform_int_distribution<int> byte(0, 255);
+  std::uniform_real_distribution<float> clear(0.0f, 1.0f);
+  std::vector<PointVertex> cloud;
+  for (int i = 0; i < 120; ++i) {
+    const auto channel = [&] { return static_cast<std::uint8_t>(byte(random)); };
+    cloud.push_back({across(random),
+                     across(random),
+                     {channel(), channel(), channel(), channel()},
+                     i % 3 == 0 ? clear(random) : -1.0f});
+  }
+  for (const float size_px : {3.0f, 7.0f}) {
+    const auto gl = picture(on_gl, cloud, size_px);
+    const auto cpu = picture(on_cpu, cloud, size_px);
+    // The CPU lays its sprites over nothing and the picture over the view once, GL blends each
+    // over the view: the roundings differ by a level or two where sprites pile up.
+    int apart = 0;
+    for (std::size_t i = 0; i < gl.size(); ++i)
+      if (i % 4 != 3 && std::abs(gl[i] - cpu[i]) > 2) ++apart;
+    EXPECT_LE(largest_difference(gl, cpu), 4) << size_px << " px points";
+    EXPECT_LE(apart, static_cast<int>(gl.size() / 1000)) << size_px << " px points: channels more than 2 apart";
+    // Not a vacuous match: the sprites are there, and a cloud moved by half a pixel is not the same.
+    const std::vector<unsigned char> background = picture(on_gl, {}, size_px);
+    EXPECT_GT(largest_difference(gl, background), 100);
+    std::vector<PointVertex> moved = cloud;
+    for (PointVertex& p : moved) p.x += 0.5f * cell_mm();
+    EXPECT_GT(largest_difference(picture(on_cpu, moved, size_px), gl), 20) << size_px << " px points";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(DrawnBothWays, PointStackPicture, testing::Values(PointDrawing::gl, PointDrawing::cpu),
+                         [](const testing::TestParamInfo<PointDrawing>& drawing) {
+                           return drawing.param == PointDrawing::gl ? std::string("OnGl") : std::string("OnCpu");
+                         });
 
 }  // namespace
 }  // namespace ydscope::ui

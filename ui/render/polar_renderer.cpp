@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <initializer_list>
+#include <string_view>
 
 #include "ui/embedded_shaders.h"
+#include "ui/view/window/frame_pacing.h"
 
 namespace ydscope::ui {
 namespace {
@@ -38,9 +41,20 @@ void create_vertex_array(GLuint& vao, GLuint& vbo, GLsizei stride, std::initiali
   }
 }
 
+// llvmpipe spends about three and a half times the CPU on a sprite that sprite_splat.h does; a GPU
+// is the other way round.
+bool draws_points_on_cpu(PointDrawing drawing) {
+  if (drawing != PointDrawing::suited) return drawing == PointDrawing::cpu;
+  if (const char* asked = std::getenv("YDSCOPE_POINTS"); asked != nullptr) {
+    if (std::string_view(asked) == "cpu") return true;
+    if (std::string_view(asked) == "gl") return false;
+  }
+  return is_software_renderer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+}
+
 }  // namespace
 
-PolarRenderer::PolarRenderer()
+PolarRenderer::PolarRenderer(PointDrawing drawing)
     : point_program_("point", shaders::k_points_vert, shaders::k_points_frag),
       line_program_("grid line", shaders::k_lines_vert, shaders::k_lines_frag) {
   create_vertex_array(points_.vao, points_.vbo, sizeof(PointVertex),
@@ -53,6 +67,7 @@ PolarRenderer::PolarRenderer()
                        {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(LineVertex, colour)}});
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  if (draws_points_on_cpu(drawing)) splat_ = std::make_unique<SplatPicture>();
 }
 
 PolarRenderer::~PolarRenderer() {
@@ -73,6 +88,12 @@ void PolarRenderer::upload(Buffer& buffer, const void* data, std::size_t bytes, 
 }
 
 void PolarRenderer::upload_points(std::span<const PointVertex> points) {
+  if (splat_) {
+    cpu_points_.assign(points.begin(), points.end());
+    points_.count = points.size();
+    ++uploads_;
+    return;
+  }
   upload(points_, points.data(), points.size_bytes(), points.size());
 }
 
@@ -104,7 +125,11 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines_.count));
   }
 
-  if (layer == GlLayer::points && points_.count > 0) {
+  if (layer == GlLayer::points && splat_) {
+    const SplatFrame frame{
+        ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y, w, h, style.point_size_px * framebuffer_scale};
+    splat_->draw(cpu_points_, uploads_, frame, x, y);
+  } else if (layer == GlLayer::points && points_.count > 0) {
     // The viewport grows by a sprite's reach on each side, and the transform shrinks to match.
     const auto margin = static_cast<GLint>(std::ceil(sprite_reach_px(style.point_size_px) * framebuffer_scale)) + 1;
     glViewport(x - margin, y - margin, w + 2 * margin, h + 2 * margin);

@@ -1,11 +1,16 @@
 #pragma once
 // Draws the polar view with our own shaders: the ring/spoke grid as antialiased line quads, then
-// every point of the persistence as round sprites from one vertex buffer in one draw call. Text
-// labels and markers are left to ImGui's draw lists (see polar_overlay.h).
+// every point of the persistence as round sprites from one vertex buffer in one draw call; on a
+// software renderer the sprites are drawn on the CPU instead (sprite_splat.h) and laid as a
+// picture. Text labels and markers are left to ImGui's draw lists (see polar_overlay.h).
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <span>
+#include <vector>
 
 #include "ui/render/gl_program.h"
+#include "ui/render/splat_picture.h"
 #include "ui/view/geometry/grid_geometry.h"
 #include "ui/view/scene/point_cloud.h"
 #include "ui/view/geometry/view_transform.h"
@@ -21,9 +26,14 @@ struct PolarStyle {
   GridStyle grid;
 };
 
+// Where the sprites are drawn: as GL points, or on the CPU and laid as a picture (sprite_splat.h).
+// `suited`: on the CPU when the context's GL_RENDERER is a software one, unless YDSCOPE_POINTS in
+// the environment says "gl" or "cpu".
+enum class PointDrawing { suited, gl, cpu };
+
 class PolarRenderer {
  public:
-  PolarRenderer();  // needs a current GL 3.3 core context
+  explicit PolarRenderer(PointDrawing drawing = PointDrawing::suited);  // needs a current GL 3.3 core context
   ~PolarRenderer();
   PolarRenderer(const PolarRenderer&) = delete;
   PolarRenderer& operator=(const PolarRenderer&) = delete;
@@ -32,6 +42,7 @@ class PolarRenderer {
   void upload_points(std::span<const PointVertex> points);
   void upload_grid(std::span<const LineVertex> lines);
   std::size_t uploaded_points() const { return points_.count; }
+  bool points_on_cpu() const { return splat_ != nullptr; }
   // How far outside the view (window pixels) a sprite `point_size_px` across may have its centre
   // and still reach into it: the points are drawn in a viewport this much larger than the view
   // (the scissor keeps them to it), so none that shows needs clipping, and a caller may leave out
@@ -58,6 +69,11 @@ class PolarRenderer {
   GlProgram line_program_;
   Buffer points_;
   Buffer lines_;
+  // Drawing on the CPU: the points as uploaded, and their picture (painted again when drawn after
+  // an upload, so mutable).
+  std::unique_ptr<SplatPicture> splat_;
+  std::vector<PointVertex> cpu_points_;
+  std::uint64_t uploads_ = 0;
 };
 
 }  // namespace ydscope::ui

@@ -1,0 +1,59 @@
+#include "ui/render/splat_picture.h"
+
+#include "ui/embedded_shaders.h"
+
+namespace ydscope::ui {
+
+SplatPicture::SplatPicture() : program_("splat", shaders::k_laid_picture_vert, shaders::k_laid_picture_frag) {
+  glGenTextures(1, &texture_);
+}
+
+SplatPicture::~SplatPicture() { glDeleteTextures(1, &texture_); }
+
+void SplatPicture::upload_drawn() {
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  if (splat_.width() != texture_width_ || splat_.height() != texture_height_) {
+    texture_width_ = splat_.width();
+    texture_height_ = splat_.height();
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, texture_width_, texture_height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  // Only the drawn tiles: the rest is never laid, so what the texture holds there does not matter.
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, splat_.width());
+  for (const PixelBox& run : splat_.drawn()) {
+    const std::uint8_t* first =
+        splat_.pixels() +
+        (static_cast<std::size_t>(run.y) * static_cast<std::size_t>(splat_.width()) + static_cast<std::size_t>(run.x)) *
+            4;
+    glTexSubImage2D(GL_TEXTURE_2D, 0, run.x, run.y, run.width, run.height, GL_RGBA, GL_UNSIGNED_BYTE, first);
+  }
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void SplatPicture::draw(std::span<const PointVertex> points, std::uint64_t points_generation, const SplatFrame& frame,
+                        int x, int y) {
+  if (frame.width <= 0 || frame.height <= 0) return;
+  if (const Painted now{points_generation, frame}; !(painted_ == now)) {
+    splat_.paint(points, frame);
+    upload_drawn();
+    painted_ = now;
+  }
+  glViewport(x, y, frame.width, frame.height);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // the picture is premultiplied
+  program_.use();
+  glUniform2f(program_.uniform("u_framebuffer_size"), static_cast<float>(frame.width),
+              static_cast<float>(frame.height));
+  glUniform2i(program_.uniform("u_origin"), x, y);
+  glUniform1i(program_.uniform("u_picture"), 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  quads_.draw(splat_.drawn());
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+}
+
+}  // namespace ydscope::ui

@@ -1,0 +1,142 @@
+#include "ui/render/sprite_splat.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace ydscope::ui {
+namespace {
+
+constexpr float kByte = 1.0f / 255.0f;
+
+// A pixel's four channels, worked on together (GCC's vector extension: SIMD on x86 and ARM alike).
+using Channels = float __attribute__((vector_size(16)));
+using Bytes = std::uint8_t __attribute__((vector_size(4)));
+
+// Clamped to 0..1.
+float unit_clamp(float v) { return std::min(std::max(v, 0.0f), 1.0f); }
+
+// GLSL's smoothstep from 0 at `edge0` to 1 at `edge0 + 1 / inverse_width`.
+float smoothstep(float edge0, float inverse_width, float x) {
+  const float t = unit_clamp((x - edge0) * inverse_width);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+}  // namespace
+
+// points.frag's coverage (1 inside, falling to 0 over a pixel at the rim) and brightened core, at
+// the middle of each step of the squared distance from the centre (1 at the sprite's edge).
+void SpriteSplat::tabulate_shading(float point_size_px) {
+  const float rim = 2.0f / std::max(point_size_px, 1.0f), rim_from = 1.0f - rim, rim_inverse = 1.0f / rim;
+  constexpr float kCoreInverse = 1.0f / 0.6f;
+  shading_.resize(kShadingSteps);
+  for (std::size_t i = 0; i < shading_.size(); ++i) {
+    const float r = std::sqrt((static_cast<float>(i) + 0.5f) / static_cast<float>(kShadingSteps));
+    shading_[i] = {1.0f - smoothstep(rim_from, rim_inverse, r), 0.35f * (1.0f - smoothstep(0.0f, kCoreInverse, r))};
+  }
+  shaded_for_px_ = point_size_px;
+}
+
+void SpriteSplat::resize(int width, int height) {
+  frame_.width = width;
+  frame_.height = height;
+  pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
+  tile_columns_ = (width + kTilePx - 1) / kTilePx;
+  tile_rows_ = (height + kTilePx - 1) / kTilePx;
+  tile_drawn_.assign(static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_), 0);
+  drawn_.clear();
+}
+
+void SpriteSplat::clear_drawn() {
+  const auto row_bytes = static_cast<std::size_t>(frame_.width) * 4;
+  for (const PixelBox& run : drawn_)
+    for (int y = run.y; y < run.y + run.height; ++y)
+      std::memset(&pixels_[static_cast<std::size_t>(y) * row_bytes + static_cast<std::size_t>(run.x) * 4], 0,
+                  static_cast<std::size_t>(run.width) * 4);
+  std::fill(tile_drawn_.begin(), tile_drawn_.end(), 0);
+  drawn_.clear();
+}
+
+void SpriteSplat::paint(std::span<const PointVertex> points, const SplatFrame& frame) {
+  if (frame.width != frame_.width || frame.height != frame_.height)
+    resize(frame.width, frame.height);
+  else
+    clear_drawn();
+  frame_ = frame;
+  if (frame.width <= 0 || frame.height <= 0) return;
+  if (shaded_for_px_ != frame.point_size_px) tabulate_shading(frame.point_size_px);
+  // normalised device coordinates -> pixels, as GL's viewport transform
+  const float half_w = 0.5f * static_cast<float>(frame.width), half_h = 0.5f * static_cast<float>(frame.height);
+  for (const PointVertex& p : points)
+    splat(p, (p.x * frame.scale_x + frame.offset_x + 1.0f) * half_w,
+          (p.y * frame.scale_y + frame.offset_y + 1.0f) * half_h);
+  collect_runs();
+}
+
+// One sprite centred at (x, y) pixels: the pixels whose centres lie in its square, each shaded as
+// points.frag shades it and blended over what the picture holds.
+void SpriteSplat::splat(const PointVertex& point, float x, float y) {
+  const float size = frame_.point_size_px, half = 0.5f * size;
+  // Far outside (or not a number): nothing to draw, and no integer to make of it.
+  if (!(x > -size && y > -size && x < static_cast<float>(frame_.width) + size &&
+        y < static_cast<float>(frame_.height) + size))
+    return;
+  const int x0 = std::max(0, static_cast<int>(std::ceil(x - half - 0.5f)));
+  const int x1 = std::min(frame_.width, static_cast<int>(std::ceil(x + half - 0.5f)));
+  const int y0 = std::max(0, static_cast<int>(std::ceil(y - half - 0.5f)));
+  const int y1 = std::min(frame_.height, static_cast<int>(std::ceil(y + half - 0.5f)));
+  if (x0 >= x1 || y0 >= y1) return;
+  // points.vert: the rim a stack of points would have built up
+  const float alpha = static_cast<float>(point.colour.a) * kByte;
+  const float blocked_at_half = 1.0f - (point.half_clear < 0.0f ? 1.0f - 0.5f * alpha : point.half_clear);
+  const float rim_x = 4.0f * blocked_at_half - alpha, rim_y = 2.0f * alpha - 4.0f * blocked_at_half;
+  // The colour with a fourth channel of 1, so the blend below gives the alpha channel too.
+  const Channels colour{static_cast<float>(point.colour.r) * kByte, static_cast<float>(point.colour.g) * kByte,
+                        static_cast<float>(point.colour.b) * kByte, 1.0f};
+  const float to_unit = 2.0f / size;  // pixels to the sprite's radius
+  const auto stride = static_cast<std::size_t>(frame_.width) * 4;
+  // Held in locals: a store through a byte pointer may alias any member, which would be read
+  // again after every pixel.
+  const Shading* const shading_by_step = shading_.data();
+  std::uint8_t* const picture = pixels_.data();
+  for (int row = y0; row < y1; ++row) {
+    const float dy = (static_cast<float>(row) + 0.5f - y) * to_unit;
+    std::uint8_t* pixel = picture + static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(x0) * 4;
+    for (int column = x0; column < x1; ++column, pixel += 4) {
+      const float dx = (static_cast<float>(column) + 0.5f - x) * to_unit;
+      const float r_squared = dx * dx + dy * dy;
+      if (r_squared >= 1.0f) continue;  // outside the circle: the shader's discard
+      const Shading& shading = shading_by_step[static_cast<int>(r_squared * static_cast<float>(kShadingSteps))];
+      const float coverage = shading.coverage;
+      const float a = unit_clamp(coverage * (rim_x + rim_y * coverage));
+      // Premultiplied "over": the shaded colour times its alpha, plus what was there times 1 - a.
+      const Channels shaded = (colour + (1.0f - colour) * shading.brighten) * (a * 255.0f);
+      Bytes bytes;
+      std::memcpy(&bytes, pixel, sizeof bytes);
+      const Channels blended = shaded + __builtin_convertvector(bytes, Channels) * (1.0f - a) + 0.5f;
+      bytes = __builtin_convertvector(blended, Bytes);  // rounded: 0.5 added, then cut
+      std::memcpy(pixel, &bytes, sizeof bytes);
+    }
+  }
+  for (int ty = y0 / kTilePx; ty <= (y1 - 1) / kTilePx; ++ty)
+    for (int tx = x0 / kTilePx; tx <= (x1 - 1) / kTilePx; ++tx)
+      tile_drawn_[static_cast<std::size_t>(ty * tile_columns_ + tx)] = 1;
+}
+
+void SpriteSplat::collect_runs() {
+  for (int ty = 0; ty < tile_rows_; ++ty) {
+    const int y = ty * kTilePx, height = std::min(kTilePx, frame_.height - y);
+    for (int tx = 0; tx < tile_columns_;) {
+      if (tile_drawn_[static_cast<std::size_t>(ty * tile_columns_ + tx)] == 0) {
+        ++tx;
+        continue;
+      }
+      const int first = tx;
+      while (tx < tile_columns_ && tile_drawn_[static_cast<std::size_t>(ty * tile_columns_ + tx)] != 0) ++tx;
+      const int x = first * kTilePx;
+      drawn_.push_back({x, y, std::min(tx * kTilePx, frame_.width) - x, height});
+    }
+  }
+}
+
+}  // namespace ydscope::ui
