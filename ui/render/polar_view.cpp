@@ -164,9 +164,7 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
   const ColourParams colours = colours_for(settings, phase, several_laps);
   // Points are merged per pixel, so a zoom changes what is drawn; those outside the view are left
   // out, so a pan does too.
-  if (view_.px_per_mm() != merged_px_per_mm_ || !(view_.centre_world() == merged_centre_) ||
-      !(view_.viewport_size() == merged_size_) || !(view_.viewport_origin() == merged_origin_))
-    dirty_ = true;
+  if (!(merged_for_ == view_)) dirty_ = true;
   // New laps, a source moved, recoloured or dimmed: those layers are built again.
   if (clouds_.update(layers, colours, settings.interference, shape_dirty_)) {
     stats_ = clouds_.stats();
@@ -179,12 +177,9 @@ const PointCloudStats& PolarView::update_cloud(std::span<const SourceLayer> laye
     fade_cloud(clouds_.cloud(), colours, phase);
     // The merge replaces what it is given; the cloud is kept for the next fade.
     copy_seen(clouds_.cloud().vertices, settings.point_size_px);
-    if (merged_px_per_mm_ != view_.px_per_mm()) ++sprites_moved_;
-    merged_px_per_mm_ = view_.px_per_mm();
-    merger_.merge(vertices_, 1.0f / merged_px_per_mm_);
-    merged_centre_ = view_.centre_world();
-    merged_size_ = view_.viewport_size();
-    merged_origin_ = view_.viewport_origin();
+    if (!merged_for_ || merged_for_->px_per_mm() != view_.px_per_mm()) ++sprites_moved_;
+    merger_.merge(vertices_, 1.0f / view_.px_per_mm());
+    merged_for_ = view_;
     upload_if_dirty(phase);
   }
   return stats_;
@@ -203,14 +198,13 @@ void PolarView::copy_seen(const std::vector<PointVertex>& cloud, float point_siz
 }
 
 const TileCover& PolarView::sprite_cover(float point_size_px) {
-  const CoverKey key{sprites_moved_,       view_.viewport_origin(), view_.viewport_size(),
-                     view_.centre_world(), view_.px_per_mm(),       point_size_px};
+  const CoverKey key{sprites_moved_, view_, point_size_px};
   if (key == cover_key_) return cover_;
   cover_key_ = key;
   const Vec2 origin = view_.viewport_origin(), size = view_.viewport_size();
   cover_ = TileCover({origin.x, origin.y, origin.x + size.x, origin.y + size.y}, kCoverTilePx);
-  // Half the sprite, its antialiased rim and a pixel for where GL rounds its centre.
-  const float reach = 0.5f * point_size_px + 1.5f;
+  // And half a pixel for where GL rounds a sprite's centre.
+  const float reach = PolarRenderer::sprite_reach_px(point_size_px) + 0.5f;
   for (const PointVertex& v : vertices_) {
     const Vec2 at = view_.world_to_screen({v.x, v.y});
     cover_.mark({at.x - reach, at.y - reach, at.x + reach, at.y + reach});
@@ -219,10 +213,8 @@ const TileCover& PolarView::sprite_cover(float point_size_px) {
 }
 
 void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings) {
-  const float key[6] = {view_.px_per_mm(),       view_.centre_world().x,  view_.centre_world().y,
-                        view_.viewport_size().x, view_.viewport_size().y, status_band_px_};
-  if (!std::equal(std::begin(key), std::end(key), std::begin(grid_key_))) {
-    std::copy(std::begin(key), std::end(key), std::begin(grid_key_));
+  if (const GridKey key{view_, status_band_px_}; !(key == grid_key_)) {
+    grid_key_ = key;
     grid_ = layout_grid(view_, ring_spacing_px(view_.viewport_size()), 30.0f, 225.0f, 18.0f, status_band_px_);
     build_grid_geometry(view_, grid_, PolarStyle{}.grid, grid_lines_);
     renderer_.upload_grid(grid_lines_);

@@ -95,8 +95,13 @@ class PolarView {
   std::vector<LineVertex> grid_lines_;
   GridLayout grid_;
   float status_band_px_ = 0.0f;
-  // The grid is rebuilt only when the view moved: (px/mm, centre x, centre y, width, height, band).
-  float grid_key_[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  // The grid is rebuilt only when the view moved or its status band changed.
+  struct GridKey {
+    ViewTransform view;
+    float status_band_px = -1.0f;
+    friend bool operator==(const GridKey&, const GridKey&) = default;
+  };
+  GridKey grid_key_;
   PointCloudStats stats_;
   bool shape_dirty_ = true;  // every layer's cloud must be built again (the colours, the filter, asked)
   bool dirty_ = true;        // faded, merged and uploaded again (a new phase, a zoom)
@@ -107,8 +112,8 @@ class PolarView {
   std::uint64_t sprites_moved_ = 0;
   struct CoverKey {
     std::uint64_t sprites_moved = ~std::uint64_t{0};
-    Vec2 origin, size, centre;
-    float px_per_mm = 0.0f, point_size_px = 0.0f;
+    ViewTransform view;
+    float point_size_px = 0.0f;
     friend bool operator==(const CoverKey&, const CoverKey&) = default;
   };
   CoverKey cover_key_;
@@ -132,8 +137,7 @@ class PolarView {
   float extent_mm_ = 0.0f;                   // what auto-range fits: robust_extent_mm with a margin
   PixelMerger merger_;
   std::size_t points_shown_ = 0;
-  float merged_px_per_mm_ = 0.0f;  // the zoom the cloud was merged at, and where the view was
-  Vec2 merged_centre_, merged_size_, merged_origin_;
+  std::optional<ViewTransform> merged_for_;  // the framing the cloud was merged and cut to
   std::vector<SourceMark> marks_;
   std::optional<DropoutRingShape> dropouts_;
   std::optional<ZoneShapes> zones_;

@@ -35,6 +35,9 @@ class ViewTransform {
   // Largest distance from the lidar to any visible pixel, so rings are laid out only where seen.
   float visible_radius_mm() const;
   bool contains_screen(Vec2 screen_px) const;
+  // The same framing: where on the screen, how large, centred where, at what zoom. What is drawn
+  // from the view (its grid, its merged points, their cover) is kept until it changes.
+  friend bool operator==(const ViewTransform&, const ViewTransform&) = default;
 
  private:
   Vec2 origin_{0.0f, 0.0f};
