@@ -1,10 +1,8 @@
 #include "ui/render/backdrop_picture.h"
 
-#include "ui/embedded_shaders.h"
-
 namespace ydscope::ui {
 
-BackdropPicture::BackdropPicture() : program_("backdrop", shaders::k_laid_picture_vert, shaders::k_laid_picture_frag) {
+BackdropPicture::BackdropPicture() {
   glGenTextures(1, &texture_);
   glGenFramebuffers(1, &framebuffer_);
 }
@@ -33,18 +31,9 @@ void BackdropPicture::begin(int width, int height) {
 void BackdropPicture::end() { glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(drawing_to_)); }
 
 void BackdropPicture::lay(std::span<const PixelBox> boxes) {
-  glViewport(0, 0, width_, height_);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
-  program_.use();
-  glUniform2f(program_.uniform("u_framebuffer_size"), static_cast<float>(width_), static_cast<float>(height_));
-  glUniform2i(program_.uniform("u_origin"), 0, 0);
-  glUniform1i(program_.uniform("u_picture"), 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, texture_);
-  quads_.draw(boxes);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glUseProgram(0);
+  layer_.lay(texture_, {0, 0, width_, height_}, boxes);
 }
 
 }  // namespace ydscope::ui

@@ -7,8 +7,7 @@
 // one pass, which replaces both the box's clear and its grid.
 #include <span>
 
-#include "ui/render/box_quads.h"
-#include "ui/render/gl_program.h"
+#include "ui/render/picture_layer.h"
 #include "ui/render/screen_boxes.h"
 
 namespace ydscope::ui {
@@ -28,8 +27,7 @@ class BackdropPicture {
   void lay(std::span<const PixelBox> boxes);
 
  private:
-  GlProgram program_;
-  BoxQuads quads_;
+  PictureLayer layer_;
   GLuint texture_ = 0, framebuffer_ = 0;
   int width_ = 0, height_ = 0;
   GLint drawing_to_ = 0;  // the framebuffer that was bound at begin

@@ -55,19 +55,23 @@ bool draws_points_on_cpu(PointDrawing drawing) {
 }  // namespace
 
 PolarRenderer::PolarRenderer(PointDrawing drawing)
-    : point_program_("point", shaders::k_points_vert, shaders::k_points_frag),
-      line_program_("grid line", shaders::k_lines_vert, shaders::k_lines_frag) {
-  create_vertex_array(points_.vao, points_.vbo, sizeof(PointVertex),
-                      {{2, GL_FLOAT, GL_FALSE, offsetof(PointVertex, x)},
-                       {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(PointVertex, colour)},
-                       {1, GL_FLOAT, GL_FALSE, offsetof(PointVertex, half_clear)}});
+    : line_program_("grid line", shaders::k_lines_vert, shaders::k_lines_frag) {
+  // One way of drawing the sprites is made, not both: a program is a compile at start-up.
+  if (draws_points_on_cpu(drawing)) {
+    splat_ = std::make_unique<SplatPicture>();
+  } else {
+    point_program_ = GlProgram("point", shaders::k_points_vert, shaders::k_points_frag);
+    create_vertex_array(points_.vao, points_.vbo, sizeof(PointVertex),
+                        {{2, GL_FLOAT, GL_FALSE, offsetof(PointVertex, x)},
+                         {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(PointVertex, colour)},
+                         {1, GL_FLOAT, GL_FALSE, offsetof(PointVertex, half_clear)}});
+  }
   create_vertex_array(lines_.vao, lines_.vbo, sizeof(LineVertex),
                       {{2, GL_FLOAT, GL_FALSE, offsetof(LineVertex, x)},
                        {1, GL_FLOAT, GL_FALSE, offsetof(LineVertex, edge_px)},
                        {4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(LineVertex, colour)}});
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  if (draws_points_on_cpu(drawing)) splat_ = std::make_unique<SplatPicture>();
 }
 
 PolarRenderer::~PolarRenderer() {

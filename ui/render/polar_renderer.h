@@ -42,7 +42,6 @@ class PolarRenderer {
   void upload_points(std::span<const PointVertex> points);
   void upload_grid(std::span<const LineVertex> lines);
   std::size_t uploaded_points() const { return points_.count; }
-  bool points_on_cpu() const { return splat_ != nullptr; }
   // How far outside the view (window pixels) a sprite `point_size_px` across may have its centre
   // and still reach into it: the points are drawn in a viewport this much larger than the view
   // (the scissor keeps them to it), so none that shows needs clipping, and a caller may leave out
@@ -65,7 +64,7 @@ class PolarRenderer {
   };
   static void upload(Buffer& buffer, const void* data, std::size_t bytes, std::size_t count);
 
-  GlProgram point_program_;
+  GlProgram point_program_;  // drawing GL points only
   GlProgram line_program_;
   Buffer points_;
   Buffer lines_;

@@ -1,12 +1,8 @@
 #include "ui/render/splat_picture.h"
 
-#include "ui/embedded_shaders.h"
-
 namespace ydscope::ui {
 
-SplatPicture::SplatPicture() : program_("splat", shaders::k_laid_picture_vert, shaders::k_laid_picture_frag) {
-  glGenTextures(1, &texture_);
-}
+SplatPicture::SplatPicture() { glGenTextures(1, &texture_); }
 
 SplatPicture::~SplatPicture() { glDeleteTextures(1, &texture_); }
 
@@ -41,19 +37,9 @@ void SplatPicture::draw(std::span<const PointVertex> points, std::uint64_t point
     upload_drawn();
     painted_ = now;
   }
-  glViewport(x, y, frame.width, frame.height);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // the picture is premultiplied
-  program_.use();
-  glUniform2f(program_.uniform("u_framebuffer_size"), static_cast<float>(frame.width),
-              static_cast<float>(frame.height));
-  glUniform2i(program_.uniform("u_origin"), x, y);
-  glUniform1i(program_.uniform("u_picture"), 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, texture_);
-  quads_.draw(splat_.drawn());
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glUseProgram(0);
+  layer_.lay(texture_, {x, y, frame.width, frame.height}, splat_.drawn());
 }
 
 }  // namespace ydscope::ui

@@ -6,8 +6,7 @@
 #include <optional>
 #include <span>
 
-#include "ui/render/box_quads.h"
-#include "ui/render/gl_program.h"
+#include "ui/render/picture_layer.h"
 #include "ui/render/sprite_splat.h"
 
 namespace ydscope::ui {
@@ -29,8 +28,7 @@ class SplatPicture {
   void upload_drawn();
 
   SpriteSplat splat_;
-  GlProgram program_;
-  BoxQuads quads_;
+  PictureLayer layer_;
   GLuint texture_ = 0;
   int texture_width_ = 0, texture_height_ = 0;
   struct Painted {
