@@ -229,8 +229,11 @@ std::vector<ui::PixelBox> ViewStage::draw_boxes(std::span<const ui::DisplayBox> 
       clear(sidebar, ui::sidebar_background());
   }
   // The GL layer stays in the view: a point at its edge does not spill onto the panels.
+  bool points_drawn = false;
   if (plan.backdrop) {
-    backdrop_->lay(in_view);
+    // Sprites drawn on the CPU come painted over the backdrop: one pass lays both.
+    points_drawn = view_->lay_gl_over(*backdrop_, in_view, settings, fb_scale, fb_h);
+    if (!points_drawn) backdrop_->lay(in_view);
     glEnable(GL_SCISSOR_TEST);
   } else {
     for (const ui::PixelBox& part : in_view)
@@ -239,7 +242,9 @@ std::vector<ui::PixelBox> ViewStage::draw_boxes(std::span<const ui::DisplayBox> 
         draw_gl(ui::GlLayer::grid);
       }
   }
-  if (plan.points_once && !boxes.empty()) {
+  if (points_drawn) {
+    // laid with the backdrop
+  } else if (plan.points_once && !boxes.empty()) {
     // Every point lies in the boxes, so one pass over the view draws each box's and nothing
     // else: the points go through the pipeline once, not once a box.
     scissor(ui::to_pixels(view, fb_scale, fb_h));

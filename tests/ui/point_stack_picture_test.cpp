@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tests/ui/offscreen_gl.h"
+#include "ui/render/backdrop_picture.h"
 #include "ui/render/polar_renderer.h"
 #include "ui/view/scene/pixel_merge.h"
 
@@ -127,30 +128,42 @@ TEST_P(PointStackPicture, ASpriteAcrossTheViewsEdgeShowsItsPartInside) {
 // picture the CPU draws of it is the one GL draws, within the rounding of a blend or two.
 class SpritesOnTheCpu : public PointStackPicture {};  // draws both ways itself
 
-TEST_F(SpritesOnTheCpu, AreTheSpritesGlDraws) {
-  PolarRenderer on_gl(PointDrawing::gl), on_cpu(PointDrawing::cpu);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<float> across(-1100.0f, 1100.0f);  // a little past the view's edges
+// `count` sprites of every colour, alpha and rim, a little past the view's edges.
+std::vector<PointVertex> random_cloud(unsigned seed, int count) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> across(-1100.0f, 1100.0f);
   std::uniform_int_distribution<int> byte(0, 255);
   std::uniform_real_distribution<float> clear(0.0f, 1.0f);
   std::vector<PointVertex> cloud;
-  for (int i = 0; i < 120; ++i) {
+  for (int i = 0; i < count; ++i) {
     const auto channel = [&] { return static_cast<std::uint8_t>(byte(random)); };
     cloud.push_back({across(random),
                      across(random),
                      {channel(), channel(), channel(), channel()},
                      i % 3 == 0 ? clear(random) : -1.0f});
   }
+  return cloud;
+}
+
+// The two pictures agree within the rounding of a blend or two: no channel more than 4 levels
+// apart, and at most one in a thousand more than 2.
+void expect_alike(const std::vector<unsigned char>& gl, const std::vector<unsigned char>& cpu, float size_px) {
+  int apart = 0;
+  for (std::size_t i = 0; i < gl.size(); ++i)
+    if (i % 4 != 3 && std::abs(gl[i] - cpu[i]) > 2) ++apart;
+  EXPECT_LE(largest_difference(gl, cpu), 4) << size_px << " px points";
+  EXPECT_LE(apart, static_cast<int>(gl.size() / 1000)) << size_px << " px points: channels more than 2 apart";
+}
+
+TEST_F(SpritesOnTheCpu, AreTheSpritesGlDraws) {
+  PolarRenderer on_gl(PointDrawing::gl), on_cpu(PointDrawing::cpu);
+  const std::vector<PointVertex> cloud = random_cloud(7, 120);
   for (const float size_px : {3.0f, 7.0f}) {
     const auto gl = picture(on_gl, cloud, size_px);
     const auto cpu = picture(on_cpu, cloud, size_px);
     // The CPU lays its sprites over nothing and the picture over the view once, GL blends each
     // over the view: the roundings differ by a level or two where sprites pile up.
-    int apart = 0;
-    for (std::size_t i = 0; i < gl.size(); ++i)
-      if (i % 4 != 3 && std::abs(gl[i] - cpu[i]) > 2) ++apart;
-    EXPECT_LE(largest_difference(gl, cpu), 4) << size_px << " px points";
-    EXPECT_LE(apart, static_cast<int>(gl.size() / 1000)) << size_px << " px points: channels more than 2 apart";
+    expect_alike(gl, cpu, size_px);
     // Not a vacuous match: the sprites are there, and a cloud moved by half a pixel is not the same.
     const std::vector<unsigned char> background = picture(on_gl, {}, size_px);
     EXPECT_GT(largest_difference(gl, background), 100);
@@ -158,6 +171,68 @@ TEST_F(SpritesOnTheCpu, AreTheSpritesGlDraws) {
     for (PointVertex& p : moved) p.x += 0.5f * cell_mm();
     EXPECT_GT(largest_difference(picture(on_cpu, moved, size_px), gl), 20) << size_px << " px points";
   }
+}
+
+// A frame drawn in parts lays the view's backdrop into its boxes; the sprites drawn on the CPU come
+// painted over it, in the same pass. That must be the backdrop with GL's sprites over it, in the
+// boxes and nowhere else, and a next frame's sprites must leave nothing of the last behind.
+TEST_F(SpritesOnTheCpu, LaidWithTheBackdropAreGlsSpritesOverIt) {
+  PolarRenderer on_gl(PointDrawing::gl), on_cpu(PointDrawing::cpu);
+  BackdropPicture backdrop;  // two colours, so a pixel taken from the wrong place shows
+  backdrop.begin(kSide, kSide);
+  glClearColor(9 / 255.0f, 11 / 255.0f, 15 / 255.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, kSide / 2, kSide);
+  glClearColor(60 / 255.0f, 30 / 255.0f, 90 / 255.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  backdrop.end();
+  const std::vector<PixelBox> whole{{0, 0, kSide, kSide}}, left_half{{0, 0, kSide / 2, kSide}};
+  const auto fill = [] {
+    glClearColor(1.0f, 0.0f, 1.0f, 1.0f);  // what the framebuffer held: none of it may stay in a box
+    glClear(GL_COLOR_BUFFER_BIT);
+  };
+  const auto on_gl_picture = [&](const std::vector<PointVertex>& cloud, const PolarStyle& style) {
+    fill();
+    on_gl.upload_points(cloud);
+    backdrop.lay(whole);
+    on_gl.draw(view_, style, 1.0f, kSide, GlLayer::points);
+    return picture_as_drawn();
+  };
+  for (const float size_px : {3.0f, 7.0f}) {
+    PolarStyle style;
+    style.point_size_px = size_px;
+    style.show_grid = false;
+    std::vector<PointVertex> cloud = random_cloud(11, 120);
+    const auto gl = on_gl_picture(cloud, style);
+    fill();
+    on_cpu.upload_points(cloud);
+    ASSERT_TRUE(on_cpu.lay_points_over(backdrop, whole, view_, style, 1.0f, kSide));
+    expect_alike(gl, picture_as_drawn(), size_px);
+
+    // The next frame's sprites, elsewhere, laid in the left half only.
+    for (PointVertex& p : cloud) p.x = -p.x;
+    const auto gl_next = on_gl_picture(cloud, style);
+    fill();
+    on_cpu.upload_points(cloud);
+    ASSERT_TRUE(on_cpu.lay_points_over(backdrop, left_half, view_, style, 1.0f, kSide));
+    const std::vector<unsigned char> cpu_next = picture_as_drawn();
+    int outside_box_laid = 0, inside_box_apart = 0;
+    for (std::size_t i = 0; i < cpu_next.size(); i += 4) {
+      const bool in_box = static_cast<int>(i / 4 % kSide) < kSide / 2;
+      const bool untouched = cpu_next[i] == 255 && cpu_next[i + 1] == 0 && cpu_next[i + 2] == 255;
+      if (!in_box && !untouched) ++outside_box_laid;
+      for (std::size_t c = 0; c < 3; ++c)
+        if (in_box && std::abs(cpu_next[i + c] - gl_next[i + c]) > 4) ++inside_box_apart;
+    }
+    EXPECT_EQ(outside_box_laid, 0) << size_px << " px points: laid outside its boxes";
+    EXPECT_EQ(inside_box_apart, 0) << size_px << " px points: the box is not the backdrop with the new sprites";
+  }
+  // A box past the view's pixels, or sprites drawn by GL: the caller lays the backdrop itself.
+  PolarStyle style;
+  EXPECT_FALSE(on_cpu.lay_points_over(backdrop, std::vector<PixelBox>{{-1, 0, 4, 4}}, view_, style, 1.0f, kSide));
+  EXPECT_FALSE(on_gl.lay_points_over(backdrop, whole, view_, style, 1.0f, kSide));
 }
 
 INSTANTIATE_TEST_SUITE_P(DrawnBothWays, PointStackPicture, testing::Values(PointDrawing::gl, PointDrawing::cpu),

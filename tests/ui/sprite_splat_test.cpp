@@ -107,5 +107,51 @@ TEST(SpriteSplat, PointsFarAwayOrNotANumberDrawNothing) {
   EXPECT_TRUE(splat.drawn().empty());
 }
 
+// Over a ground (the view's backdrop) the picture is the ground wherever no sprite lands, a sprite
+// is blended over it, and what changed since the last paint is said: the tiles either paint drew
+// in, or all of them once the ground is another.
+TEST(SpriteSplat, OverAGroundTheRestIsTheGroundAndWhatChangedIsSaid) {
+  std::vector<std::uint8_t> ground(static_cast<std::size_t>(kWidth) * kHeight * 4);
+  for (std::size_t i = 0; i < ground.size(); ++i) ground[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(i % 97);
+  const auto ground_at = [&](int x, int y, int channel) {
+    return ground[(static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4 +
+                  static_cast<std::size_t>(channel)];
+  };
+  const auto pixel_at = [](const SpriteSplat& splat, int x, int y, int channel) {
+    return splat.pixels()[(static_cast<std::size_t>(y) * kWidth + static_cast<std::size_t>(x)) * 4 +
+                          static_cast<std::size_t>(channel)];
+  };
+  const auto tiles = [](const std::vector<PixelBox>& runs) {
+    int area = 0;
+    for (const PixelBox& run : runs) area += run.width * run.height;
+    return area;
+  };
+  SpriteSplat splat;
+  splat.paint(std::vector<PointVertex>{at_pixel(20.5f, 10.5f)}, frame_of(), {ground, 1});
+  EXPECT_EQ(pixel_at(splat, 20, 10, 0), 255) << "an opaque white sprite's centre";
+  EXPECT_EQ(pixel_at(splat, 60, 40, 0), ground_at(60, 40, 0)) << "away from the sprite, the ground";
+  EXPECT_EQ(pixel_at(splat, 21, 10, 3), 255) << "over an opaque ground the picture is opaque";
+  EXPECT_GT(pixel_at(splat, 21, 10, 0), ground_at(21, 10, 0)) << "the sprite's rim is blended over the ground";
+  EXPECT_EQ(tiles(splat.changed()), kWidth * kHeight) << "a first paint changes all of it";
+
+  // Moved: the old sprite's tile is the ground again, and both tiles are said changed.
+  splat.paint(std::vector<PointVertex>{at_pixel(70.5f, 40.5f)}, frame_of(), {ground, 1});
+  for (int channel = 0; channel < 4; ++channel)
+    EXPECT_EQ(pixel_at(splat, 20, 10, channel), ground_at(20, 10, channel)) << "channel " << channel;
+  EXPECT_EQ(tiles(splat.changed()), 2 * 16 * 16);
+  EXPECT_EQ(tiles(splat.drawn()), 16 * 16);
+
+  // Another ground (the backdrop drawn again): everything changed, the new ground under it all.
+  for (std::uint8_t& byte : ground) byte = static_cast<std::uint8_t>(byte ^ 0x55);
+  splat.paint(std::vector<PointVertex>{at_pixel(70.5f, 40.5f)}, frame_of(), {ground, 2});
+  EXPECT_EQ(tiles(splat.changed()), kWidth * kHeight);
+  EXPECT_EQ(pixel_at(splat, 20, 10, 1), ground_at(20, 10, 1));
+
+  // Back to nothing under: clear where no sprite is, as before.
+  splat.paint(std::vector<PointVertex>{at_pixel(70.5f, 40.5f)}, frame_of());
+  EXPECT_EQ(alpha_at(splat, 20, 10), 0);
+  EXPECT_EQ(tiles(splat.changed()), kWidth * kHeight);
+}
+
 }  // namespace
 }  // namespace ydscope::ui

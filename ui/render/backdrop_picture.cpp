@@ -1,5 +1,7 @@
 #include "ui/render/backdrop_picture.h"
 
+#include <algorithm>
+
 namespace ydscope::ui {
 
 BackdropPicture::BackdropPicture() {
@@ -28,7 +30,22 @@ void BackdropPicture::begin(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
-void BackdropPicture::end() { glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(drawing_to_)); }
+void BackdropPicture::end() {
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(drawing_to_));
+  ++generation_;
+}
+
+void BackdropPicture::read(const PixelBox& part, std::vector<std::uint8_t>& pixels) const {
+  pixels.resize(static_cast<std::size_t>(std::max(part.width, 0)) * static_cast<std::size_t>(std::max(part.height, 0)) *
+                4);
+  if (part.empty()) return;
+  GLint reading_from = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading_from);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(part.x, part.y, part.width, part.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(reading_from));
+}
 
 void BackdropPicture::lay(std::span<const PixelBox> boxes) {
   glDisable(GL_BLEND);

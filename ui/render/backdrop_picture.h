@@ -5,7 +5,9 @@
 // the boxes saved. The picture is drawn once when the grid changes (its caller draws it between
 // begin and end, exactly as into the window) and then laid, pixel for pixel, into every box in
 // one pass, which replaces both the box's clear and its grid.
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "ui/render/picture_layer.h"
 #include "ui/render/screen_boxes.h"
@@ -25,12 +27,18 @@ class BackdropPicture {
   // Copies the picture's pixels in `boxes` (framebuffer pixels) to the framebuffer bound, as they
   // are: no blend, no scissor.
   void lay(std::span<const PixelBox> boxes);
+  // The picture's pixels in `part` (framebuffer pixels, inside the picture) into `pixels`: RGBA,
+  // bottom row first. For the sprites drawn on the CPU over it (splat_picture.h).
+  void read(const PixelBox& part, std::vector<std::uint8_t>& pixels) const;
+  // Changes each time the picture is drawn.
+  std::uint64_t generation() const { return generation_; }
 
  private:
   PictureLayer layer_;
   GLuint texture_ = 0, framebuffer_ = 0;
   int width_ = 0, height_ = 0;
   GLint drawing_to_ = 0;  // the framebuffer that was bound at begin
+  std::uint64_t generation_ = 0;
 };
 
 }  // namespace ydscope::ui

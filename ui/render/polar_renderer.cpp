@@ -105,14 +105,49 @@ void PolarRenderer::upload_grid(std::span<const LineVertex> lines) {
   upload(lines_, lines.data(), lines.size_bytes(), lines.size());
 }
 
-void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
-                         int framebuffer_height, GlLayer layer) const {
+PixelBox PolarRenderer::viewport_of(const ViewTransform& view, float framebuffer_scale, int framebuffer_height) {
   const Vec2 origin = view.viewport_origin() * framebuffer_scale;
   const Vec2 size = view.viewport_size() * framebuffer_scale;
-  const auto x = static_cast<GLint>(std::lround(origin.x));
-  const auto w = static_cast<GLsizei>(std::lround(size.x));
-  const auto h = static_cast<GLsizei>(std::lround(size.y));
-  const auto y = static_cast<GLint>(framebuffer_height - std::lround(origin.y) - h);
+  const auto width = static_cast<int>(std::lround(size.x)), height = static_cast<int>(std::lround(size.y));
+  return {static_cast<int>(std::lround(origin.x)),
+          framebuffer_height - static_cast<int>(std::lround(origin.y)) - height, width, height};
+}
+
+SplatFrame PolarRenderer::splat_frame(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
+                                      const PixelBox& pixels) {
+  const NdcTransform ndc = view.ndc_transform();
+  return {ndc.scale_x,
+          ndc.scale_y,
+          ndc.offset_x,
+          ndc.offset_y,
+          pixels.width,
+          pixels.height,
+          style.point_size_px * framebuffer_scale};
+}
+
+bool PolarRenderer::lay_points_over(const BackdropPicture& backdrop, std::span<const PixelBox> boxes,
+                                    const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
+                                    int framebuffer_height) const {
+  if (!splat_) return false;
+  const PixelBox pixels = viewport_of(view, framebuffer_scale, framebuffer_height);
+  std::vector<PixelBox> in_picture;
+  for (const PixelBox& box : boxes) {
+    if (box.empty()) continue;
+    if (box.x < pixels.x || box.y < pixels.y || box.x + box.width > pixels.x + pixels.width ||
+        box.y + box.height > pixels.y + pixels.height)
+      return false;
+    in_picture.push_back({box.x - pixels.x, box.y - pixels.y, box.width, box.height});
+  }
+  splat_->lay_over(backdrop, in_picture, cpu_points_, uploads_, splat_frame(view, style, framebuffer_scale, pixels),
+                   pixels.x, pixels.y);
+  return true;
+}
+
+void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
+                         int framebuffer_height, GlLayer layer) const {
+  const PixelBox pixels = viewport_of(view, framebuffer_scale, framebuffer_height);
+  const GLint x = pixels.x, y = pixels.y;
+  const GLsizei w = pixels.width, h = pixels.height;
   glViewport(x, y, w, h);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -130,9 +165,7 @@ void PolarRenderer::draw(const ViewTransform& view, const PolarStyle& style, flo
   }
 
   if (layer == GlLayer::points && splat_) {
-    const SplatFrame frame{
-        ndc.scale_x, ndc.scale_y, ndc.offset_x, ndc.offset_y, w, h, style.point_size_px * framebuffer_scale};
-    splat_->draw(cpu_points_, uploads_, frame, x, y);
+    splat_->draw(cpu_points_, uploads_, splat_frame(view, style, framebuffer_scale, pixels), x, y);
   } else if (layer == GlLayer::points && points_.count > 0) {
     // The viewport grows by a sprite's reach on each side, and the transform shrinks to match.
     const auto margin = static_cast<GLint>(std::ceil(sprite_reach_px(style.point_size_px) * framebuffer_scale)) + 1;

@@ -9,7 +9,9 @@
 #include <span>
 #include <vector>
 
+#include "ui/render/backdrop_picture.h"
 #include "ui/render/gl_program.h"
+#include "ui/render/screen_boxes.h"
 #include "ui/render/splat_picture.h"
 #include "ui/view/geometry/grid_geometry.h"
 #include "ui/view/scene/point_cloud.h"
@@ -54,6 +56,13 @@ class PolarRenderer {
   // points, though a frame drawn in parts may draw every part's grid and then the points once.
   void draw(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale, int framebuffer_height,
             GlLayer layer) const;
+  // With the sprites drawn on the CPU: lays `backdrop` (the framebuffer's picture, the grid and
+  // what lies under it) with the points over it into `boxes` (framebuffer pixels) in one pass, in
+  // place of what they held, and returns true. False, having drawn nothing, when the sprites are
+  // GL points or a box reaches outside the view's pixels: the caller then lays the backdrop and
+  // draws the points.
+  bool lay_points_over(const BackdropPicture& backdrop, std::span<const PixelBox> boxes, const ViewTransform& view,
+                       const PolarStyle& style, float framebuffer_scale, int framebuffer_height) const;
 
  private:
   struct Buffer {
@@ -63,6 +72,11 @@ class PolarRenderer {
     std::size_t count = 0;
   };
   static void upload(Buffer& buffer, const void* data, std::size_t bytes, std::size_t count);
+  // The view's framebuffer pixels, as its viewport.
+  static PixelBox viewport_of(const ViewTransform& view, float framebuffer_scale, int framebuffer_height);
+  // The CPU's sprites framed for the view, its viewport `pixels`.
+  static SplatFrame splat_frame(const ViewTransform& view, const PolarStyle& style, float framebuffer_scale,
+                                const PixelBox& pixels);
 
   GlProgram point_program_;  // drawing GL points only
   GlProgram line_program_;

@@ -239,12 +239,21 @@ void PolarView::lay_out(const LapHistory& history, const ViewSettings& settings)
   draw_polar_overlay(ImGui::GetBackgroundDrawList(), overlay);
 }
 
-void PolarView::draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height,
-                        GlLayer layer) const {
+PolarStyle PolarView::style_of(const ViewSettings& settings) {
   PolarStyle style;
   style.point_size_px = settings.point_size_px;
   style.show_grid = settings.show_grid;
-  renderer_.draw(view_, style, framebuffer_scale, framebuffer_height, layer);
+  return style;
+}
+
+void PolarView::draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height,
+                        GlLayer layer) const {
+  renderer_.draw(view_, style_of(settings), framebuffer_scale, framebuffer_height, layer);
+}
+
+bool PolarView::lay_gl_over(const BackdropPicture& backdrop, std::span<const PixelBox> boxes,
+                            const ViewSettings& settings, float framebuffer_scale, int framebuffer_height) const {
+  return renderer_.lay_points_over(backdrop, boxes, view_, style_of(settings), framebuffer_scale, framebuffer_height);
 }
 
 }  // namespace ydscope::ui

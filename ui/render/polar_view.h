@@ -72,6 +72,10 @@ class PolarView {
   // One of the GL layers: the grid lines or the points. After ImGui::Render, before ImGui's own
   // draw data; the grid first.
   void draw_gl(const ViewSettings& settings, float framebuffer_scale, int framebuffer_height, GlLayer layer) const;
+  // Both layers at once, the grid from `backdrop`, into `boxes` when the renderer can
+  // (PolarRenderer::lay_points_over); false when the caller must lay and draw them.
+  bool lay_gl_over(const BackdropPicture& backdrop, std::span<const PixelBox> boxes, const ViewSettings& settings,
+                   float framebuffer_scale, int framebuffer_height) const;
   // Changes whenever the GL layer would draw something else (a new cloud or grid uploaded).
   std::uint64_t gl_generation() const { return gl_generation_; }
   // Changes whenever the grid is built again: the view moved, zoomed or was resized.
@@ -88,6 +92,7 @@ class PolarView {
   std::size_t points_shown() const { return points_shown_; }
 
  private:
+  static PolarStyle style_of(const ViewSettings& settings);
   PolarRenderer renderer_;
   ViewTransform view_;
   Ruler ruler_;

@@ -73,32 +73,50 @@ void SpriteSplat::tabulate_shading(float point_size_px) {
   shaded_for_px_ = point_size_px;
 }
 
-void SpriteSplat::resize(int width, int height) {
-  frame_.width = width;
-  frame_.height = height;
-  pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
+// A new size, or another ground: the whole picture is its ground again, and every tile changed.
+void SpriteSplat::start_over(int width, int height, const SplatGround& ground) {
+  frame_.width = width = std::max(width, 0);
+  frame_.height = height = std::max(height, 0);
+  if (ground.pixels.empty())
+    pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
+  else
+    pixels_.assign(ground.pixels.begin(), ground.pixels.end());
   tile_columns_ = (width + kTilePx - 1) / kTilePx;
   tile_rows_ = (height + kTilePx - 1) / kTilePx;
-  tile_drawn_.assign(static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_), 0);
-  drawn_.clear();
+  tile_marks_.assign(static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_), kChanged);
 }
 
-void SpriteSplat::clear_drawn() {
+// The last paint's tiles back to the ground: they, and only they, change.
+void SpriteSplat::restore_drawn(const SplatGround& ground) {
   const auto row_bytes = static_cast<std::size_t>(frame_.width) * 4;
   for (const PixelBox& run : drawn_)
-    for (int y = run.y; y < run.y + run.height; ++y)
-      std::memset(&pixels_[static_cast<std::size_t>(y) * row_bytes + static_cast<std::size_t>(run.x) * 4], 0,
-                  static_cast<std::size_t>(run.width) * 4);
-  std::fill(tile_drawn_.begin(), tile_drawn_.end(), 0);
-  drawn_.clear();
+    for (int y = run.y; y < run.y + run.height; ++y) {
+      const std::size_t at = static_cast<std::size_t>(y) * row_bytes + static_cast<std::size_t>(run.x) * 4;
+      const auto bytes = static_cast<std::size_t>(run.width) * 4;
+      if (ground.pixels.empty())
+        std::memset(&pixels_[at], 0, bytes);
+      else
+        std::memcpy(&pixels_[at], &ground.pixels[at], bytes);
+    }
+  for (std::uint8_t& marks : tile_marks_) marks = (marks & kDrawn) != 0 ? kChanged : 0;
 }
 
-void SpriteSplat::paint(std::span<const PointVertex> points, const SplatFrame& frame) {
-  if (frame.width != frame_.width || frame.height != frame_.height)
-    resize(frame.width, frame.height);
+void SpriteSplat::paint(std::span<const PointVertex> points, const SplatFrame& frame, const SplatGround& ground) {
+  // A ground of another size than the frame's is none: it would be read past its end.
+  const bool grounded =
+      !ground.pixels.empty() && ground.pixels.size() == static_cast<std::size_t>(std::max(frame.width, 0)) *
+                                                            static_cast<std::size_t>(std::max(frame.height, 0)) * 4;
+  const SplatGround under = grounded ? ground : SplatGround{};
+  const std::optional<std::uint64_t> ground_generation =
+      grounded ? std::optional<std::uint64_t>(ground.generation) : std::nullopt;
+  if (frame.width != frame_.width || frame.height != frame_.height || ground_generation != ground_generation_)
+    start_over(frame.width, frame.height, under);
   else
-    clear_drawn();
+    restore_drawn(under);
   frame_ = frame;
+  ground_generation_ = ground_generation;
+  drawn_.clear();
+  changed_.clear();
   if (frame.width <= 0 || frame.height <= 0) return;
   if (shaded_for_px_ != frame.point_size_px) tabulate_shading(frame.point_size_px);
   // normalised device coordinates -> pixels, as GL's viewport transform
@@ -106,7 +124,8 @@ void SpriteSplat::paint(std::span<const PointVertex> points, const SplatFrame& f
   for (const PointVertex& p : points)
     splat(p, (p.x * frame.scale_x + frame.offset_x + 1.0f) * half_w,
           (p.y * frame.scale_y + frame.offset_y + 1.0f) * half_h);
-  collect_runs();
+  collect_runs(kDrawn, drawn_);
+  collect_runs(kDrawn | kChanged, changed_);
 }
 
 // One sprite centred at (x, y) pixels: the pixels whose centres lie in its square, each shaded as
@@ -152,21 +171,24 @@ void SpriteSplat::splat(const PointVertex& point, float x, float y) {
   }
   for (int ty = y0 / kTilePx; ty <= (y1 - 1) / kTilePx; ++ty)
     for (int tx = x0 / kTilePx; tx <= (x1 - 1) / kTilePx; ++tx)
-      tile_drawn_[static_cast<std::size_t>(ty * tile_columns_ + tx)] = 1;
+      tile_marks_[static_cast<std::size_t>(ty * tile_columns_ + tx)] |= kDrawn;
 }
 
-void SpriteSplat::collect_runs() {
+void SpriteSplat::collect_runs(std::uint8_t bits, std::vector<PixelBox>& runs) const {
+  const auto marked = [&](int tx, int ty) {
+    return (tile_marks_[static_cast<std::size_t>(ty * tile_columns_ + tx)] & bits) != 0;
+  };
   for (int ty = 0; ty < tile_rows_; ++ty) {
     const int y = ty * kTilePx, height = std::min(kTilePx, frame_.height - y);
     for (int tx = 0; tx < tile_columns_;) {
-      if (tile_drawn_[static_cast<std::size_t>(ty * tile_columns_ + tx)] == 0) {
+      if (!marked(tx, ty)) {
         ++tx;
         continue;
       }
       const int first = tx;
-      while (tx < tile_columns_ && tile_drawn_[static_cast<std::size_t>(ty * tile_columns_ + tx)] != 0) ++tx;
+      while (tx < tile_columns_ && marked(tx, ty)) ++tx;
       const int x = first * kTilePx;
-      drawn_.push_back({x, y, std::min(tx * kTilePx, frame_.width) - x, height});
+      runs.push_back({x, y, std::min(tx * kTilePx, frame_.width) - x, height});
     }
   }
 }

@@ -10,6 +10,7 @@
 // under with (ONE, ONE_MINUS_SRC_ALPHA), it gives what the sprites blended one by one would have.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -28,22 +29,34 @@ struct SplatFrame {
   friend bool operator==(const SplatFrame&, const SplatFrame&) = default;
 };
 
+// What the sprites are painted over: nothing (a picture premultiplied over nothing, blended over
+// the view), or an opaque picture the size of the frame (the view's backdrop), which the painted
+// picture then stands in for: laid without a blend, the backdrop and the sprites in one pass.
+struct SplatGround {
+  std::span<const std::uint8_t> pixels;  // RGBA, the frame's size, bottom row first; empty: nothing
+  std::uint64_t generation = 0;          // changes whenever the pixels do
+};
+
 class SpriteSplat {
  public:
   // Square tiles in which the picture keeps track of what it drew: cleared, uploaded and laid by
   // the tile, so a wall's sprites cost a wall's worth of pixels, not the view's.
   static constexpr int kTilePx = 16;
 
-  // Draws `points` (the first at the bottom) over a picture cleared of the last ones.
-  void paint(std::span<const PointVertex> points, const SplatFrame& frame);
+  // Draws `points` (the first at the bottom) over `ground`, the last paint's sprites gone.
+  void paint(std::span<const PointVertex> points, const SplatFrame& frame, const SplatGround& ground = {});
 
   // Premultiplied RGBA, `width` x `height`, bottom row first.
   const std::uint8_t* pixels() const { return pixels_.data(); }
   int width() const { return frame_.width; }
   int height() const { return frame_.height; }
   // The tiles the last paint drew in, as runs along each row of tiles, cut to the picture (pixels,
-  // bottom-up); outside them the picture is clear.
+  // bottom-up); outside them the picture is its ground.
   const std::vector<PixelBox>& drawn() const { return drawn_; }
+  // The tiles whose pixels the last paint may have changed from the paint before (the tiles either
+  // drew in; the whole picture after a new size or ground), as runs like drawn()'s: what a copy of
+  // the picture kept whole must take again.
+  const std::vector<PixelBox>& changed() const { return changed_; }
 
  private:
   // The shader's per-pixel terms as a table over the squared distance from the sprite's centre: no
@@ -53,18 +66,23 @@ class SpriteSplat {
     float coverage = 0.0f, brighten = 0.0f;
   };
   void tabulate_shading(float point_size_px);
-  void resize(int width, int height);
-  void clear_drawn();
+  void start_over(int width, int height, const SplatGround& ground);
+  void restore_drawn(const SplatGround& ground);
   void splat(const PointVertex& point, float x, float y);
-  void collect_runs();
+  // Runs along each row of tiles of those whose mark has any of `bits`.
+  void collect_runs(std::uint8_t bits, std::vector<PixelBox>& runs) const;
 
   SplatFrame frame_;
   std::vector<Shading> shading_;
   float shaded_for_px_ = -1.0f;
   std::vector<std::uint8_t> pixels_;
+  // Painted over nothing, or the generation of the ground painted over.
+  std::optional<std::uint64_t> ground_generation_;
   int tile_columns_ = 0, tile_rows_ = 0;
-  std::vector<std::uint8_t> tile_drawn_;
-  std::vector<PixelBox> drawn_;
+  // Each tile's marks: kDrawn by this paint, kChanged since the last.
+  static constexpr std::uint8_t kDrawn = 1, kChanged = 2;
+  std::vector<std::uint8_t> tile_marks_;
+  std::vector<PixelBox> drawn_, changed_;
 };
 
 }  // namespace ydscope::ui
