@@ -2,12 +2,12 @@
 // The view's point sprites drawn on the CPU, for a software renderer. llvmpipe spends about 430 ns
 // of CPU on every point sprite it draws (binning, a fragment shader call for each 4 x 4 block it
 // touches, the blend), whatever its size; with four lidars that was most of the app's CPU. Drawn
-// here with the point shader's own formulas (shaders/points.vert, points.frag), a 3-pixel sprite
-// costs about 120 ns (bench_frame's BM_PointsOnly), and the picture is laid over the view in the
-// tiles it drew in.
+// here with the point shader's own formulas (shaders/points.vert, points.frag), four pixels of a
+// row at a time, a 3-pixel sprite costs about 70 ns (bench_frame's BM_SpriteSplat).
 //
-// The picture is premultiplied RGBA8 over nothing, rows bottom-up like GL's: laid over what lies
-// under with (ONE, ONE_MINUS_SRC_ALPHA), it gives what the sprites blended one by one would have.
+// The picture has rows bottom-up like GL's. Over nothing it is premultiplied RGBA8: laid over what
+// lies under with (ONE, ONE_MINUS_SRC_ALPHA), it gives what the sprites blended one by one would
+// have. Over a ground it is that ground with the sprites blended over it, one by one.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -59,13 +59,8 @@ class SpriteSplat {
   const std::vector<PixelBox>& changed() const { return changed_; }
 
  private:
-  // The shader's per-pixel terms as a table over the squared distance from the sprite's centre: no
-  // square root or smoothstep a pixel. 4096 steps put it within a thousandth of a level.
-  static constexpr std::size_t kShadingSteps = 4096;
-  struct Shading {
-    float coverage = 0.0f, brighten = 0.0f;
-  };
-  void tabulate_shading(float point_size_px);
+  // Bytes past the picture's last pixel: a row's last pixels are blended four at a time.
+  static constexpr std::size_t kSlackBytes = 12;
   void start_over(int width, int height, const SplatGround& ground);
   void restore_drawn(const SplatGround& ground);
   void splat(const PointVertex& point, float x, float y);
@@ -73,8 +68,6 @@ class SpriteSplat {
   void collect_runs(std::uint8_t bits, std::vector<PixelBox>& runs) const;
 
   SplatFrame frame_;
-  std::vector<Shading> shading_;
-  float shaded_for_px_ = -1.0f;
   std::vector<std::uint8_t> pixels_;
   // Painted over nothing, or the generation of the ground painted over.
   std::optional<std::uint64_t> ground_generation_;
