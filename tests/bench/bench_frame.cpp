@@ -18,6 +18,7 @@
 #include "ui/view/scene/lap_history.h"
 #include "ui/view/scene/pixel_merge.h"
 #include "ui/view/scene/source_cloud.h"
+#include "ui/view/scene/source_clouds.h"
 #include "ui/view/scene/point_cloud.h"
 
 namespace {
@@ -101,20 +102,26 @@ void BM_BuildCloud(benchmark::State& state) {
 BENCHMARK(BM_BuildCloud)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond);
 
 // A lidar of several: its layer's cloud built and posed (3 m out, turned), as each of its laps asks.
+// A layer's ten laps posed and put together, all built (as after a change of colours), or with
+// only its newest lap built (as at each of its laps).
 void BM_BuildPosedLayer(benchmark::State& state) {
   LapHistory history;
   fill_history(history, static_cast<std::size_t>(state.range(0)));
+  const bool new_lap_only = state.range(1) != 0;
+  const Lap next = make_lap(static_cast<std::size_t>(state.range(0)) / 10, 10);
   SourceLayer layer;
   layer.history = &history;
   layer.pose = {3.0, -1.5, 120.0, false, 2.0};
-  FadingCloud cloud;
+  SourceClouds clouds;
+  clouds.update({&layer, 1}, ColourParams{}, InterferenceSettings{}, true);
   for (auto _ : state) {
-    build_layer_cloud(layer, ColourParams{}, InterferenceSettings{}, cloud);
-    benchmark::DoNotOptimize(cloud.vertices.data());
+    if (new_lap_only) history.push(next);
+    clouds.update({&layer, 1}, ColourParams{}, InterferenceSettings{}, !new_lap_only);
+    benchmark::DoNotOptimize(clouds.cloud().vertices.data());
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-BENCHMARK(BM_BuildPosedLayer)->Arg(20000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuildPosedLayer)->Args({20000, 0})->Args({20000, 1})->Unit(benchmark::kMillisecond);
 
 // What a frame between laps pays: the cloud built once, faded again for a new phase.
 void BM_FadeCloud(benchmark::State& state) {

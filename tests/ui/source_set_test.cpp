@@ -183,6 +183,89 @@ TEST(SourceCloud, KeptCloudsRebuildWhatChangedAndMatchOnesBuiltFromNothing) {
   EXPECT_EQ(kept.stats().drawn, 36u);
 }
 
+// At a lap only the new lap is built; the laps kept must still be placed as a fresh build places
+// them: the newest alone with its ghosts, the oldest of a full history leaving, every lap's age
+// one more. Through laps past the history's depth, a shallower depth, a cleared history whose
+// next laps count their index from 0 again, and a layer that comes and goes.
+TEST(SourceCloud, KeptLapsArePlacedAsLapsBuiltFromNothing) {
+  LapHistory front(4), rear(3);
+  const auto lap_of = [](std::uint64_t index, float range_mm) {
+    Lap lap;
+    lap.index = index;
+    for (int a = 0; a < 40; ++a)
+      lap.points.push_back({static_cast<float>(a * 9), range_mm + static_cast<float>(a),
+                            a % 5 == 0 ? PointFlag::Specular : PointFlag::None});
+    return lap;
+  };
+  SourceLayer layers[2];
+  layers[0].history = &front;
+  layers[1].history = &rear;
+  layers[1].pose.x_m = 2.0;
+  layers[1].dim = true;
+  ColourParams colours;
+  InterferenceSettings filter;
+  filter.drop_specular = true;  // the newest lap's specular points drawn as ghosts
+  SourceClouds kept;
+  const auto same_as_fresh = [&](std::span<const SourceLayer> shown, const char* when) {
+    SCOPED_TRACE(when);
+    SourceClouds fresh;
+    fresh.update(shown, colours, filter, true);
+    const FadingCloud& a = kept.cloud();
+    const FadingCloud& b = fresh.cloud();
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (std::size_t i = 0; i < a.vertices.size(); ++i) {
+      ASSERT_EQ(a.vertices[i].x, b.vertices[i].x) << i;
+      ASSERT_EQ(a.vertices[i].y, b.vertices[i].y) << i;
+      ASSERT_TRUE(a.vertices[i].colour == b.vertices[i].colour) << i;
+    }
+    ASSERT_EQ(a.runs.size(), b.runs.size());
+    for (std::size_t i = 0; i < a.runs.size(); ++i) {
+      const FadeRun &x = a.runs[i], &y = b.runs[i];
+      EXPECT_TRUE(x.begin == y.begin && x.end == y.end && x.age == y.age && x.laps == y.laps &&
+                  x.leaving == y.leaving && x.ghost == y.ghost && x.strength == y.strength)
+          << "run " << i;
+    }
+    EXPECT_EQ(kept.stats().drawn, fresh.stats().drawn);
+    EXPECT_EQ(kept.stats().ghosts, fresh.stats().ghosts);
+    EXPECT_EQ(kept.stats().newest_specular_removed, fresh.stats().newest_specular_removed);
+  };
+  for (std::uint64_t i = 0; i < 6; ++i) {
+    front.push(lap_of(i, 1000.0f + 100.0f * static_cast<float>(i)));
+    if (i % 2 == 0) rear.push(lap_of(i, 3000.0f - 100.0f * static_cast<float>(i)));
+    EXPECT_TRUE(kept.update(layers, colours, filter, false));
+    same_as_fresh(layers, "a lap");
+  }
+  // Not a vacuous match: the ghosts are the newest laps' only, and the oldest of four is leaving.
+  std::size_t ghost_runs = 0, leaving_runs = 0;
+  for (const FadeRun& run : kept.cloud().runs) {
+    ghost_runs += run.ghost ? 1 : 0;
+    leaving_runs += run.leaving ? 1 : 0;
+    if (run.ghost) {
+      EXPECT_EQ(run.age, 0u);
+    }
+  }
+  EXPECT_EQ(kept.stats().ghosts, 2u * 8u);
+  EXPECT_GT(ghost_runs, 0u);
+  EXPECT_GT(leaving_runs, 0u);
+
+  front.set_depth(2);
+  EXPECT_TRUE(kept.update(layers, colours, filter, false));
+  same_as_fresh(layers, "a shallower history");
+  // The source started over: its laps count again, through the numbers of the laps kept (4 and 5),
+  // with other points.
+  front.clear();
+  for (std::uint64_t i = 4; i < 8; ++i) {
+    front.push(lap_of(i, 1500.0f + 50.0f * static_cast<float>(i)));
+    EXPECT_TRUE(kept.update(layers, colours, filter, false));
+    same_as_fresh(layers, "a cleared history's laps");
+  }
+  EXPECT_TRUE(kept.update(std::span(layers, 1), colours, filter, false));
+  same_as_fresh(std::span(layers, 1), "the rear lidar hidden");
+  rear.push(lap_of(7, 2200.0f));
+  EXPECT_TRUE(kept.update(layers, colours, filter, false));
+  same_as_fresh(layers, "the rear lidar shown again");
+}
+
 TEST(SourceCloud, AutoRangeReachesTheFarthestSourcesReturns) {
   const LapHistory history = history_of({{0.0f, 1000.0f, PointFlag::None}});
   SourceLayer layers[2];

@@ -1,9 +1,15 @@
 #include "ui/view/scene/lap_history.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace ydscope::ui {
+namespace {
+
+std::atomic<std::uint64_t> laps_pushed{0};
+
+}  // namespace
 
 LapHistory::LapHistory(std::size_t depth) : slots_(kMaxDepth), depth_(std::clamp<std::size_t>(depth, 1, kMaxDepth)) {}
 
@@ -15,6 +21,7 @@ void LapHistory::set_depth(std::size_t depth) {
 
 void LapHistory::push(const Lap& lap) {
   HistoryLap& slot = slots_[next_];
+  slot.serial = ++laps_pushed;
   slot.index = lap.index;
   slot.first_rx_ns = lap.first_rx_ns;
   slot.last_rx_ns = lap.last_rx_ns;

@@ -10,6 +10,9 @@
 namespace ydscope::ui {
 
 struct HistoryLap {
+  // This push's own number, unique in the process: a cloud built from the lap is known by it
+  // (a lap's index starts over when its source does).
+  std::uint64_t serial = 0;
   std::uint64_t index = 0;
   std::int64_t first_rx_ns = 0;  // receive time of the lap's first byte
   std::int64_t last_rx_ns = 0;

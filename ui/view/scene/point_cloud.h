@@ -70,10 +70,31 @@ struct FadingCloud {
   }
 };
 
+// One lap's points built as the newest lap's: each point's position and hue, the points the
+// filter removes drawn as ghosts in runs of their own when it shows them. Where the lap stands in
+// its history (its age, whether it is leaving, its ghosts once older) is set as the laps are put
+// together (append_lap), so a lap is built once, not again at each lap after it.
+struct LapCloud {
+  std::uint64_t serial = 0;  // the HistoryLap's
+  FadingCloud cloud;         // its runs' ages not yet set
+  PointCloudStats stats;     // as the newest lap's
+};
+
+// Builds `lap` into `out` (keeping its capacity). Points with range 0 are not drawn. `motion`
+// tells moving points from the room in Motion mode (without it every point is the room's).
+void build_lap_cloud(const HistoryLap& lap, const ColourParams& colours, const InterferenceSettings& filter,
+                     LapCloud& out, const MotionBackground* motion = nullptr);
+
+// Where the lap `age` laps old stands in `history`'s fade: its age, the laps held, and whether it
+// is the oldest of a full history, which the next lap pushes out.
+FadeRun lap_place(const LapHistory& history, const ColourParams& colours, std::size_t age);
+
+// Appends `lap` at `place` to `cloud`, and its share to `stats`: a lap older than the newest
+// leaves its ghosts out (they would only smear) and counts only its drawn points.
+void append_lap(const LapCloud& lap, const FadeRun& place, FadingCloud& cloud, PointCloudStats& stats);
+
 // Clears `cloud` (keeping its capacity) and fills it with `history`'s laps, oldest first so the
-// newest is drawn on top: each point's position and hue, in runs not yet faded (fade_cloud).
-// Points with range 0 are not drawn. `motion` tells moving points from the room in Motion mode
-// (without it every point is the room's).
+// newest is drawn on top, in runs not yet faded (fade_cloud): each lap built and appended as above.
 PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,
                                   const InterferenceSettings& filter, FadingCloud& cloud,
                                   const MotionBackground* motion = nullptr);

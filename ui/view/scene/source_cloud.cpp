@@ -8,23 +8,19 @@
 
 namespace ydscope::ui {
 
-PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& colours,
-                                  const InterferenceSettings& filter, FadingCloud& cloud) {
-  if (!layer.history) {
-    cloud.clear();
-    return {};
-  }
-  const PointCloudStats stats = build_point_cloud(*layer.history, colours, filter, cloud, layer.motion);
+void build_layer_lap(const SourceLayer& layer, const HistoryLap& lap, const ColourParams& colours,
+                     const InterferenceSettings& filter, LapCloud& out) {
+  build_lap_cloud(lap, colours, filter, out, layer.motion);
   const bool by_source = colours.mode == ColourMode::Source;
   // Darkened as well as made transparent: alpha alone let a dead lidar's overlapping laps
   // add back up to nearly full brightness (255 fell only to 221). The fade dims the alpha.
   const float strength = layer.dim ? kDimmedSourceAlpha : 1.0f;
   const auto dimmed = [strength](std::uint8_t channel) { return scale_byte(channel, strength); };
   const PosedFrame frame(layer.pose);
-  for (FadeRun& run : cloud.runs) {
+  for (FadeRun& run : out.cloud.runs) {
     run.strength = strength;
     for (std::uint32_t i = run.begin; i < run.end; ++i) {
-      PointVertex& v = cloud.vertices[i];
+      PointVertex& v = out.cloud.vertices[i];
       const Vec2 posed = posed_in_view(frame, {v.x, v.y});
       v.x = posed.x;
       v.y = posed.y;
@@ -34,7 +30,6 @@ PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& 
                   run.ghost ? dimmed(v.colour.a) : v.colour.a};  // a ghost does not fade
     }
   }
-  return stats;
 }
 
 float robust_extent_mm(std::span<const SourceLayer> layers, float share) {

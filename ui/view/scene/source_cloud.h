@@ -37,15 +37,19 @@ struct SourceLayerKey {
         dim(layer.dim),
         motion(layer.motion) {}
   friend bool operator==(const SourceLayerKey&, const SourceLayerKey&) = default;
+  // The same but for the laps: a lap built for one is the lap built for the other.
+  bool same_but_laps(const SourceLayerKey& other) const {
+    return history == other.history && pose == other.pose && colour == other.colour && dim == other.dim &&
+           motion == other.motion;
+  }
 };
 
 // How much of its strength (each colour channel and its opacity) a dimmed source keeps.
 inline constexpr float kDimmedSourceAlpha = 0.3f;
 
-// Clears `cloud` and fills it with one layer's laps, posed and dimmed, not yet faded (fade_cloud).
-// A layer without a history has none.
-PointCloudStats build_layer_cloud(const SourceLayer& layer, const ColourParams& colours,
-                                  const InterferenceSettings& filter, FadingCloud& cloud);
+// Builds one of the layer's laps (build_lap_cloud) into `out`, posed and dimmed.
+void build_layer_lap(const SourceLayer& layer, const HistoryLap& lap, const ColourParams& colours,
+                     const InterferenceSettings& filter, LapCloud& out);
 
 // The farthest a robust share of each source's newest returns reaches from the common origin
 // (its distance from the origin plus its own robust range): what auto-range fits.
