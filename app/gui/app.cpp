@@ -65,12 +65,11 @@ void App::frame() {
     // Each source watches the zones from its own pose; one added since gets them here.
     if (slot->model.zones.zones().size() != zones_.size()) slot->model.zones = ZoneWatch(zones_);
     slot->zone_beep = settings_.zone_beep || options_.zone_beep;
-    if (slot->take_laps(now_s)) stage_.view().invalidate();
+    // The view sees a new lap by its history's generation, and builds only that lap.
+    slot->take_laps(now_s);
     update_model(*slot);
-    if (static_cast<int>(slot->history.depth()) != settings_.persistence_laps) {
+    if (static_cast<int>(slot->history.depth()) != settings_.persistence_laps)
       slot->history.set_depth(static_cast<std::size_t>(settings_.persistence_laps));
-      stage_.view().invalidate();
-    }
   }
 
   ImGui_ImplOpenGL3_NewFrame();

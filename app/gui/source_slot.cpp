@@ -71,20 +71,19 @@ void SourceSlot::clear() {
   }  // the old source's laps measure nothing of the new one
 }
 
-bool SourceSlot::take_laps(double now_s) {
+void SourceSlot::take_laps(double now_s) {
   while (measured_laps->try_pop(measured_lap))
     if (!model.paused_view) measure(measured_lap);
   const std::size_t drained = session.laps().drain_newest(lap);
   model.laps_skipped = session.laps().skipped();
   if (drained > 0) last_lap_at = std::chrono::steady_clock::now();
-  if (drained == 0 || model.paused_view) return false;
+  if (drained == 0 || model.paused_view) return;
   history.push(lap);
   lap_phase.on_lap(now_s);
   motion.add_lap(lap);
   ++model.laps_shown;
   model.points_in_lap = lap.points.size();
   pending_latency_rx_ns = lap.last_rx_ns;
-  return true;
 }
 
 void SourceSlot::measure(const Lap& measured) {

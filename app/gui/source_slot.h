@@ -47,9 +47,9 @@ struct SourceSlot {
   void clear();
   // The laps since the last frame: every one measured, in order, from a ring of its own (unless
   // the view is frozen), so a slow frame skips pictures but never a lap in the statistics; the
-  // newest into the view's history. True when the view has a new lap to draw. `now_s`: the
-  // app's clock, which paces the fading persistence.
-  bool take_laps(double now_s);
+  // newest into the view's history (whose generation tells the view). `now_s`: the app's clock,
+  // which paces the fading persistence.
+  void take_laps(double now_s);
 
   // (source_slot_model.cpp) The panels' model from model.snap at model.now_s: the health
   // timeline, the plots, the alerts, and what the view must say about the picture.
