@@ -87,12 +87,10 @@ void append_lap(const LapCloud& lap, const FadeRun& place, FadingCloud& cloud, P
     kind.strength = run.strength;
     cloud.runs.push_back(kind);
   }
-  stats.drawn += lap.stats.drawn;
-  if (!newest) return;
-  stats.ghosts += lap.stats.ghosts;
-  stats.newest_specular_removed += lap.stats.newest_specular_removed;
-  stats.newest_ambient_removed += lap.stats.newest_ambient_removed;
-  stats.newest_no_return += lap.stats.newest_no_return;
+  if (newest)
+    stats.add(lap.stats);
+  else
+    stats.drawn += lap.stats.drawn;
 }
 
 PointCloudStats build_point_cloud(const LapHistory& history, const ColourParams& colours,

@@ -21,27 +21,24 @@ struct SourceLayer {
 };
 
 // What a layer's cloud is built from besides the colours and the filter, to tell when it must be
-// built again: its laps (the history's generation), pose, colour and dimming.
+// built again: its laps (the history's generation) and how each lap of it is built.
 struct SourceLayerKey {
-  const LapHistory* history = nullptr;
+  // How a lap of the layer is built: its history's, posed, coloured and dimmed so. A lap built
+  // under one look is the lap built under an equal one.
+  struct Look {
+    const LapHistory* history = nullptr;
+    Pose pose;
+    Rgba8 colour;
+    bool dim = false;
+    const MotionBackground* motion = nullptr;
+    friend bool operator==(const Look&, const Look&) = default;
+  };
+  Look look;
   std::uint64_t generation = 0;
-  Pose pose;
-  Rgba8 colour;
-  bool dim = false;
-  const MotionBackground* motion = nullptr;
   explicit SourceLayerKey(const SourceLayer& layer)
-      : history(layer.history),
-        generation(layer.history ? layer.history->generation() : 0),
-        pose(layer.pose),
-        colour(layer.colour),
-        dim(layer.dim),
-        motion(layer.motion) {}
+      : look{layer.history, layer.pose, layer.colour, layer.dim, layer.motion},
+        generation(layer.history ? layer.history->generation() : 0) {}
   friend bool operator==(const SourceLayerKey&, const SourceLayerKey&) = default;
-  // The same but for the laps: a lap built for one is the lap built for the other.
-  bool same_but_laps(const SourceLayerKey& other) const {
-    return history == other.history && pose == other.pose && colour == other.colour && dim == other.dim &&
-           motion == other.motion;
-  }
 };
 
 // How much of its strength (each colour channel and its opacity) a dimmed source keeps.

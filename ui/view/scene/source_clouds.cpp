@@ -44,7 +44,7 @@ bool SourceClouds::update(std::span<const SourceLayer> layers, const ColourParam
       continue;
     }
     // In motion colours every lap is coloured against the room as learned now, so all are built.
-    const bool keep = !colours_changed && built_[i].key.same_but_laps(key) && colours.mode != ColourMode::Motion;
+    const bool keep = !colours_changed && built_[i].key.look == key.look && colours.mode != ColourMode::Motion;
     built_[i].key = key;
     build_laps(layers[i], colours, filter, keep, built_[i].laps);
     changed = true;
