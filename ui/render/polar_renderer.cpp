@@ -41,8 +41,8 @@ void create_vertex_array(GLuint& vao, GLuint& vbo, GLsizei stride, std::initiali
   }
 }
 
-// llvmpipe spends about three and a half times the CPU on a sprite that sprite_splat.h does; a GPU
-// is the other way round.
+// llvmpipe spends about four times the CPU on the sprites that sprite_splat.h does (bench_frame's
+// BM_PointsOnly); a GPU is the other way round.
 bool draws_points_on_cpu(PointDrawing drawing) {
   if (drawing != PointDrawing::suited) return drawing == PointDrawing::cpu;
   if (const char* asked = std::getenv("YDSCOPE_POINTS"); asked != nullptr) {

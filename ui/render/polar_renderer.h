@@ -83,7 +83,7 @@ class PolarRenderer {
   Buffer points_;
   Buffer lines_;
   // Drawing on the CPU: the points as uploaded, and their picture (painted again when drawn after
-  // an upload, so mutable).
+  // an upload, which a const draw may do: the picture is held by pointer).
   std::unique_ptr<SplatPicture> splat_;
   std::vector<PointVertex> cpu_points_;
   std::uint64_t uploads_ = 0;

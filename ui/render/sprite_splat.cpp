@@ -74,8 +74,8 @@ void blend_four(std::uint8_t* pixel, Lanes red, Lanes green, Lanes blue, Lanes a
 
 // A new size, or another ground: the whole picture is its ground again, and every tile changed.
 void SpriteSplat::start_over(int width, int height, const SplatGround& ground) {
-  frame_.width = width = std::max(width, 0);
-  frame_.height = height = std::max(height, 0);
+  width = std::max(width, 0);
+  height = std::max(height, 0);
   if (ground.pixels.empty())
     pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
   else
